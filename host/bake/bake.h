@@ -1,0 +1,28 @@
+// Plan -> OpenCL jobs -> EXR files and a report. Every table is computed and checked before
+// the first file is written, so a failure leaves no partial output.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "exr/table_file.h"
+#include "plan/plan.h"
+
+namespace brdfbake {
+
+struct TableReport {
+  std::string path;
+  std::string table, ndf, gaf;
+  int width = 0, height = 0;
+  double errorBound = 0;  // brdf.error
+  double seconds = 0;     // kernel time for this table
+};
+
+// Computes one planned table (kernel + header attributes) without writing it.
+TableImage computeTable(class KernelRunner& runner, const TableJob& job, double* seconds);
+
+// Runs the plan on its device and writes the files. Returns one report per table.
+std::vector<TableReport> runPlan(const Plan& plan);
+
+std::string formatReport(const std::vector<TableReport>& reports);
+
+}  // namespace brdfbake

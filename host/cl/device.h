@@ -1,0 +1,29 @@
+// OpenCL platforms and devices: listing and choosing one.
+#pragma once
+#include <CL/opencl.hpp>
+#include <string>
+#include <vector>
+
+namespace brdfbake {
+
+struct DeviceEntry {
+  std::string platform;
+  std::string name;
+  std::string type;     // CPU, GPU, ACCELERATOR, ...
+  std::string version;  // device OpenCL version string
+  bool fp64 = false;
+  cl::Device device;
+};
+
+// Every device of every platform. Throws Error(kExitUnavailable) when there is no platform,
+// naming the package to install.
+std::vector<DeviceEntry> listDevices();
+
+// The first device whose name or platform name contains `substring`; with "" the first CPU device
+// (PoCL), else the first device at all. Throws Error(kExitUnavailable) listing the devices.
+DeviceEntry selectDevice(const std::string& substring);
+
+// `brdfbake devices` output.
+std::string describeDevices();
+
+}  // namespace brdfbake

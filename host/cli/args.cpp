@@ -1,0 +1,155 @@
+#include "cli/args.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+
+#include "common/errors.h"
+
+namespace brdfbake {
+
+int defaultSize(TableKind kind) { return kind == TableKind::SplitSum ? 128 : 32; }
+
+BakeRequest defaultRequest() {
+  BakeRequest r;
+  r.ndfs = {ndfId("ggx")};
+  r.gafs = {gafId("smith-correlated")};
+  r.tables = {TableKind::SplitSum, TableKind::Albedo, TableKind::AlbedoAvg, TableKind::Kp};
+  return r;
+}
+
+std::string usageText() {
+  return "usage:\n"
+         "  brdfbake                      bake the default tables (ggx + smith-correlated) into out/\n"
+         "  brdfbake bake [options]       bake the product of the given models and tables\n"
+         "  brdfbake devices              list OpenCL platforms and devices\n"
+         "  brdfbake info FILE.exr        print a table's metadata and value range\n"
+         "  brdfbake --help | --version\n"
+         "\n"
+         "bake options (each of --ndf, --gaf, --table may be repeated or comma-separated):\n"
+         "  --ndf NAME      " + joinNames(ndfNames()) + " (default ggx)\n"
+         "  --gaf NAME      " + joinNames(gafNames()) + "\n"
+         "                  (default smith-correlated)\n"
+         "  --table KIND    " + joinNames(tableNames()) + " (default: all four)\n"
+         "  --size N        texels per axis, 1..8192 (default 128 for splitsum, 32 otherwise)\n"
+         "  --grid G        texel-center (default: value at (i+0.5)/n) or node (at i/(n-1), n >= 2)\n"
+         "  --half          store HALF channels instead of FLOAT\n"
+         "  -o, --output DIR  output directory (default out)\n"
+         "  --device TEXT   use the first OpenCL device whose name or platform contains TEXT\n"
+         "                  (default: the first CPU device, e.g. PoCL)\n";
+}
+
+namespace {
+
+std::vector<std::string> splitCommas(const std::string& s) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (true) {
+    size_t comma = s.find(',', start);
+    out.push_back(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+int parseSize(const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno != 0 || v < kMinSize || v > kMaxSize)
+    throw Error(kExitUsage, "--size: '" + text + "' is not an integer in " + std::to_string(kMinSize) + ".." +
+                                std::to_string(kMaxSize));
+  return static_cast<int>(v);
+}
+
+template <class T>
+void addUnique(std::vector<T>& v, T x) {
+  if (std::find(v.begin(), v.end(), x) == v.end()) v.push_back(x);
+}
+
+}  // namespace
+
+Command parseArgs(const std::vector<std::string>& args) {
+  Command cmd;
+  if (args.empty()) {
+    cmd.bake = defaultRequest();
+    return cmd;
+  }
+  size_t i = 0;
+  const std::string& first = args[0];
+  if (first == "--help" || first == "-h" || first == "help") {
+    cmd.kind = Command::Kind::Help;
+    return cmd;
+  }
+  if (first == "--version") {
+    cmd.kind = Command::Kind::Version;
+    return cmd;
+  }
+  if (first == "devices") {
+    if (args.size() > 1) throw Error(kExitUsage, "devices: unexpected argument '" + args[1] + "'");
+    cmd.kind = Command::Kind::Devices;
+    return cmd;
+  }
+  if (first == "info") {
+    if (args.size() != 2) throw Error(kExitUsage, "info: expected exactly one FILE.exr argument");
+    cmd.kind = Command::Kind::Info;
+    cmd.file = args[1];
+    return cmd;
+  }
+  BakeRequest req;
+  if (first == "bake") {
+    i = 1;
+  } else if (first.rfind("-", 0) != 0) {
+    throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, devices, info (see --help)");
+  }
+  // the bare form (`brdfbake --device X`) takes bake options and bakes the default set
+  bool bare = first != "bake";
+  std::string gridName;
+  for (; i < args.size(); ++i) {
+    const std::string& opt = args[i];
+    auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw Error(kExitUsage, opt + ": missing value");
+      return args[++i];
+    };
+    if (opt == "--ndf") {
+      for (const auto& n : splitCommas(value())) addUnique(req.ndfs, ndfId(n));
+    } else if (opt == "--gaf") {
+      for (const auto& n : splitCommas(value())) addUnique(req.gafs, gafId(n));
+    } else if (opt == "--table") {
+      for (const auto& n : splitCommas(value())) addUnique(req.tables, tableKind(n));
+    } else if (opt == "--size") {
+      req.size = parseSize(value());
+    } else if (opt == "--grid") {
+      gridName = value();
+      if (gridName == "node") req.nodeGrid = true;
+      else if (gridName == "texel-center") req.nodeGrid = false;
+      else throw Error(kExitUsage, "--grid: unknown grid '" + gridName + "'; valid: texel-center, node");
+    } else if (opt == "--half") {
+      req.half = true;
+    } else if (opt == "-o" || opt == "--output") {
+      req.outDir = value();
+      if (req.outDir.empty()) throw Error(kExitUsage, opt + ": empty directory name");
+    } else if (opt == "--device") {
+      req.device = value();
+    } else if (opt == "--help" || opt == "-h") {
+      cmd.kind = Command::Kind::Help;
+      return cmd;
+    } else {
+      throw Error(kExitUsage, "unknown option '" + opt + "' (see --help)");
+    }
+  }
+  if (bare && (!req.ndfs.empty() || !req.gafs.empty() || !req.tables.empty()))
+    throw Error(kExitUsage, "--ndf, --gaf and --table belong to the 'bake' command: brdfbake bake --ndf ...");
+  BakeRequest def = defaultRequest();
+  if (req.ndfs.empty()) req.ndfs = def.ndfs;
+  if (req.gafs.empty()) req.gafs = def.gafs;
+  if (req.tables.empty()) req.tables = def.tables;
+  if (req.nodeGrid && req.size && *req.size < 2)
+    throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis (got " +
+                                std::to_string(*req.size) + ")");
+  cmd.bake = req;
+  return cmd;
+}
+
+}  // namespace brdfbake

@@ -1,0 +1,25 @@
+// The shared BRDF code (kernels/brdf, kernels/integrate) compiled for the host, twice:
+// brdf64 in double (model tests, the reference's integrand) and brdf32 in float (the device's
+// arithmetic, for tests that mirror a kernel exactly).
+#pragma once
+#include "brdf/compat.h"
+
+namespace brdf64 {
+typedef double real;
+#include "brdf/compat.h"
+#include "brdf/ndf.h"
+#include "brdf/gaf.h"
+#include "brdf/fresnel.h"
+#include "integrate/quadrature.h"
+#include "integrate/hemisphere.h"
+}  // namespace brdf64
+
+namespace brdf32 {
+typedef float real;
+#include "brdf/compat.h"
+#include "brdf/ndf.h"
+#include "brdf/gaf.h"
+#include "brdf/fresnel.h"
+#include "integrate/quadrature.h"
+#include "integrate/hemisphere.h"
+}  // namespace brdf32

@@ -1,0 +1,71 @@
+// Reading and writing BRDF lookup tables as OpenEXR files.
+//
+// A table is a 2D grid of float texels with up to four channels (R, G, B, A) plus
+// string / V2f / float header attributes that describe how it was baked.  Files are
+// single-part scanline EXRs, ZIP compressed, written atomically and deterministically
+// (the same TableImage always gives byte-identical files).
+#pragma once
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace brdfbake {
+
+struct TableImage {
+  int width = 0, height = 0;               // x = first axis (width), y = second axis (height)
+  std::vector<std::string> channels;       // subset of "R","G","B","A", in that order
+  std::vector<std::vector<float>> planes;  // planes[c][y * width + x], one per channel
+  std::map<std::string, std::string> strings;          // string header attributes
+  std::map<std::string, std::pair<float, float>> v2f;  // Imath::V2f header attributes
+  std::map<std::string, float> floats;                 // float header attributes
+};
+
+// Writes a single-part scanline EXR, ZIP_COMPRESSION, channels FLOAT (or HALF when
+// half == true), INCREASING_Y line order, with every attribute of `img` in the header.
+//
+// Validates first and throws Error(kExitDataErr) naming the channel and texel if:
+// width or height < 1, channels empty / not a subset of R,G,B,A in that order /
+// planes.size() != channels.size(), a plane does not hold width*height values, a value
+// is NaN or infinite, or (half == true) |value| > 65504.  Attribute names must be
+// non-empty, unique across the three maps and not one of OpenEXR's structural names
+// (channels, compression, dataWindow, displayWindow, lineOrder, pixelAspectRatio,
+// screenWindowCenter, screenWindowWidth, tiles, type, name, version, chunkCount,
+// maxSamplesPerPixel); otherwise kExitDataErr too.
+//
+// Atomic: writes `<dir>/.<name>.tmp-<pid>` next to `path`, fsyncs it, then renames it
+// onto `path`.  On failure the temp file is removed and Error is thrown whose message
+// names `path`: kExitCantCreat if the temp file cannot be created or the rename fails,
+// kExitIoErr for errors while writing.
+//
+// Deterministic: no timestamps or other varying attributes, fixed zip level, and
+// OpenEXR is called with numThreads = 0 (the global thread count is not touched).
+void writeTableExr(const std::string& path, const TableImage& img, bool half);
+
+// Reads a file written by writeTableExr (or any single-part scanline EXR with R/G/B/A
+// channels; other channels are ignored), converting HALF (or UINT) to float.  The
+// returned channels are the R/G/B/A channels present, in that order; a data window not
+// starting at (0,0) is shifted so texel (0,0) is its corner.  Fills every string, v2f
+// and float attribute of the header except the structural ones listed above.
+// Throws Error(kExitNoInput, "cannot read <path>: <reason>") on a missing or
+// unreadable file, or one that has none of the channels R, G, B, A.
+TableImage readTableExr(const std::string& path);
+
+// True when the R/G/B/A channels of the file are stored as HALF (all of them); false
+// when any is FLOAT or UINT.  Throws like readTableExr.
+bool tableExrIsHalf(const std::string& path);
+
+// Human-readable description for `brdfbake info FILE`:
+//   <path>
+//     size: WxH
+//     channels: R (FLOAT), G (FLOAT)
+//     compression: ZIP
+//     <name> (<type>): <value>        one line per non-standard attribute, sorted by name;
+//                                     v2f as "(a, b)", floats with %.9g
+//     channel R: min <v> max <v>      one line per channel (%.9g)
+// Channels are listed R, G, B, A first, then any others; attributes skip only the eight
+// standard ones (channels ... screenWindowWidth).
+// Throws like readTableExr.
+std::string describeTableExr(const std::string& path);
+
+}  // namespace brdfbake

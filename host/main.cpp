@@ -1,0 +1,51 @@
+// brdfbake: bakes BRDF lookup tables (split-sum, albedo, average albedo, k_p) with OpenCL.
+// Pipeline: command line -> plan of tables -> OpenCL jobs -> EXR files and a report.
+// Errors are exceptions inside, caught here once and mapped to sysexits-style exit codes.
+#include <CL/opencl.hpp>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include "bake/bake.h"
+#include "cl/device.h"
+#include "cli/args.h"
+#include "common/errors.h"
+#include "exr/table_file.h"
+#include "plan/plan.h"
+#include "version.h"
+
+int main(int argc, char** argv) {
+  using namespace brdfbake;
+  try {
+    Command cmd = parseArgs(std::vector<std::string>(argv + 1, argv + argc));
+    switch (cmd.kind) {
+      case Command::Kind::Help:
+        std::cout << usageText();
+        return kExitOk;
+      case Command::Kind::Version:
+        std::cout << "brdfbake " << BRDFBAKE_VERSION << " (git " << BRDFBAKE_GIT_REV << ")\n";
+        return kExitOk;
+      case Command::Kind::Devices:
+        std::cout << describeDevices();
+        return kExitOk;
+      case Command::Kind::Info:
+        std::cout << describeTableExr(cmd.file);
+        return kExitOk;
+      case Command::Kind::Bake: {
+        Plan plan = makePlan(cmd.bake);
+        std::cout << formatReport(runPlan(plan));
+        return kExitOk;
+      }
+    }
+  } catch (const Error& e) {
+    std::cerr << "brdfbake: " << e.what() << "\n";
+    return e.code();
+  } catch (const cl::Error& e) {
+    std::cerr << "brdfbake: OpenCL error " << e.err() << " in " << e.what() << "\n";
+    return kExitSoftware;
+  } catch (const std::exception& e) {
+    std::cerr << "brdfbake: internal error: " << e.what() << "\n";
+    return kExitSoftware;
+  }
+  return kExitSoftware;
+}

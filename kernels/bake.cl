@@ -1,0 +1,62 @@
+/* bake.cl: one texel per work-item, no barriers. The host prepends a prelude that fixes the model
+ * pair, e.g. "#define BRDF_NDF 0\n#define BRDF_GAF 10\n", then compat.h, the model headers and the
+ * integrators, so every model switch folds at compile time. */
+#ifndef BRDF_NDF
+#error "BRDF_NDF must be defined by the prelude"
+#endif
+#ifndef BRDF_GAF
+#error "BRDF_GAF must be defined by the prelude"
+#endif
+
+/* Coordinate of sample i of n on [lo, hi]: texel centres (i + 0.5)/n, or nodes i/(n - 1). */
+static inline float grid_coord(int i, int n, float lo, float hi, int node_grid) {
+  float t = node_grid ? (n > 1 ? (float)i / (float)(n - 1) : 0.0f) : ((float)i + 0.5f) / (float)n;
+  return lo + (hi - lo) * t;
+}
+
+/* Split-sum moments and albedo over (mu, r): A, B, E = A + B and a bound on the texel's largest
+ * error relative to max(1, |value|). */
+kernel void bake_hemisphere(global float* out_a, global float* out_b, global float* out_e,
+                            global float* out_err, int nx, int ny, float mu_lo, float mu_hi,
+                            float r_lo, float r_hi, int node_grid) {
+  int i = get_global_id(0), j = get_global_id(1);
+  if (i >= nx || j >= ny) return;
+  float mu = grid_coord(i, nx, mu_lo, mu_hi, node_grid);
+  float r = grid_coord(j, ny, r_lo, r_hi, node_grid);
+  BrdfParams p = brdf_params(BRDF_NDF, BRDF_GAF, r);
+  HemiResult h = hemisphere_moments(BRDF_NDF, BRDF_GAF, p, mu);
+  float a = (float)h.a, b = (float)h.b, e = (float)(h.a + h.b);
+  int t = j * nx + i;
+  out_a[t] = a;
+  out_b[t] = b;
+  out_e[t] = e;
+  float ea = (float)h.err_a / fmax(1.0f, fabs(a));
+  float eb = (float)h.err_b / fmax(1.0f, fabs(b));
+  float ee = (float)(h.err_a + h.err_b) / fmax(1.0f, fabs(e));
+  out_err[t] = fmax(ee, fmax(ea, eb));
+}
+
+/* Average albedo E_avg(r). */
+kernel void bake_albedo_avg(global float* out, global float* out_err, int n, float r_lo, float r_hi,
+                            int node_grid) {
+  int j = get_global_id(0);
+  if (j >= n) return;
+  float r = grid_coord(j, n, r_lo, r_hi, node_grid);
+  BrdfParams p = brdf_params(BRDF_NDF, BRDF_GAF, r);
+  float err;
+  float v = albedo_average(BRDF_NDF, BRDF_GAF, p, &err);
+  out[j] = v;
+  out_err[j] = err / fmax(1.0f, fabs(v));
+}
+
+/* k_p of the NDF's raw shape over r. */
+kernel void bake_kp(global float* out, global float* out_err, int n, float r_lo, float r_hi, int node_grid) {
+  int j = get_global_id(0);
+  if (j >= n) return;
+  float r = grid_coord(j, n, r_lo, r_hi, node_grid);
+  BrdfParams p = brdf_params(BRDF_NDF, BRDF_GAF, r);
+  float err = 0.0f;
+  float v = p.alpha > 0.0f ? ndf_kp(BRDF_NDF, p, &err) : 0.0f;
+  out[j] = v;
+  out_err[j] = err / fmax(1.0f, fabs(v));
+}

@@ -1,0 +1,91 @@
+/* gaf.h: geometric attenuation (masking-shadowing) G(i,o,h), MODELS.md "Geometric attenuation".
+ *
+ * Each model is written as G/(n.o): finite at grazing view (n.o -> 0) for every model but `none`,
+ * whose albedo truly diverges there. The estimators integrate D (G/(n.o)) F (o.h) dw_h, so the 1/(n.o)
+ * of the BRDF never meets a zero. gaf_G multiplies back by n.o. All include chi+: G = 0 where
+ * n.i <= 0 or o.h <= 0 (i.h = o.h for the half vector).
+ *   ni, no, nh, oh: the cosines n.i, n.o, n.h, o.h; s2i, s2o: sin^2 of theta_i, theta_o.
+ */
+#define GAF_NONE 0
+#define GAF_IMPLICIT 1
+#define GAF_COOK_TORRANCE 2
+#define GAF_KELEMEN 3
+#define GAF_NEUMANN 4
+#define GAF_ASHIKHMIN_PREMOZE 5
+#define GAF_SCHLICK_BECKMANN 6
+#define GAF_SCHLICK_GGX 7
+#define GAF_SCHLICK_GGX_DIRECT 8
+#define GAF_SMITH 9
+#define GAF_SMITH_CORRELATED 10
+#define GAF_COUNT 11
+
+/* Schlick's k per convention (MODELS.md): schlick-beckmann k = alpha sqrt(2/pi) (Schlick 1994 with
+ * m = alpha), schlick-ggx k = alpha/2 (Karis 2013, IBL), schlick-ggx-direct k = (r+1)^2/8 (Karis 2013,
+ * analytic lights). 0 for the other models. */
+BRDF_FN real gaf_schlick_k(int gaf, real r, real alpha) {
+  if (gaf == GAF_SCHLICK_BECKMANN) return alpha * RC(0.79788456080286535588);
+  if (gaf == GAF_SCHLICK_GGX) return RC(0.5) * alpha;
+  if (gaf == GAF_SCHLICK_GGX_DIRECT) return (r + RC(1.0)) * (r + RC(1.0)) * RC(0.125);
+  return RC(0.0);
+}
+
+BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, real no, real nh, real oh,
+                           real s2i, real s2o) {
+  if (ni <= RC(0.0) || oh <= RC(0.0)) return RC(0.0);
+  if (gaf == GAF_NONE) {
+    /* Ward: G = 1 */
+    return RC(1.0) / no;
+  } else if (gaf == GAF_IMPLICIT) {
+    /* Blinn-Phong's hidden G = (n.i)(n.o) */
+    return ni;
+  } else if (gaf == GAF_COOK_TORRANCE) {
+    /* Cook and Torrance 1982: min(1, 2(n.h)(n.o)/(o.h), 2(n.h)(n.i)/(o.h)) */
+    real t = RC(2.0) * nh / oh;
+    return fmin(fmin(RC(1.0) / no, t), t * ni / no);
+  } else if (gaf == GAF_KELEMEN) {
+    /* Kelemen and Szirmay-Kalos 2001: (n.i)(n.o)/(o.h)^2 */
+    return ni / (oh * oh);
+  } else if (gaf == GAF_NEUMANN) {
+    /* Neumann et al. 1999: (n.i)(n.o)/max(n.i, n.o) */
+    return ni / fmax(ni, no);
+  } else if (gaf == GAF_ASHIKHMIN_PREMOZE) {
+    /* Ashikhmin and Premoze 2007: (n.i)(n.o)/(n.i + n.o - (n.i)(n.o)) */
+    return ni / (ni + no - ni * no);
+  } else if (gaf == GAF_SCHLICK_BECKMANN || gaf == GAF_SCHLICK_GGX || gaf == GAF_SCHLICK_GGX_DIRECT) {
+    /* Schlick 1994: g(x) = x/(x(1-k)+k); G = g(n.i) g(n.o) */
+    real k = p.k;
+    return ni / (ni * (RC(1.0) - k) + k) / (no * (RC(1.0) - k) + k);
+  } else if (gaf == GAF_SMITH) {
+    /* separable Smith: G1(i) G1(o), G1(v)/(n.v) = 1/(n.v + n.v Lambda(v)) */
+    return ni / ((ni + ndf_cLambda(ndf, p, ni, s2i)) * (no + ndf_cLambda(ndf, p, no, s2o)));
+  } else {
+    /* height-correlated Smith (Heitz 2014): 1/(1 + Lambda_i + Lambda_o), times ni/ni */
+    return ni / (ni * no + no * ndf_cLambda(ndf, p, ni, s2i) + ni * ndf_cLambda(ndf, p, no, s2o));
+  }
+}
+
+BRDF_FN real gaf_G(int gaf, int ndf, BrdfParams p, real ni, real no, real nh, real oh, real s2i,
+                   real s2o) {
+  return no * gaf_G_over_no(gaf, ndf, p, ni, no, nh, oh, s2i, s2o);
+}
+
+/* Where G has a kink as a function of the azimuth phi of h (fixed theta_h), as values of cos(phi).
+ * The integrators split their phi panels there so Gauss rules see only smooth pieces.
+ * With o = (s, 0, mu) and h at (theta, phi): o.h = s sin cos(phi) + mu c, n.i = 2 (o.h) c - mu.
+ *   n.i = n.o          <=> o.h = mu/c                      (neumann, cook-torrance)
+ *   2 c mu = o.h       <=> cook-torrance's masking term reaches 1
+ *   2 c n.i = o.h      <=> o.h (4c^2 - 1) = 2 c mu (shadowing term reaches 1)
+ * Returns the number of kinks written to cosphi[] (at most 3). */
+BRDF_FN int gaf_kinks(int gaf, real mu, real s, real c, real sn, real* cosphi) {
+  int n = 0;
+  if (gaf != GAF_NEUMANN && gaf != GAF_COOK_TORRANCE) return 0;
+  if (s <= RC(0.0) || sn <= RC(0.0)) return 0;
+  real inv = RC(1.0) / (s * sn);
+  cosphi[n++] = (mu / c - mu * c) * inv;
+  if (gaf == GAF_COOK_TORRANCE) {
+    cosphi[n++] = (RC(2.0) * c * mu - mu * c) * inv;
+    real q = RC(4.0) * c * c - RC(1.0);
+    if (q > RC(0.0)) cosphi[n++] = (RC(2.0) * c * mu / q - mu * c) * inv;
+  }
+  return n;
+}

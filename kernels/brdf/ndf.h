@@ -1,0 +1,166 @@
+/* ndf.h: normal distribution functions (MODELS.md "NDFs"), one verb set per model:
+ *   ndf_p       raw shape p(h), peak 1 at h = n            (k_p normalises it)
+ *   ndf_D       normalised D(h), integral of D (n.h) dw = 1
+ *   ndf_cLambda cos(theta) * Smith Lambda: finite at grazing, so G/(n.o) never divides 0 by 0
+ *   ndf_Lambda, ndf_G1, ndf_G   Smith Lambda, G1 = 1/(1+Lambda), height-correlated G2
+ * plus the change of variables the integrators use (ndf_angle_of_v, ndf_v_of_tan2).
+ *
+ * Angles are passed as (c, s2) = (cos theta, sin^2 theta), computed by the caller without
+ * cancellation, so that near-mirror lobes (alpha = 1e-4, Blinn-Phong e = 2e8) keep full precision.
+ * The model id is a compile-time constant on the device (prelude #define), so every switch folds.
+ */
+#define NDF_GGX 0
+#define NDF_BECKMANN 1
+#define NDF_BLINN_PHONG 2
+#define NDF_GAUSSIAN 3
+#define NDF_COUNT 4
+
+/* Per-texel parameters, derived once from perceptual roughness r (MODELS.md "Roughness axes"). */
+typedef struct BrdfParams {
+  real r;      /* perceptual roughness */
+  real alpha;  /* r^2; every NDF parameter derives from it */
+  real inv_kp; /* 1/k_p of the raw shape; needed by ndf_D only for the gaussian (numeric k_p) */
+  real k;      /* Schlick's k for the schlick-* GAFs */
+} BrdfParams;
+
+/* Angle of h on the (u -> v = -log(1-u)) grid, u = the NDF's CDF over theta_h. */
+typedef struct BrdfAngle {
+  real c;  /* cos theta */
+  real s2; /* sin^2 theta */
+  real t2; /* tan^2 theta */
+} BrdfAngle;
+
+/* Raw shapes, MODELS.md table. GGX: c^2(alpha^2-1)+1 = c^2 alpha^2 + s2 (no cancellation). */
+BRDF_FN real ndf_p(int ndf, BrdfParams p, real c, real s2) {
+  real a2 = p.alpha * p.alpha;
+  if (s2 <= RC(0.0)) return RC(1.0);
+  if (ndf == NDF_GGX) {
+    real den = c * c * a2 + s2;
+    return (a2 / den) * (a2 / den);
+  } else if (ndf == NDF_BECKMANN) {
+    /* exp(-tan^2/alpha^2)/c^4 */
+    if (a2 <= RC(0.0)) return RC(0.0);
+    real c2 = c * c;
+    return exp(-s2 / (c2 * a2)) / (c2 * c2);
+  } else if (ndf == NDF_BLINN_PHONG) {
+    /* c^e with e = 2/alpha^2 - 2 (Walter 2007), in log space: log c = log1p(-s2)/2 */
+    if (a2 <= RC(0.0)) return RC(0.0);
+    real e = RC(2.0) / a2 - RC(2.0);
+    return exp(e * RC(0.5) * log1p(-s2));
+  } else {
+    /* Torrance-Sparrow gaussian exp(-c_g^2 theta^2), c_g = 1/alpha */
+    if (a2 <= RC(0.0)) return RC(0.0);
+    real th = atan2(sqrt(s2), c) / p.alpha;
+    return exp(-th * th);
+  }
+}
+
+/* Normalised D. GGX: Walter 2007 eq. 33; Beckmann: Walter eq. 25; Blinn-Phong: (e+2)/(2 pi) c^e
+ * = c^e/(pi alpha^2) since (e+2)/2 = 1/alpha^2; gaussian: p/k_p. */
+BRDF_FN real ndf_D(int ndf, BrdfParams p, real c, real s2) {
+  real a2 = p.alpha * p.alpha;
+  if (ndf == NDF_GGX) {
+    real den = c * c * a2 + s2;
+    return a2 / (BRDF_PI * den * den);
+  } else if (ndf == NDF_GAUSSIAN) {
+    return ndf_p(ndf, p, c, s2) * p.inv_kp;
+  } else {
+    /* Beckmann: p/(pi alpha^2); Blinn-Phong: c^e/(pi alpha^2) */
+    return ndf_p(ndf, p, c, s2) / (BRDF_PI * a2);
+  }
+}
+
+/* cos(theta_v) * Lambda(v) for a direction v with cos c >= 0, sin^2 s2.
+ * GGX (Heitz 2014 eq. 72): Lambda = (sqrt(1 + alpha^2 tan^2) - 1)/2, so
+ *   c Lambda = (sqrt(c^2 + alpha^2 s2) - c)/2, written as a quotient to avoid cancellation.
+ * Beckmann (Heitz 2014 eq. 71), a = c/(alpha sin): Lambda = (exp(-a^2)/(a sqrt(pi)) - erfc(a))/2, so
+ *   c Lambda = (alpha sin exp(-a^2)/sqrt(pi) - c erfc(a))/2.
+ * Blinn-Phong and the gaussian use the Beckmann Lambda with alpha = sqrt(2/(e+2)) resp. 1/c_g, which
+ * both equal our alpha (MODELS.md). */
+BRDF_FN real ndf_cLambda(int ndf, BrdfParams p, real c, real s2) {
+  real a2 = p.alpha * p.alpha;
+  if (ndf == NDF_GGX) {
+    real x = a2 * s2;
+    return RC(0.5) * x / (sqrt(c * c + x) + c);
+  } else {
+    real as = p.alpha * sqrt(s2);
+    if (as <= RC(0.0)) return RC(0.0);
+    real a = c / as;
+    return RC(0.5) * (as * exp(-a * a) / BRDF_SQRT_PI - c * erfc(a));
+  }
+}
+
+BRDF_FN real ndf_Lambda(int ndf, BrdfParams p, real c, real s2) { return ndf_cLambda(ndf, p, c, s2) / c; }
+
+/* Smith G1 = 1/(1 + Lambda) = c/(c + c Lambda). */
+BRDF_FN real ndf_G1(int ndf, BrdfParams p, real c, real s2) {
+  return c / (c + ndf_cLambda(ndf, p, c, s2));
+}
+
+/* Height-correlated Smith G2 = 1/(1 + Lambda_i + Lambda_o) (Heitz 2014 eq. 99). */
+BRDF_FN real ndf_G(int ndf, BrdfParams p, real ci, real s2i, real co, real s2o) {
+  return ci * co / (ci * co + co * ndf_cLambda(ndf, p, ci, s2i) + ci * ndf_cLambda(ndf, p, co, s2o));
+}
+
+/* ---- change of variables: v = -log(1 - CDF(theta_h)) ----------------------------------------
+ * With u = CDF(theta) of the measure D(h)(n.h) dw_h, D sin dtheta dphi = du dphi/(2 pi cos), and
+ * du = exp(-v) dv. v is the natural coordinate of each NDF's tail:
+ *   GGX:         1-u = alpha^2/(alpha^2+t2)   => t2 = alpha^2 expm1(v),  v = log1p(t2/alpha^2)
+ *   Beckmann:    1-u = exp(-t2/alpha^2)       => t2 = alpha^2 v,         v = t2/alpha^2
+ *   Blinn-Phong: 1-u = c^(e+2) = c^(2/alpha^2) => c^2 = exp(-alpha^2 v),  v = log1p(t2)/alpha^2
+ * The gaussian has no closed-form CDF: it is integrated on the GGX grid of the same alpha, with the
+ * weight D_gauss/D_ggx (ndf_weight), which is bounded because GGX has the heavier tail. */
+BRDF_FN int ndf_grid_model(int ndf) { return ndf == NDF_GAUSSIAN ? NDF_GGX : ndf; }
+
+BRDF_FN BrdfAngle ndf_angle_of_v(int ndf, BrdfParams p, real v) {
+  BrdfAngle a;
+  real a2 = p.alpha * p.alpha;
+  int g = ndf_grid_model(ndf);
+  if (g == NDF_BLINN_PHONG) {
+    real c2 = exp(-a2 * v);
+    a.c = sqrt(c2);
+    a.s2 = -expm1(-a2 * v);
+    a.t2 = a.s2 / c2;
+  } else {
+    a.t2 = a2 * (g == NDF_GGX ? expm1(v) : v);
+    a.c = RC(1.0) / sqrt(RC(1.0) + a.t2);
+    a.s2 = a.t2 / (RC(1.0) + a.t2);
+  }
+  return a;
+}
+
+/* v of the angle with tan^2 = t2 (may be +inf: the whole tail). */
+BRDF_FN real ndf_v_of_tan2(int ndf, BrdfParams p, real t2) {
+  real a2 = p.alpha * p.alpha;
+  int g = ndf_grid_model(ndf);
+  if (a2 <= RC(0.0)) return t2 > RC(0.0) ? RC(1.0) / RC(0.0) : RC(0.0);
+  if (g == NDF_GGX) return log1p(t2 / a2);
+  if (g == NDF_BECKMANN) return t2 / a2;
+  return log1p(t2) / a2;
+}
+
+/* p / D_grid, the integrand of k_p on the v grid (k_p = integral of e^-v p/D_grid dv):
+ * pi alpha^2 for GGX, Beckmann and Blinn-Phong (p/D is that constant), and for the gaussian
+ * p / D_ggx = p pi (c^2 alpha^2 + s2)^2 / alpha^2. */
+BRDF_FN real ndf_p_over_D_grid(int ndf, BrdfParams p, BrdfAngle a) {
+  real a2 = p.alpha * p.alpha;
+  if (ndf != NDF_GAUSSIAN) return BRDF_PI * a2;
+  real den = a.c * a.c * a2 + a.s2;
+  return ndf_p(NDF_GAUSSIAN, p, a.c, a.s2) * BRDF_PI * (den / p.alpha) * (den / p.alpha);
+}
+
+/* D / D_grid: 1 where the grid is the NDF's own CDF, D_gauss/D_ggx for the gaussian. */
+BRDF_FN real ndf_weight(int ndf, BrdfParams p, BrdfAngle a) {
+  if (ndf != NDF_GAUSSIAN) return RC(1.0);
+  return p.inv_kp * ndf_p_over_D_grid(ndf, p, a);
+}
+
+/* tan^2(theta(v1 + dv)) - tan^2(theta(v1)), exact in dv (no cancellation when dv is small):
+ *   GGX: alpha^2 e^{v1} expm1(dv);  Beckmann: alpha^2 dv;  Blinn-Phong: e^{alpha^2 v1} expm1(alpha^2 dv). */
+BRDF_FN real ndf_tan2_diff(int ndf, BrdfParams p, real v1, real dv) {
+  real a2 = p.alpha * p.alpha;
+  int g = ndf_grid_model(ndf);
+  if (g == NDF_GGX) return a2 * exp(v1) * expm1(dv);
+  if (g == NDF_BECKMANN) return a2 * dv;
+  return exp(a2 * v1) * expm1(a2 * dv);
+}

@@ -1,0 +1,274 @@
+/* hemisphere.h: directional albedo E(mu) and split-sum moments (A, B), E = A + B, at (mu, alpha);
+ * average albedo E_avg and the NDF normalisation k_p. Shared by the device and the host tests.
+ *
+ * Derivation. E(mu) = int f (n.i) dw_i with f = D G F / (4 (n.i)(n.o)). Since dw_i = 4 (o.h) dw_h,
+ *   E = int D (G/(n.o)) F (o.h) dw_h  over the h whose mirror direction i has n.i > 0 (then o.h > 0).
+ * Map theta_h by the NDF's CDF u and then v = -log(1-u) (ndf.h): D sin dtheta dphi = e^-v dv dphi/(2 pi c),
+ *   E = (1/pi) int_0^inf dv e^-v w(v) int_0^phimax(v) dphi H,   H = (G/no) F (o.h)/(n.h),
+ * folding phi -> -phi (w = 1, or D_gauss/D_ggx on the gaussian's GGX grid).
+ * Visible domain: o = (s, 0, mu), h = (sn cos phi, ., c); n.i = 2 (o.h) c - mu > 0 <=> cos phi > c0 with
+ *   c0 = -mu (1 - t^2)/(2 s t), t = tan theta_h.  c0 <= -1 (whole hw circle) for t <= t1 = mu/(1+s),
+ *   c0 >= 1 (nothing) for t >= t2 = (1+s)/mu: theta_h = (pi/2 -+ theta_o)/2 by the hw-angle identities.
+ * So v1 = v(t1^2), v2 = v(t2^2) split the outer axis. Factored, 1 + c0 = (t - t1)(mu t + 1 + s)/(2 s t) and
+ *   1 - c0 = (1 + s - mu t)(t + t1)/(2 s t); with t^2 - t1^2 taken from v - v1 (ndf_tan2_diff), phimax
+ *   stays accurate where it is close to pi.
+ * Quadrature: outer v in panels at fixed breakpoints (the integrand decays like e^-v) and at v1 and v2;
+ * GK15 per panel, with a v = a + L y^2 (resp. b - L (1-y)^2) substitution at v1 (v2), where the
+ * inner integral has a square-root end (phimax ~ pi - sqrt(v - v1), ~ sqrt(v2 - v)). Inner phi: on
+ * the whole hw circle the integrand is smooth, even and 2 pi-periodic, so the trapezoid rule on
+ * 16 intervals converges geometrically (error from its 8-interval subset, cosines from a table); on a
+ * partial arc, and around the kinks of min/max GAFs (gaf_kinks), GK15 on each smooth piece.
+ * The returned error is |K15 - G7| on the outer axis plus the weighted inner errors: a bound.
+ */
+#define HEMI_VCAP RC(40.0)
+
+typedef struct HemiResult {
+  acc_t a, b;         /* A (F0 coefficient) and B (F90 bias), E = A + B */
+  acc_t err_a, err_b; /* error bounds */
+} HemiResult;
+
+/* The integrand H split by Schlick's weight: fa = H (1 - (1-o.h)^5), fb = H (1-o.h)^5. */
+BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real cphi,
+                       real* fa, real* fb) {
+  real oh = fmin(s * sn * cphi + mu * h.c, RC(1.0));
+  real ni = RC(2.0) * oh * h.c - mu;
+  real s2i = (RC(1.0) - ni) * (RC(1.0) + ni);
+  real s2o = s * s;
+  real H = gaf_G_over_no(gaf, ndf, p, ni, mu, h.c, oh, s2i, s2o) * oh / h.c;
+  real f5 = fresnel_schlick_weight(oh);
+  *fb = H * f5;
+  *fa = H - *fb;
+}
+
+/* GK15 over phi in [lo, hi]: adds the Kronrod values to ka, kb and |K - G| to ea, eb. */
+BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo,
+                         real hi, real* ka, real* kb, real* ea, real* eb) {
+  real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo);
+  real sa = RC(0.0), sb = RC(0.0), ga = RC(0.0), gb = RC(0.0);
+  for (int k = 0; k < 15; ++k) {
+    real fa, fb;
+    hemi_node(ndf, gaf, p, mu, s, h, sn, cos(mid + hw * gk15_x(k)), &fa, &fb);
+    sa += gk15_wk(k) * fa;
+    sb += gk15_wk(k) * fb;
+    ga += gk15_wg(k) * fa;
+    gb += gk15_wg(k) * fb;
+  }
+  *ka += sa * hw;
+  *kb += sb * hw;
+  *ea += fabs(sa - ga) * hw;
+  *eb += fabs(sb - gb) * hw;
+}
+
+/* int_0^phimax H dphi at fixed theta_h (full: phimax = pi). Results in ia, ib; bounds in ea, eb. */
+BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, int full, real phimax,
+                      real* ia, real* ib, real* ea, real* eb) {
+  real sn = sqrt(h.s2);
+  *ia = RC(0.0);
+  *ib = RC(0.0);
+  *ea = RC(0.0);
+  *eb = RC(0.0);
+  real kinks[3];
+  int nk = gaf_kinks(gaf, mu, s, h.c, sn, kinks);
+  if (full && nk == 0) {
+    /* trapezoid, 16 intervals on [0, pi], and its 8-interval subset */
+    real ta = RC(0.0), tb = RC(0.0), ha = RC(0.0), hb = RC(0.0);
+    for (int k = 0; k <= 16; ++k) {
+      real fa, fb;
+      hemi_node(ndf, gaf, p, mu, s, h, sn, COS_PI16[k], &fa, &fb);
+      real w = (k == 0 || k == 16) ? RC(0.5) : RC(1.0);
+      ta += w * fa;
+      tb += w * fb;
+      if ((k & 1) == 0) {
+        ha += w * fa;
+        hb += w * fb;
+      }
+    }
+    real step = BRDF_PI / RC(16.0);
+    *ia = ta * step;
+    *ib = tb * step;
+    *ea = fabs(ta - RC(2.0) * ha) * step;
+    *eb = fabs(tb - RC(2.0) * hb) * step;
+    return;
+  }
+  /* kinks as angles inside (0, phimax), sorted ascending (cos is decreasing) */
+  real ang[3];
+  int na = 0;
+  for (int k = 0; k < nk; ++k) {
+    if (kinks[k] < RC(1.0) && kinks[k] > RC(-1.0)) {
+      real a = acos(kinks[k]);
+      if (a < phimax) ang[na++] = a;
+    }
+  }
+  for (int i = 1; i < na; ++i)
+    for (int j = i; j > 0 && ang[j - 1] > ang[j]; --j) {
+      real t = ang[j];
+      ang[j] = ang[j - 1];
+      ang[j - 1] = t;
+    }
+  real lo = RC(0.0);
+  for (int k = 0; k <= na; ++k) {
+    real hi = k < na ? ang[k] : phimax;
+    if (hi > lo) hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, lo, hi, ia, ib, ea, eb);
+    lo = hi;
+  }
+}
+
+/* The outer breakpoints after the ones at v1, v2: the e^-v decay wants panels of growing width. */
+BRDF_CONST real HEMI_BREAKS[5] = {RC(1.0), RC(3.0), RC(7.0), RC(15.0), RC(40.0)};
+
+BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu) {
+  HemiResult res;
+  res.a = 0;
+  res.b = 0;
+  res.err_a = 0;
+  res.err_b = 0;
+  real s = sqrt((RC(1.0) - mu) * (RC(1.0) + mu));
+  if (p.alpha <= RC(0.0)) {
+    /* alpha = 0: the NDF is a delta at h = n, so E = (G/no) F (o.h)/(n.h) at the mirror direction. */
+    BrdfAngle h;
+    h.c = RC(1.0);
+    h.s2 = RC(0.0);
+    h.t2 = RC(0.0);
+    real fa, fb;
+    hemi_node(ndf, gaf, p, mu, s, h, RC(0.0), RC(1.0), &fa, &fb);
+    res.a = fa;
+    res.b = fb;
+    return res;
+  }
+  real t1 = mu / (RC(1.0) + s);
+  real t2 = (RC(1.0) + s) / mu; /* +inf at mu = 0 */
+  real v1 = ndf_v_of_tan2(ndf, p, t1 * t1);
+  real v2 = ndf_v_of_tan2(ndf, p, t2 * t2);
+  real vend = fmin(v2, HEMI_VCAP);
+  real cur = RC(0.0);
+  int fixed = 0;
+  while (cur < vend) {
+    while (fixed < 5 && HEMI_BREAKS[fixed] <= cur) ++fixed;
+    real next = fixed < 5 ? HEMI_BREAKS[fixed] : vend;
+    if (v1 > cur && v1 < next) next = v1;
+    next = fmin(next, vend);
+    int partial = cur >= v1;
+    int sq_lo = partial && cur == v1;
+    int sq_hi = next == v2;
+    real len = next - cur;
+    real pka = RC(0.0), pkb = RC(0.0), pga = RC(0.0), pgb = RC(0.0), pea = RC(0.0), peb = RC(0.0);
+    for (int k = 0; k < 15; ++k) {
+      real y = RC(0.5) * (gk15_x(k) + RC(1.0));
+      real off, jac; /* v - cur and dv/dy */
+      if (sq_lo && sq_hi) {
+        off = len * y * y * (RC(3.0) - RC(2.0) * y);
+        jac = RC(6.0) * len * y * (RC(1.0) - y);
+      } else if (sq_lo) {
+        off = len * y * y;
+        jac = RC(2.0) * len * y;
+      } else if (sq_hi) {
+        off = len * (RC(1.0) - (RC(1.0) - y) * (RC(1.0) - y));
+        jac = RC(2.0) * len * (RC(1.0) - y);
+      } else {
+        off = len * y;
+        jac = len;
+      }
+      real v = cur + off;
+      BrdfAngle h = ndf_angle_of_v(ndf, p, v);
+      real phimax = BRDF_PI;
+      if (partial) {
+        real t = sqrt(h.t2);
+        real dt2 = ndf_tan2_diff(ndf, p, v1, v - v1); /* t^2 - t1^2 */
+        real inv = RC(1.0) / (RC(2.0) * s * t);
+        real opc = dt2 / (t + t1) * (mu * t + RC(1.0) + s) * inv; /* 1 + c0 */
+        real omc = (RC(1.0) + s - mu * t) * (t + t1) * inv;        /* 1 - c0 */
+        opc = fmax(opc, RC(0.0));
+        omc = fmax(omc, RC(0.0));
+        real c0 = opc < RC(1.0) ? opc - RC(1.0) : RC(1.0) - omc;
+        phimax = atan2(sqrt(opc * omc), c0);
+      }
+      real ia, ib, ea, eb;
+      hemi_phi(ndf, gaf, p, mu, s, h, !partial, phimax, &ia, &ib, &ea, &eb);
+      real w = RC(0.5) * jac * exp(-v) * ndf_weight(ndf, p, h);
+      pka += gk15_wk(k) * w * ia;
+      pkb += gk15_wk(k) * w * ib;
+      pga += gk15_wg(k) * w * ia;
+      pgb += gk15_wg(k) * w * ib;
+      pea += gk15_wk(k) * w * ea;
+      peb += gk15_wk(k) * w * eb;
+    }
+    res.a += pka;
+    res.b += pkb;
+    res.err_a += fabs(pka - pga) + pea;
+    res.err_b += fabs(pkb - pgb) + peb;
+    cur = next;
+  }
+  res.a *= BRDF_INV_PI;
+  res.b *= BRDF_INV_PI;
+  res.err_a *= BRDF_INV_PI;
+  res.err_b *= BRDF_INV_PI;
+  return res;
+}
+
+/* k_p = int p(h)(n.h) dw_h = int_0^inf e^-v (p/D_grid)(v) dv on the same v grid (ndf.h), GK15 panels.
+ * Exact (pi alpha^2) for GGX, Beckmann and Blinn-Phong, where p/D_grid is constant; the gaussian's
+ * p/D_ggx decays faster than e^-v grows, so the panels up to HEMI_VCAP hold all of it. err: bound. */
+BRDF_FN real ndf_kp(int ndf, BrdfParams p, real* err) {
+  acc_t sum = 0, e = 0;
+  real cur = RC(0.0);
+  for (int i = 0; i < 5; ++i) {
+    real len = HEMI_BREAKS[i] - cur;
+    real sk = RC(0.0), sg = RC(0.0);
+    for (int k = 0; k < 15; ++k) {
+      real v = cur + RC(0.5) * len * (gk15_x(k) + RC(1.0));
+      real f = exp(-v) * ndf_p_over_D_grid(ndf, p, ndf_angle_of_v(ndf, p, v));
+      sk += gk15_wk(k) * f;
+      sg += gk15_wg(k) * f;
+    }
+    sum += RC(0.5) * len * sk;
+    e += RC(0.5) * len * fabs(sk - sg);
+    cur = HEMI_BREAKS[i];
+  }
+  *err = (real)e;
+  return (real)sum;
+}
+
+/* Per-texel parameters from perceptual roughness r: alpha = r^2, Schlick's k, and for the gaussian
+ * 1/k_p (computed, no closed form; its error is folded into the estimate's by the caller). */
+BRDF_FN BrdfParams brdf_params(int ndf, int gaf, real r) {
+  BrdfParams p;
+  p.r = r;
+  p.alpha = r * r;
+  p.k = gaf_schlick_k(gaf, r, p.alpha);
+  p.inv_kp = RC(0.0);
+  if (ndf == NDF_GAUSSIAN && p.alpha > RC(0.0)) {
+    real e;
+    p.inv_kp = RC(1.0) / ndf_kp(ndf, p, &e);
+  }
+  return p;
+}
+
+/* Average albedo E_avg = 2 int_0^1 E(mu) mu dmu (Kulla and Conty 2017).
+ * E(mu) changes fastest where the lobe meets the horizon, mu ~ alpha, so GK15 panels on [0, 1] grow
+ * geometrically from alpha/4 (x4 per panel). The bound adds the panels' |K15 - G7| and the inner
+ * bounds of E. */
+BRDF_FN real albedo_average(int ndf, int gaf, BrdfParams p, real* err) {
+  acc_t sum = 0, e = 0;
+  real lo = RC(0.0);
+  real hi = fmax(p.alpha * RC(0.25), RC(1e-6));
+  while (lo < RC(1.0)) {
+    hi = fmin(hi, RC(1.0));
+    if (hi > RC(0.25)) hi = RC(1.0); /* no sliver panel at the end */
+    real hw = RC(0.5) * (hi - lo);
+    acc_t sk = 0, sg = 0, se = 0;
+    for (int k = 0; k < 15; ++k) {
+      real mu = lo + hw * (gk15_x(k) + RC(1.0));
+      HemiResult h = hemisphere_moments(ndf, gaf, p, mu);
+      real f = RC(2.0) * mu * (real)(h.a + h.b);
+      sk += gk15_wk(k) * f;
+      sg += gk15_wg(k) * f;
+      se += gk15_wk(k) * RC(2.0) * mu * (real)(h.err_a + h.err_b);
+    }
+    sum += hw * sk;
+    e += hw * (fabs((real)(sk - sg)) + se);
+    lo = hi;
+    hi *= RC(4.0);
+  }
+  *err = (real)e;
+  return (real)sum;
+}
