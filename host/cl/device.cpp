@@ -19,8 +19,12 @@ const char* kInstallHint =
 
 std::vector<DeviceEntry> listDevices() {
   std::vector<cl::Platform> platforms;
-  cl_int rc = cl::Platform::get(&platforms);  // no throw for "no platform": some loaders report -1001
-  if (rc != CL_SUCCESS || platforms.empty()) throw Error(kExitUnavailable, kInstallHint);
+  try {
+    cl::Platform::get(&platforms);
+  } catch (const cl::Error&) {
+    platforms.clear();  // the ICD loader reports "no platform" as CL_PLATFORM_NOT_FOUND_KHR (-1001)
+  }
+  if (platforms.empty()) throw Error(kExitUnavailable, kInstallHint);
   std::vector<DeviceEntry> out;
   for (auto& p : platforms) {
     std::vector<cl::Device> devs;

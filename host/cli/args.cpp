@@ -109,7 +109,8 @@ Command parseArgs(const std::vector<std::string>& args) {
   for (; i < args.size(); ++i) {
     const std::string& opt = args[i];
     auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw Error(kExitUsage, opt + ": missing value");
+      if (i + 1 >= args.size() || (args[i + 1].size() > 1 && args[i + 1][0] == '-'))
+        throw Error(kExitUsage, opt + ": missing value");
       return args[++i];
     };
     if (opt == "--ndf") {

@@ -1,6 +1,7 @@
 #include "reference/reference.h"
 
 #include <algorithm>
+#include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 #include <vector>
@@ -16,20 +17,38 @@ constexpr double kTol = 1e-11;  // absolute, per integral
 constexpr unsigned kDepth = 18;
 
 // Adaptive GK31 with an absolute tolerance: bisect until |K31 - G15| <= tol on each piece (a
-// relative tolerance would chase rounding noise in pieces whose integral is tiny).
+// tolerance relative to the piece's own integral would chase rounding noise where it is tiny).
 template <class F>
-double adapt(F& f, double a, double b, double tol, unsigned depth) {
-  double err = 0;
-  double v = gauss_kronrod<double, 31>::integrate(f, a, b, 0, 0.0, &err);
-  if (err <= tol || depth == 0) return v;
+double adapt(F& f, double a, double b, double tol, unsigned depth, double rel) {
+  // GK31 on [a, b] from Boost's node tables: K31 value, |K31 - G15| error, L1 norm. (Boost's own
+  // integrate() floors its error estimate near 1e-11, which would stall an absolute tolerance.)
+  using K = boost::math::quadrature::gauss_kronrod<double, 31>;
+  using G = boost::math::quadrature::gauss<double, 15>;
+  const auto& x = K::abscissa();
+  const auto& wk = K::weights();
+  const auto& wg = G::weights();
+  double c = 0.5 * (a + b), h = 0.5 * (b - a);
+  double f0 = f(c);
+  double vk = wk[0] * f0, vg = wg[0] * f0, l1 = wk[0] * std::fabs(f0);
+  for (size_t i = 1; i < x.size(); ++i) {
+    double fl = f(c - h * x[i]), fr = f(c + h * x[i]);
+    vk += wk[i] * (fl + fr);
+    l1 += wk[i] * (std::fabs(fl) + std::fabs(fr));
+    if (i % 2 == 0) vg += wg[i / 2] * (fl + fr);
+  }
+  double v = vk * h, err = std::fabs(vk - vg) * h;
+  l1 *= h;
+  // converged: absolutely, or relative to the piece's L1 norm (the pieces' L1 norms add up to
+  // about the whole integral, so the sum is good to ~rel relative)
+  if (err <= tol || err <= rel * l1 || depth == 0) return v;
   double m = 0.5 * (a + b);
-  return adapt(f, a, m, 0.5 * tol, depth - 1) + adapt(f, m, b, 0.5 * tol, depth - 1);
+  return adapt(f, a, m, 0.5 * tol, depth - 1, rel) + adapt(f, m, b, 0.5 * tol, depth - 1, rel);
 }
 
 // Over [a, b], split first at the given interior points.
 template <class F>
 double integrate(F f, double a, double b, std::vector<double> breaks, unsigned depth = kDepth,
-                 double tol = kTol) {
+                 double tol = kTol, double rel = 1e-10) {
   breaks.push_back(a);
   breaks.push_back(b);
   std::sort(breaks.begin(), breaks.end());
@@ -37,7 +56,7 @@ double integrate(F f, double a, double b, std::vector<double> breaks, unsigned d
   for (size_t i = 0; i + 1 < breaks.size(); ++i) {
     double lo = std::max(a, breaks[i]), hi = std::min(b, breaks[i + 1]);
     if (hi <= lo) continue;
-    sum += adapt(f, lo, hi, tol, depth);
+    sum += adapt(f, lo, hi, tol, depth, rel);
   }
   return sum;
 }
@@ -102,26 +121,46 @@ Moments albedo(int ndf, int gaf, double r, double mu) {
         return G * oh * (which == 0 ? 1 : f5);
       };
       if (phimax <= 0) return 0.0;
-      // depth 12: the integrand is smooth in phi; deeper only chases rounding where it is tiny
-      return 2 * sn * D * integrate(inner, 0, phimax, {}, 12, 1e-12);
+      // Split at the kinks of min/max GAFs (their locations are checked on their own in
+      // tests/models_test.cpp); elsewhere the integrand is smooth and the bisection converges.
+      double kinks[3];
+      int nk = brdf64::gaf_kinks(gaf, mu, s, c, sn, kinks);
+      std::vector<double> br;
+      for (int k = 0; k < nk; ++k)
+        if (kinks[k] > -1 && kinks[k] < 1) br.push_back(std::acos(kinks[k]));
+      // inner far tighter than outer: its rounding must not look like structure to the outer rule
+      return 2 * sn * D * integrate(inner, 0, phimax, br, 30, 1e-14, 1e-13);
     };
     // [0, th1]: the whole half circle is visible; [th1, th2]: phimax falls from pi to 0 with
-    // square-root ends, which the smoothstep th = th1 + (th2-th1) y^2 (3 - 2y) makes smooth.
-    double full = integrate(outer, 0, th1, lobeBreaks(p.alpha, th1));
-    double L = th2 - th1;
-    auto partial = [&](double y) { return outer(th1 + L * y * y * (3 - 2 * y)) * 6 * L * y * (1 - y); };
-    std::vector<double> ybr;
-    for (double t : lobeBreaks(p.alpha, th2)) {
-      if (t <= th1) continue;
-      // invert the smoothstep by bisection to place the lobe breakpoints in y
-      double lo = 0, hi = 1;
-      for (int it = 0; it < 60; ++it) {
-        double mid = 0.5 * (lo + hi);
-        (th1 + L * mid * mid * (3 - 2 * mid) < t ? lo : hi) = mid;
-      }
-      ybr.push_back(lo);
+    // square-root ends. The partial range is cut geometrically (th1 2^k: the NDF's tail is a power
+    // law there), at the lobe scale and at the GAF's kinks; th = a + L y^2 on the first panel and
+    // th = b - L (1-y)^2 on the last one make the square-root ends smooth.
+    std::vector<double> fullBreaks = lobeBreaks(p.alpha, th1);
+    double gt2[4];
+    int ng = brdf64::gaf_theta_breaks(gaf, mu, s, gt2);
+    std::vector<double> kinkTheta;
+    for (int k = 0; k < ng; ++k) kinkTheta.push_back(std::atan(std::sqrt(gt2[k])));
+    fullBreaks.insert(fullBreaks.end(), kinkTheta.begin(), kinkTheta.end());
+    double v = integrate(outer, 0, th1, fullBreaks);
+    std::vector<double> pb = lobeBreaks(p.alpha, th2);
+    pb.insert(pb.end(), kinkTheta.begin(), kinkTheta.end());
+    for (double t = 2 * th1; t < th2; t *= 2) pb.push_back(t);
+    pb.push_back(th1);
+    pb.push_back(th2);
+    std::sort(pb.begin(), pb.end());
+    pb.erase(std::remove_if(pb.begin(), pb.end(), [&](double t) { return t < th1 || t > th2; }), pb.end());
+    for (size_t k = 0; k + 1 < pb.size(); ++k) {
+      double a = pb[k], b = pb[k + 1], L = b - a;
+      if (L <= 0) continue;
+      bool first = k == 0, last = k + 2 == pb.size();
+      auto panel = [&](double y) {
+        if (first && last) return outer(a + L * y * y * (3 - 2 * y)) * 6 * L * y * (1 - y);
+        if (first) return outer(a + L * y * y) * 2 * L * y;
+        if (last) return outer(b - L * (1 - y) * (1 - y)) * 2 * L * (1 - y);
+        return outer(a + L * y) * L;
+      };
+      v += integrate(panel, 0, 1, {});
     }
-    double v = full + (L > 0 ? integrate(partial, 0, 1, ybr) : 0.0);
     (which == 0 ? m.a : m.b) = v;
   }
   m.a -= m.b;  // the first pass integrated E = A + B

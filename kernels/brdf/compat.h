@@ -53,6 +53,8 @@ using std::fmax;
 using std::fmin;
 using std::log;
 using std::log1p;
+using std::sin;
 using std::sqrt;
+using std::tan;
 typedef double acc_t;
 #endif

@@ -89,3 +89,33 @@ BRDF_FN int gaf_kinks(int gaf, real mu, real s, real c, real sn, real* cosphi) {
   }
   return n;
 }
+
+/* The theta_h at which a kink of gaf_kinks enters or leaves the phi range (cos phi = +-1): there
+ * the phi-integral itself has a kink in theta_h, so the outer quadrature splits there too.
+ * With t = tan theta_h and theta_o the view angle (tan theta_o = s/mu):
+ *   n.i = n.o:        tan theta_h = s/mu                         => theta_h = theta_o
+ *   masking = 1:      s t = mu                                    => theta_h = pi/2 - theta_o
+ *   shadowing = 1:    (mu +- s t)(3 - t^2) = 2 mu (1 + t^2), i.e. tan 3 theta_h = -+ mu/s
+ *                                                                 => theta_h = (pi/2 +- theta_o)/3
+ * Writes tan^2 of each to t2[] (at most 4) and returns the count. */
+BRDF_FN int gaf_theta_breaks(int gaf, real mu, real s, real* t2) {
+  if (gaf != GAF_NEUMANN && gaf != GAF_COOK_TORRANCE) return 0;
+  real th_o = atan2(s, mu);
+  real half_pi = RC(0.5) * BRDF_PI;
+  real th[4];
+  int n = 0;
+  th[n++] = th_o;
+  if (gaf == GAF_COOK_TORRANCE) {
+    th[n++] = half_pi - th_o;
+    th[n++] = (half_pi + th_o) / RC(3.0);
+    th[n++] = (half_pi - th_o) / RC(3.0);
+  }
+  int m = 0;
+  for (int k = 0; k < n; ++k) {
+    if (th[k] > RC(0.0) && th[k] < half_pi) {
+      real t = tan(th[k]);
+      t2[m++] = t * t;
+    }
+  }
+  return m;
+}

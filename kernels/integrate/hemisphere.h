@@ -90,24 +90,32 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
     *eb = fabs(tb - RC(2.0) * hb) * step;
     return;
   }
-  /* kinks as angles inside (0, phimax), sorted ascending (cos is decreasing) */
-  real ang[3];
-  int na = 0;
+  /* Breakpoints inside (0, phimax): the GAF's kinks, and on a partial arc a geometric grading
+   * towards phimax. There n.i -> 0, and many GAFs (kelemen's 1/(o.h)^2, Smith's n.i/(n.o Lambda_i),
+   * cook-torrance) change on the scale where n.i ~ mu, a layer of width
+   * dphi ~ mu/(2 c s sn sin(phimax)) (n.i = 2 c s sn (cos phi - c0)). Panels of width dphi 4^k
+   * resolve it with a fixed number of nodes per panel, whatever mu. */
+  real br[16];
+  int nb = 0;
   for (int k = 0; k < nk; ++k) {
     if (kinks[k] < RC(1.0) && kinks[k] > RC(-1.0)) {
       real a = acos(kinks[k]);
-      if (a < phimax) ang[na++] = a;
+      if (a < phimax) br[nb++] = a;
     }
   }
-  for (int i = 1; i < na; ++i)
-    for (int j = i; j > 0 && ang[j - 1] > ang[j]; --j) {
-      real t = ang[j];
-      ang[j] = ang[j - 1];
-      ang[j - 1] = t;
+  if (!full) {
+    real layer = mu / (RC(2.0) * h.c * s * sn * fmax(sin(phimax), RC(1e-30)));
+    for (real d = layer; d < RC(0.5) * phimax && nb < 16; d *= RC(4.0)) br[nb++] = phimax - d;
+  }
+  for (int i = 1; i < nb; ++i)
+    for (int j = i; j > 0 && br[j - 1] > br[j]; --j) {
+      real t = br[j];
+      br[j] = br[j - 1];
+      br[j - 1] = t;
     }
   real lo = RC(0.0);
-  for (int k = 0; k <= na; ++k) {
-    real hi = k < na ? ang[k] : phimax;
+  for (int k = 0; k <= nb; ++k) {
+    real hi = k < nb ? br[k] : phimax;
     if (hi > lo) hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, lo, hi, ia, ib, ea, eb);
     lo = hi;
   }
@@ -140,13 +148,43 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu) {
   real v1 = ndf_v_of_tan2(ndf, p, t1 * t1);
   real v2 = ndf_v_of_tan2(ndf, p, t2 * t2);
   real vend = fmin(v2, HEMI_VCAP);
+  /* Outer breakpoints. Full region [0, v1]: the fixed HEMI_BREAKS; partial region [v1, v2]: the
+   * same widths counted from v1 (the integrand decays like e^-(v - v1) there too). A break that
+   * would leave a panel ending within half its width of v1 or v2 is dropped: such a panel would see
+   * the square-root end just outside itself, unsubstituted. Plus the GAF's kink crossings. */
+  real bp[16];
+  int nbp = 0;
+  real prev = RC(0.0);
+  for (int k = 0; k < 5; ++k) {
+    real b = HEMI_BREAKS[k];
+    if (b < v1 && v1 - b >= RC(0.5) * (b - prev) && b < vend) {
+      bp[nbp++] = b;
+      prev = b;
+    }
+  }
+  if (v1 < vend) bp[nbp++] = v1;
+  prev = v1;
+  for (int k = 0; k < 5; ++k) {
+    real b = v1 + HEMI_BREAKS[k];
+    if (b < vend && vend - b >= RC(0.5) * (b - prev)) {
+      bp[nbp++] = b;
+      prev = b;
+    }
+  }
+  real gt2[4];
+  int ng = gaf_theta_breaks(gaf, mu, s, gt2);
+  for (int k = 0; k < ng; ++k) bp[nbp++] = ndf_v_of_tan2(ndf, p, gt2[k]);
+  for (int i = 1; i < nbp; ++i)
+    for (int j = i; j > 0 && bp[j - 1] > bp[j]; --j) {
+      real t = bp[j];
+      bp[j] = bp[j - 1];
+      bp[j - 1] = t;
+    }
   real cur = RC(0.0);
-  int fixed = 0;
+  int ib = 0;
   while (cur < vend) {
-    while (fixed < 5 && HEMI_BREAKS[fixed] <= cur) ++fixed;
-    real next = fixed < 5 ? HEMI_BREAKS[fixed] : vend;
-    if (v1 > cur && v1 < next) next = v1;
-    next = fmin(next, vend);
+    while (ib < nbp && bp[ib] <= cur) ++ib;
+    real next = ib < nbp ? fmin(bp[ib], vend) : vend;
     int partial = cur >= v1;
     int sq_lo = partial && cur == v1;
     int sq_hi = next == v2;

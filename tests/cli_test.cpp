@@ -1,0 +1,217 @@
+// The brdfbake command as a user runs it: default bake, files read back, bad input, exit codes.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "exr/table_file.h"
+
+namespace fs = std::filesystem;
+namespace {
+
+struct CmdResult {
+  int code;
+  std::string out;  // stdout and stderr
+};
+
+CmdResult run(const std::string& args, const std::string& cwd = "", const std::string& env = "") {
+  std::string cmd = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + env + " '" BRDFBAKE_EXE "' " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+  int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+fs::path freshDir(const std::string& name) {
+  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_cli_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+size_t countFiles(const fs::path& d) {
+  if (!fs::exists(d)) return 0;
+  size_t n = 0;
+  for (auto& e : fs::recursive_directory_iterator(d)) n += e.is_regular_file();
+  return n;
+}
+
+std::string bytes(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+// One default bake shared by the tests that read its files.
+const fs::path& defaultBake() {
+  static fs::path dir;
+  if (dir.empty()) {
+    dir = freshDir("default");
+    CmdResult r = run("", dir.string());
+    EXPECT_EQ(r.code, 0) << r.out;
+  }
+  return dir;
+}
+
+TEST(Cli, DefaultBakeWritesTheFourTablesIntoOut) {
+  fs::path out = defaultBake() / "out";
+  for (const char* f : {"splitsum_ggx_smith-correlated.exr", "albedo_ggx_smith-correlated.exr",
+                        "albedo-avg_ggx_smith-correlated.exr", "kp_ggx.exr"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  EXPECT_EQ(countFiles(out), 4u);  // no temporary files left
+}
+
+TEST(Cli, SplitSumFileReadsBackWithItsAttributes) {
+  brdfbake::TableImage t = brdfbake::readTableExr((defaultBake() / "out/splitsum_ggx_smith-correlated.exr").string());
+  EXPECT_EQ(t.width, 128);
+  EXPECT_EQ(t.height, 128);
+  EXPECT_EQ(t.channels, (std::vector<std::string>{"R", "G", "B"}));
+  EXPECT_EQ(t.strings["brdf.schema"], "brdfbake/1");
+  EXPECT_EQ(t.strings["brdf.table"], "splitsum");
+  EXPECT_EQ(t.strings["brdf.ndf"], "ggx");
+  EXPECT_EQ(t.strings["brdf.gaf"], "smith-correlated");
+  EXPECT_EQ(t.strings["brdf.fresnel"], "schlick");
+  EXPECT_EQ(t.strings["brdf.axes"], "mu,r");
+  EXPECT_EQ(t.strings["brdf.grid"], "texel-center");
+  EXPECT_EQ(t.strings["brdf.roughness"], "alpha=r^2");
+  EXPECT_EQ(t.strings["brdf.channels"], "R=A,G=B,B=A+B");
+  EXPECT_FALSE(t.strings["brdf.method"].empty());
+  EXPECT_NE(t.strings["brdf.generator"].find("brdfbake"), std::string::npos);
+  EXPECT_EQ(t.v2f["brdf.mu.range"], std::make_pair(0.0f, 1.0f));
+  EXPECT_EQ(t.v2f["brdf.r.range"], std::make_pair(0.0f, 1.0f));
+  ASSERT_EQ(t.floats.count("brdf.error"), 1u);
+  EXPECT_GT(t.floats["brdf.error"], 0.0f);
+  EXPECT_LE(t.floats["brdf.error"], 1e-5f) << "default accuracy goal";
+  for (size_t k = 0; k < t.planes[0].size(); ++k) {
+    float a = t.planes[0][k], b = t.planes[1][k], e = t.planes[2][k];
+    ASSERT_TRUE(std::isfinite(a) && std::isfinite(b) && std::isfinite(e));
+    EXPECT_NEAR(a + b, e, 3e-7);
+    EXPECT_GE(a, 0.0f);
+    EXPECT_GE(b, 0.0f);
+    EXPECT_LE(e, 1.0f + 1e-5f);  // energy conservation
+  }
+  // texel (x=127, y=0): mu = 255/256, r = 1/256: a near-mirror at normal incidence reflects all
+  EXPECT_NEAR(t.planes[2][127], 1.0, 1e-5);
+}
+
+TEST(Cli, OneDimensionalTablesAreNByOne) {
+  for (const char* f : {"albedo-avg_ggx_smith-correlated.exr", "kp_ggx.exr"}) {
+    brdfbake::TableImage t = brdfbake::readTableExr((defaultBake() / "out" / f).string());
+    EXPECT_EQ(t.width, 32);
+    EXPECT_EQ(t.height, 1);
+    EXPECT_EQ(t.strings["brdf.axes"], "r");
+    EXPECT_EQ(t.v2f.count("brdf.mu.range"), 0u);
+  }
+  brdfbake::TableImage kp = brdfbake::readTableExr((defaultBake() / "out/kp_ggx.exr").string());
+  for (int j = 0; j < 32; ++j) {
+    double r = (j + 0.5) / 32, a = r * r;
+    EXPECT_NEAR(kp.planes[0][j], 3.14159265358979 * a * a, 1e-6 * std::max(1.0, a));
+  }
+}
+
+TEST(Cli, SameInputSameBytes) {
+  fs::path d = freshDir("determinism");
+  ASSERT_EQ(run("bake --table albedo,kp --size 16 -o '" + (d / "a").string() + "'").code, 0);
+  ASSERT_EQ(run("bake --table albedo,kp --size 16 -o '" + (d / "b").string() + "'").code, 0);
+  for (const char* f : {"albedo_ggx_smith-correlated.exr", "kp_ggx.exr"})
+    EXPECT_EQ(bytes(d / "a" / f), bytes(d / "b" / f)) << f;
+}
+
+TEST(Cli, ProductOfModelsAndHalfOutput) {
+  fs::path d = freshDir("product");
+  CmdResult r = run("bake --ndf beckmann,gaussian --gaf smith --gaf kelemen --table albedo --size 8 --half -o '" + d.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(countFiles(d), 4u);
+  std::string f = (d / "albedo_gaussian_kelemen.exr").string();
+  EXPECT_TRUE(brdfbake::tableExrIsHalf(f));
+  brdfbake::TableImage t = brdfbake::readTableExr(f);
+  EXPECT_GE(t.floats["brdf.error"], 1e-4f) << "half quantisation must be part of the bound";
+}
+
+TEST(Cli, NodeGridSamplesTheEdges) {
+  fs::path d = freshDir("node");
+  ASSERT_EQ(run("bake --table albedo --grid node --size 5 -o '" + d.string() + "'").code, 0);
+  brdfbake::TableImage t = brdfbake::readTableExr((d / "albedo_ggx_smith-correlated.exr").string());
+  EXPECT_EQ(t.strings["brdf.grid"], "node");
+  // r = 0 row: a perfect mirror, E = 1 at every mu > 0 (smith G = 1 there)
+  for (int i = 1; i < 5; ++i) EXPECT_NEAR(t.planes[0][i], 1.0, 1e-6);
+}
+
+struct BadCase {
+  const char* args;
+  int code;
+  const char* message;
+};
+
+TEST(Cli, BadInputGetsAClearErrorAndNothingIsWritten) {
+  fs::path d = freshDir("bad");
+  fs::path file = d / "a-file";
+  std::ofstream(file) << "x";
+  std::string o = " -o '" + (d / "out").string() + "'";
+  const BadCase cases[] = {
+      {"bake --ndf phong", 64, "--ndf: unknown NDF 'phong'; valid: ggx, beckmann, blinn-phong, gaussian"},
+      {"bake --gaf smyth", 64, "valid: none, implicit, cook-torrance"},
+      {"bake --table lut", 64, "--table: unknown table 'lut'; valid: splitsum, albedo, albedo-avg, kp"},
+      {"bake --size 0", 64, "--size: '0' is not an integer in 1..8192"},
+      {"bake --size 8193", 64, "1..8192"},
+      {"bake --size 12x", 64, "--size"},
+      {"bake --grid corner", 64, "--grid: unknown grid 'corner'; valid: texel-center, node"},
+      {"bake --gaf none --grid node --table albedo", 64, "infinite albedo at mu = 0"},
+      {"bake --device no-such-device", 69, "--device: no OpenCL device or platform name contains 'no-such-device'"},
+      {"frobnicate", 64, "unknown command 'frobnicate'"},
+      {"bake --ndf", 64, "--ndf: missing value"},
+  };
+  for (const auto& c : cases) {
+    CmdResult r = run(std::string(c.args) + o);
+    EXPECT_EQ(r.code, c.code) << c.args << "\n" << r.out;
+    EXPECT_NE(r.out.find(c.message), std::string::npos) << c.args << "\n" << r.out;
+    EXPECT_EQ(countFiles(d / "out"), 0u) << c.args;
+  }
+  // an output "directory" that is a file, and one below a file
+  CmdResult r = run("bake --table kp -o '" + file.string() + "'");
+  EXPECT_EQ(r.code, 73) << r.out;
+  EXPECT_NE(r.out.find("not a directory"), std::string::npos) << r.out;
+  r = run("bake --table kp -o '" + (file / "sub").string() + "'");
+  EXPECT_EQ(r.code, 73) << r.out;
+  EXPECT_NE(r.out.find("cannot create output directory"), std::string::npos) << r.out;
+  EXPECT_EQ(countFiles(d), 1u);
+}
+
+TEST(Cli, NoOpenClPlatformNamesThePackage) {
+  fs::path d = freshDir("noplatform");
+  CmdResult r = run("bake --table kp -o '" + (d / "out").string() + "'", "", "OCL_ICD_VENDORS=/nonexistent OCL_ICD_FILENAMES=");
+  EXPECT_EQ(r.code, 69) << r.out;
+  EXPECT_NE(r.out.find("pocl-opencl-icd"), std::string::npos) << r.out;
+  EXPECT_EQ(countFiles(d), 0u);
+}
+
+TEST(Cli, InfoHelpVersionDevices) {
+  CmdResult r = run("info '" + (defaultBake() / "out/albedo_ggx_smith-correlated.exr").string() + "'");
+  EXPECT_EQ(r.code, 0);
+  for (const char* s : {"brdf.error (float)", "brdf.table (string): albedo", "brdf.mu.range (v2f): (0, 1)", "32x32"})
+    EXPECT_NE(r.out.find(s), std::string::npos) << s << "\n" << r.out;
+  r = run("info /nonexistent/x.exr");
+  EXPECT_EQ(r.code, 66);
+  EXPECT_NE(r.out.find("cannot read /nonexistent/x.exr"), std::string::npos);
+  r = run("--help");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("usage:"), std::string::npos);
+  r = run("--version");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out.rfind("brdfbake ", 0), 0u);
+  r = run("devices");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("CPU"), std::string::npos) << r.out;
+}
+
+}  // namespace
