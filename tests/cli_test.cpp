@@ -1,6 +1,7 @@
 // The brdfbake command as a user runs it: default bake, files read back, bad input, exit codes.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -31,8 +32,9 @@ CmdResult run(const std::string& args, const std::string& cwd = "", const std::s
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
+// ctest runs each test in its own process, possibly in parallel: directories are per process
 fs::path freshDir(const std::string& name) {
-  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_cli_" + name);
+  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_cli_" + name + "_" + std::to_string(getpid()));
   fs::remove_all(d);
   fs::create_directories(d);
   return d;

@@ -167,9 +167,9 @@ TEST(Albedo, MirrorLimitIsOneForSmith) {
   for (int ndf : {NDF_GGX, NDF_BECKMANN})
     for (int gaf : {GAF_SMITH, GAF_SMITH_CORRELATED})
       for (double mu : {0.05, 0.5, 1.0}) {
-        HemiResult h0 = hemisphere_moments(ndf, gaf, params(ndf, gaf, 0.0), mu);
+        HemiResult h0 = hemisphere_moments(ndf, gaf, params(ndf, gaf, 0.0), mu, 0);
         EXPECT_NEAR(h0.a + h0.b, 1.0, 1e-12);
-        HemiResult h = hemisphere_moments(ndf, gaf, params(ndf, gaf, 0.01), mu);
+        HemiResult h = hemisphere_moments(ndf, gaf, params(ndf, gaf, 0.01), mu, 0);
         EXPECT_NEAR(h.a + h.b, 1.0, 1e-4) << ndf << " " << gaf << " " << mu;
       }
 }

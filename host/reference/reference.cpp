@@ -97,7 +97,7 @@ Moments albedo(int ndf, int gaf, double r, double mu) {
   double s = std::sqrt((1 - mu) * (1 + mu));
   Moments m;
   if (p.alpha == 0) {
-    brdf64::HemiResult h = brdf64::hemisphere_moments(ndf, gaf, p, mu);  // the delta limit
+    brdf64::HemiResult h = brdf64::hemisphere_moments(ndf, gaf, p, mu, 0);  // the delta limit
     m.a = h.a;
     m.b = h.b;
     return m;
@@ -144,7 +144,8 @@ Moments albedo(int ndf, int gaf, double r, double mu) {
     double v = integrate(outer, 0, th1, fullBreaks);
     std::vector<double> pb = lobeBreaks(p.alpha, th2);
     pb.insert(pb.end(), kinkTheta.begin(), kinkTheta.end());
-    for (double t = 2 * th1; t < th2; t *= 2) pb.push_back(t);
+    // (at mu = 0, th1 = 0: start the doubling at the lobe scale instead)
+    for (double t = th1 > 0 ? 2 * th1 : std::max(p.alpha, 1e-6); t < th2; t *= 2) pb.push_back(t);
     pb.push_back(th1);
     pb.push_back(th2);
     std::sort(pb.begin(), pb.end());

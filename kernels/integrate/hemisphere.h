@@ -31,7 +31,8 @@ typedef struct HemiResult {
 BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real cphi,
                        real* fa, real* fb) {
   real oh = fmin(s * sn * cphi + mu * h.c, RC(1.0));
-  real ni = RC(2.0) * oh * h.c - mu;
+  /* n.i <= 1 exactly, but not always after rounding: clamp so sin^2 theta_i never goes negative */
+  real ni = fmin(RC(2.0) * oh * h.c - mu, RC(1.0));
   real s2i = (RC(1.0) - ni) * (RC(1.0) + ni);
   real s2o = s * s;
   real H = gaf_G_over_no(gaf, ndf, p, ni, mu, h.c, oh, s2i, s2o) * oh / h.c;
@@ -61,7 +62,7 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
 
 /* int_0^phimax H dphi at fixed theta_h (full: phimax = pi). Results in ia, ib; bounds in ea, eb. */
 BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, int full, real phimax,
-                      real* ia, real* ib, real* ea, real* eb) {
+                      int refine, real* ia, real* ib, real* ea, real* eb) {
   real sn = sqrt(h.s2);
   *ia = RC(0.0);
   *ib = RC(0.0);
@@ -70,12 +71,13 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   real kinks[3];
   int nk = gaf_kinks(gaf, mu, s, h.c, sn, kinks);
   if (full && nk == 0) {
-    /* trapezoid, 16 intervals on [0, pi], and its 8-interval subset */
+    /* trapezoid, HEMI_PHI_N intervals on [0, pi], and its half-size subset */
+    int nphi = refine ? 32 : HEMI_PHI_N;
     real ta = RC(0.0), tb = RC(0.0), ha = RC(0.0), hb = RC(0.0);
-    for (int k = 0; k <= 16; ++k) {
+    for (int k = 0; k <= nphi; ++k) {
       real fa, fb;
-      hemi_node(ndf, gaf, p, mu, s, h, sn, COS_PI16[k], &fa, &fb);
-      real w = (k == 0 || k == 16) ? RC(0.5) : RC(1.0);
+      hemi_node(ndf, gaf, p, mu, s, h, sn, COS_PI32[k * (32 / nphi)], &fa, &fb);
+      real w = (k == 0 || k == nphi) ? RC(0.5) : RC(1.0);
       ta += w * fa;
       tb += w * fb;
       if ((k & 1) == 0) {
@@ -83,7 +85,7 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
         hb += w * fb;
       }
     }
-    real step = BRDF_PI / RC(16.0);
+    real step = BRDF_PI / (real)nphi;
     *ia = ta * step;
     *ib = tb * step;
     *ea = fabs(ta - RC(2.0) * ha) * step;
@@ -105,7 +107,8 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   }
   if (!full) {
     real layer = mu / (RC(2.0) * h.c * s * sn * fmax(sin(phimax), RC(1e-30)));
-    for (real d = layer; d < RC(0.5) * phimax && nb < 16; d *= RC(4.0)) br[nb++] = phimax - d;
+    real grow = refine ? RC(2.0) : RC(4.0);
+    for (real d = layer; d < RC(0.5) * phimax && nb < 16; d *= grow) br[nb++] = phimax - d;
   }
   for (int i = 1; i < nb; ++i)
     for (int j = i; j > 0 && br[j - 1] > br[j]; --j) {
@@ -116,7 +119,15 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   real lo = RC(0.0);
   for (int k = 0; k <= nb; ++k) {
     real hi = k < nb ? br[k] : phimax;
-    if (hi > lo) hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, lo, hi, ia, ib, ea, eb);
+    if (hi > lo) {
+      if (refine) {
+        real m = RC(0.5) * (lo + hi);
+        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, lo, m, ia, ib, ea, eb);
+        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, m, hi, ia, ib, ea, eb);
+      } else {
+        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, lo, hi, ia, ib, ea, eb);
+      }
+    }
     lo = hi;
   }
 }
@@ -124,7 +135,10 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
 /* The outer breakpoints after the ones at v1, v2: the e^-v decay wants panels of growing width. */
 BRDF_CONST real HEMI_BREAKS[5] = {RC(1.0), RC(3.0), RC(7.0), RC(15.0), RC(40.0)};
 
-BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu) {
+/* refine = 0: the default budget; 1: every outer panel halved, 32 trapezoid intervals, phi grading
+ * x2 instead of x4 and every phi panel halved. Callers refine the few texels whose bound is above
+ * their target (hemisphere_moments_to). */
+BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, int refine) {
   HemiResult res;
   res.a = 0;
   res.b = 0;
@@ -164,8 +178,8 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu) {
   }
   if (v1 < vend) bp[nbp++] = v1;
   prev = v1;
-  for (int k = 0; k < 5; ++k) {
-    real b = v1 + HEMI_BREAKS[k];
+  for (int k = -1; k < 5; ++k) {
+    real b = v1 + (k < 0 ? RC(0.25) : HEMI_BREAKS[k]);
     if (b < vend && vend - b >= RC(0.5) * (b - prev)) {
       bp[nbp++] = b;
       prev = b;
@@ -188,25 +202,30 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu) {
     int partial = cur >= v1;
     int sq_lo = partial && cur == v1;
     int sq_hi = next == v2;
-    real len = next - cur;
+    int nsub = refine ? 2 : 1;
+    for (int sub = 0; sub < nsub; ++sub) {
+    /* sub-panel [cur + sub len, ...]; only the first keeps the v1 end, only the last the v2 end */
+    real len = (next - cur) / (real)nsub;
+    real base = cur + len * (real)sub;
+    int slo = sq_lo && sub == 0, shi = sq_hi && sub == nsub - 1;
     real pka = RC(0.0), pkb = RC(0.0), pga = RC(0.0), pgb = RC(0.0), pea = RC(0.0), peb = RC(0.0);
     for (int k = 0; k < 15; ++k) {
       real y = RC(0.5) * (gk15_x(k) + RC(1.0));
-      real off, jac; /* v - cur and dv/dy */
-      if (sq_lo && sq_hi) {
+      real off, jac; /* v - base and dv/dy */
+      if (slo && shi) {
         off = len * y * y * (RC(3.0) - RC(2.0) * y);
         jac = RC(6.0) * len * y * (RC(1.0) - y);
-      } else if (sq_lo) {
+      } else if (slo) {
         off = len * y * y;
         jac = RC(2.0) * len * y;
-      } else if (sq_hi) {
+      } else if (shi) {
         off = len * (RC(1.0) - (RC(1.0) - y) * (RC(1.0) - y));
         jac = RC(2.0) * len * (RC(1.0) - y);
       } else {
         off = len * y;
         jac = len;
       }
-      real v = cur + off;
+      real v = base + off;
       BrdfAngle h = ndf_angle_of_v(ndf, p, v);
       real phimax = BRDF_PI;
       if (partial) {
@@ -221,7 +240,7 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu) {
         phimax = atan2(sqrt(opc * omc), c0);
       }
       real ia, ib, ea, eb;
-      hemi_phi(ndf, gaf, p, mu, s, h, !partial, phimax, &ia, &ib, &ea, &eb);
+      hemi_phi(ndf, gaf, p, mu, s, h, !partial, phimax, refine, &ia, &ib, &ea, &eb);
       real w = RC(0.5) * jac * exp(-v) * ndf_weight(ndf, p, h);
       pka += gk15_wk(k) * w * ia;
       pkb += gk15_wk(k) * w * ib;
@@ -234,6 +253,7 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu) {
     res.b += pkb;
     res.err_a += fabs(pka - pga) + pea;
     res.err_b += fabs(pkb - pgb) + peb;
+    }
     cur = next;
   }
   res.a *= BRDF_INV_PI;
@@ -281,6 +301,25 @@ BRDF_FN BrdfParams brdf_params(int ndf, int gaf, real r) {
   return p;
 }
 
+/* The largest of the bounds on A, B and E = A + B, each relative to max(1, |value|). */
+BRDF_FN real hemi_rel_error(HemiResult h) {
+  real a = (real)h.a, b = (real)h.b, e = (real)(h.a + h.b);
+  real ea = (real)h.err_a / fmax(RC(1.0), fabs(a));
+  real eb = (real)h.err_b / fmax(RC(1.0), fabs(b));
+  real ee = (real)(h.err_a + h.err_b) / fmax(RC(1.0), fabs(e));
+  return fmax(ee, fmax(ea, eb));
+}
+
+/* The default budget, and the refined one where its bound exceeds `target`. */
+BRDF_FN HemiResult hemisphere_moments_to(int ndf, int gaf, BrdfParams p, real mu, real target) {
+  HemiResult h = hemisphere_moments(ndf, gaf, p, mu, 0);
+  if (hemi_rel_error(h) > target) {
+    HemiResult r = hemisphere_moments(ndf, gaf, p, mu, 1);
+    if (hemi_rel_error(r) < hemi_rel_error(h)) h = r;
+  }
+  return h;
+}
+
 /* Average albedo E_avg = 2 int_0^1 E(mu) mu dmu (Kulla and Conty 2017).
  * E(mu) changes fastest where the lobe meets the horizon, mu ~ alpha, so GK15 panels on [0, 1] grow
  * geometrically from alpha/4 (x4 per panel). The bound adds the panels' |K15 - G7| and the inner
@@ -296,7 +335,7 @@ BRDF_FN real albedo_average(int ndf, int gaf, BrdfParams p, real* err) {
     acc_t sk = 0, sg = 0, se = 0;
     for (int k = 0; k < 15; ++k) {
       real mu = lo + hw * (gk15_x(k) + RC(1.0));
-      HemiResult h = hemisphere_moments(ndf, gaf, p, mu);
+      HemiResult h = hemisphere_moments_to(ndf, gaf, p, mu, RC(2e-6));
       real f = RC(2.0) * mu * (real)(h.a + h.b);
       sk += gk15_wk(k) * f;
       sg += gk15_wg(k) * f;
