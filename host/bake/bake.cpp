@@ -55,6 +55,7 @@ double storageError(const std::vector<float>& v, bool half) {
 }  // namespace
 
 TableImage computeTable(KernelRunner& runner, const TableJob& job, double* seconds) {
+  runner.prepare(job.ndf, job.kind == TableKind::Kp ? 0 : job.gaf);
   auto t0 = std::chrono::steady_clock::now();
   KernelTable kt;
   TableImage img;

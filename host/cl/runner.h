@@ -22,6 +22,9 @@ class KernelRunner {
  public:
   explicit KernelRunner(const cl::Device& device);
 
+  // Builds the pair's program now (kernel compile time is then kept out of the timed runs).
+  void prepare(int ndf, int gaf) { program(ndf, gaf); }
+
   // A, B, E over (mu, r), nx x ny.
   KernelTable hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid);
   // E_avg over r.

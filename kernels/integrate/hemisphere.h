@@ -133,7 +133,8 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
 }
 
 /* The outer breakpoints after the ones at v1, v2: the e^-v decay wants panels of growing width. */
-BRDF_CONST real HEMI_BREAKS[5] = {RC(1.0), RC(3.0), RC(7.0), RC(15.0), RC(40.0)};
+#define HEMI_NBREAKS 5
+BRDF_CONST real HEMI_BREAKS[HEMI_NBREAKS] = {RC(1.0), RC(3.0), RC(7.0), RC(15.0), RC(40.0)};
 
 /* refine = 0: the default budget; 1: every outer panel halved, 32 trapezoid intervals, phi grading
  * x2 instead of x4 and every phi panel halved. Callers refine the few texels whose bound is above
@@ -169,7 +170,7 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, i
   real bp[16];
   int nbp = 0;
   real prev = RC(0.0);
-  for (int k = 0; k < 5; ++k) {
+  for (int k = 0; k < HEMI_NBREAKS; ++k) {
     real b = HEMI_BREAKS[k];
     if (b < v1 && v1 - b >= RC(0.5) * (b - prev) && b < vend) {
       bp[nbp++] = b;
@@ -178,8 +179,8 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, i
   }
   if (v1 < vend) bp[nbp++] = v1;
   prev = v1;
-  for (int k = -1; k < 5; ++k) {
-    real b = v1 + (k < 0 ? RC(0.25) : HEMI_BREAKS[k]);
+  for (int k = 0; k < HEMI_NBREAKS; ++k) {
+    real b = v1 + HEMI_BREAKS[k];
     if (b < vend && vend - b >= RC(0.5) * (b - prev)) {
       bp[nbp++] = b;
       prev = b;
@@ -269,7 +270,7 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, i
 BRDF_FN real ndf_kp(int ndf, BrdfParams p, real* err) {
   acc_t sum = 0, e = 0;
   real cur = RC(0.0);
-  for (int i = 0; i < 5; ++i) {
+  for (int i = 0; i < HEMI_NBREAKS; ++i) {
     real len = HEMI_BREAKS[i] - cur;
     real sk = RC(0.0), sg = RC(0.0);
     for (int k = 0; k < 15; ++k) {
