@@ -110,12 +110,7 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
     real grow = refine ? RC(2.0) : RC(4.0);
     for (real d = layer; d < RC(0.5) * phimax && nb < 16; d *= grow) br[nb++] = phimax - d;
   }
-  for (int i = 1; i < nb; ++i)
-    for (int j = i; j > 0 && br[j - 1] > br[j]; --j) {
-      real t = br[j];
-      br[j] = br[j - 1];
-      br[j - 1] = t;
-    }
+  sort_ascending(br, nb);
   real lo = RC(0.0);
   for (int k = 0; k <= nb; ++k) {
     real hi = k < nb ? br[k] : phimax;
@@ -189,12 +184,7 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, i
   real gt2[4];
   int ng = gaf_theta_breaks(gaf, mu, s, gt2);
   for (int k = 0; k < ng; ++k) bp[nbp++] = ndf_v_of_tan2(ndf, p, gt2[k]);
-  for (int i = 1; i < nbp; ++i)
-    for (int j = i; j > 0 && bp[j - 1] > bp[j]; --j) {
-      real t = bp[j];
-      bp[j] = bp[j - 1];
-      bp[j - 1] = t;
-    }
+  sort_ascending(bp, nbp);
   real cur = RC(0.0);
   int ib = 0;
   while (cur < vend) {
