@@ -58,9 +58,14 @@ TEST_P(PairTest, AverageAlbedoMatchesReference) {
     double r = j / 2.0;
     double ref = r == 0 ? 0 : reference::albedoAvg(ndf, gaf, r);
     if (r == 0) {
-      // delta lobe: E(mu) = (G/no) F (o.h) at the mirror direction; 2 int E mu dmu by the reference's
-      // own quadrature of that closed form is not needed: check finiteness and range instead
+      // mirror: E(mu) = G(mirror) F = 1 for none and the Smith GAFs (G = 1 there), mu^2 for
+      // implicit, so E_avg = 1, resp. 2 int mu^3 dmu = 1/2
       EXPECT_TRUE(std::isfinite(t.planes[0][j]));
+      if (gaf == 0 || gaf == 9 || gaf == 10) {
+        EXPECT_NEAR(t.planes[0][j], 1.0, 1e-5);
+      } else if (gaf == 1) {
+        EXPECT_NEAR(t.planes[0][j], 0.5, 1e-5);
+      }
       continue;
     }
     double e = rel(t.planes[0][j], ref);

@@ -20,14 +20,16 @@ namespace brdfbake {
 namespace {
 
 // Allowance for evaluating the integrand in float on the device: the |K15 - G7| bounds cover
-// the quadrature, not rounding. The float/double comparison in tests/accuracy_test.cpp measures
-// rounding below 3e-7 over every pair; the allowance keeps a 3x margin.
+// the quadrature, not rounding. Where the quadrature bound is far below it, kernel-vs-reference
+// errors stay under 3e-7 (tests/accuracy_test.cpp, every pair; brdfbake-bench: 2.3e-7 on the
+// default table); the allowance keeps a 3x margin, and those tests check bound + allowance.
 constexpr double kFloatArithmeticAllowance = 1e-6;
 
 const char* kMethod =
     "h-space quadrature: theta_h by v=-log(1-CDF_ndf) in GK15 panels (breaks 1,3,7,15,40 and at the "
     "visible-domain limits, sqrt ends substituted), phi_h by 16-interval trapezoid on the full "
-    "circle or GK15 per smooth arc; error |K15-G7| + inner bounds + float allowance";
+    "circle or GK15 per smooth arc; texels bounded above 8e-6 redone with a doubled budget; error "
+    "|K15-G7| + inner bounds + float allowance";
 
 void ensureOutputDir(const std::string& dir) {
   struct stat st {};

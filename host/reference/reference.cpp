@@ -11,13 +11,12 @@
 namespace brdfbake::reference {
 namespace {
 
-using boost::math::quadrature::gauss_kronrod;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTol = 1e-11;  // absolute, per integral
 constexpr unsigned kDepth = 18;
 
-// Adaptive GK31 with an absolute tolerance: bisect until |K31 - G15| <= tol on each piece (a
-// tolerance relative to the piece's own integral would chase rounding noise where it is tiny).
+// Adaptive GK31: bisect until |K31 - G15| on a piece is below an absolute tolerance (halved with
+// each split) or below `rel` times the piece's L1 norm, whichever comes first.
 template <class F>
 double adapt(F& f, double a, double b, double tol, unsigned depth, double rel) {
   // GK31 on [a, b] from Boost's node tables: K31 value, |K31 - G15| error, L1 norm. (Boost's own
