@@ -131,6 +131,60 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
 #define HEMI_NBREAKS 5
 BRDF_CONST real HEMI_BREAKS[HEMI_NBREAKS] = {RC(1.0), RC(3.0), RC(7.0), RC(15.0), RC(40.0)};
 
+/* One GK15 panel [a, b] of the outer v axis, added to res (values, |K15 - G7| + inner bounds).
+ * partial: the panel lies in [v1, v2], where the phi arc ends at phimax(v) < pi.
+ * sq_lo / sq_hi: the panel starts at v1 / ends at v2, where the inner integral has a square-root
+ * end; v = a + L y^2, b - L (1-y)^2, or the smoothstep for both, make it smooth in y. */
+BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, real t1, real v1, real a,
+                              real b, int partial, int sq_lo, int sq_hi, int refine, HemiResult* res) {
+  real len = b - a;
+  real pka = RC(0.0), pkb = RC(0.0), pga = RC(0.0), pgb = RC(0.0), pea = RC(0.0), peb = RC(0.0);
+  for (int k = 0; k < 15; ++k) {
+    real y = RC(0.5) * (gk15_x(k) + RC(1.0));
+    real off, jac; /* v - a and dv/dy */
+    if (sq_lo && sq_hi) {
+      off = len * y * y * (RC(3.0) - RC(2.0) * y);
+      jac = RC(6.0) * len * y * (RC(1.0) - y);
+    } else if (sq_lo) {
+      off = len * y * y;
+      jac = RC(2.0) * len * y;
+    } else if (sq_hi) {
+      off = len * (RC(1.0) - (RC(1.0) - y) * (RC(1.0) - y));
+      jac = RC(2.0) * len * (RC(1.0) - y);
+    } else {
+      off = len * y;
+      jac = len;
+    }
+    real v = a + off;
+    BrdfAngle h = ndf_angle_of_v(ndf, p, v);
+    real phimax = BRDF_PI;
+    if (partial) {
+      real t = sqrt(h.t2);
+      real dt2 = ndf_tan2_diff(ndf, p, v1, v - v1); /* t^2 - t1^2 */
+      real inv = RC(1.0) / (RC(2.0) * s * t);
+      real opc = dt2 / (t + t1) * (mu * t + RC(1.0) + s) * inv; /* 1 + c0 */
+      real omc = (RC(1.0) + s - mu * t) * (t + t1) * inv;        /* 1 - c0 */
+      opc = fmax(opc, RC(0.0));
+      omc = fmax(omc, RC(0.0));
+      real c0 = opc < RC(1.0) ? opc - RC(1.0) : RC(1.0) - omc;
+      phimax = atan2(sqrt(opc * omc), c0);
+    }
+    real ia, ib, ea, eb;
+    hemi_phi(ndf, gaf, p, mu, s, h, !partial, phimax, refine, &ia, &ib, &ea, &eb);
+    real w = RC(0.5) * jac * exp(-v) * ndf_weight(ndf, p, h);
+    pka += gk15_wk(k) * w * ia;
+    pkb += gk15_wk(k) * w * ib;
+    pga += gk15_wg(k) * w * ia;
+    pgb += gk15_wg(k) * w * ib;
+    pea += gk15_wk(k) * w * ea;
+    peb += gk15_wk(k) * w * eb;
+  }
+  res->a += pka;
+  res->b += pkb;
+  res->err_a += fabs(pka - pga) + pea;
+  res->err_b += fabs(pkb - pgb) + peb;
+}
+
 /* refine = 0: the default budget; 1: every outer panel halved, 32 trapezoid intervals, phi grading
  * x2 instead of x4 and every phi panel halved. Callers refine the few texels whose bound is above
  * their target (hemisphere_moments_to). */
@@ -193,57 +247,13 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, i
     int partial = cur >= v1;
     int sq_lo = partial && cur == v1;
     int sq_hi = next == v2;
-    int nsub = refine ? 2 : 1;
-    for (int sub = 0; sub < nsub; ++sub) {
-    /* sub-panel [cur + sub len, ...]; only the first keeps the v1 end, only the last the v2 end */
-    real len = (next - cur) / (real)nsub;
-    real base = cur + len * (real)sub;
-    int slo = sq_lo && sub == 0, shi = sq_hi && sub == nsub - 1;
-    real pka = RC(0.0), pkb = RC(0.0), pga = RC(0.0), pgb = RC(0.0), pea = RC(0.0), peb = RC(0.0);
-    for (int k = 0; k < 15; ++k) {
-      real y = RC(0.5) * (gk15_x(k) + RC(1.0));
-      real off, jac; /* v - base and dv/dy */
-      if (slo && shi) {
-        off = len * y * y * (RC(3.0) - RC(2.0) * y);
-        jac = RC(6.0) * len * y * (RC(1.0) - y);
-      } else if (slo) {
-        off = len * y * y;
-        jac = RC(2.0) * len * y;
-      } else if (shi) {
-        off = len * (RC(1.0) - (RC(1.0) - y) * (RC(1.0) - y));
-        jac = RC(2.0) * len * (RC(1.0) - y);
-      } else {
-        off = len * y;
-        jac = len;
-      }
-      real v = base + off;
-      BrdfAngle h = ndf_angle_of_v(ndf, p, v);
-      real phimax = BRDF_PI;
-      if (partial) {
-        real t = sqrt(h.t2);
-        real dt2 = ndf_tan2_diff(ndf, p, v1, v - v1); /* t^2 - t1^2 */
-        real inv = RC(1.0) / (RC(2.0) * s * t);
-        real opc = dt2 / (t + t1) * (mu * t + RC(1.0) + s) * inv; /* 1 + c0 */
-        real omc = (RC(1.0) + s - mu * t) * (t + t1) * inv;        /* 1 - c0 */
-        opc = fmax(opc, RC(0.0));
-        omc = fmax(omc, RC(0.0));
-        real c0 = opc < RC(1.0) ? opc - RC(1.0) : RC(1.0) - omc;
-        phimax = atan2(sqrt(opc * omc), c0);
-      }
-      real ia, ib, ea, eb;
-      hemi_phi(ndf, gaf, p, mu, s, h, !partial, phimax, refine, &ia, &ib, &ea, &eb);
-      real w = RC(0.5) * jac * exp(-v) * ndf_weight(ndf, p, h);
-      pka += gk15_wk(k) * w * ia;
-      pkb += gk15_wk(k) * w * ib;
-      pga += gk15_wg(k) * w * ia;
-      pgb += gk15_wg(k) * w * ib;
-      pea += gk15_wk(k) * w * ea;
-      peb += gk15_wk(k) * w * eb;
-    }
-    res.a += pka;
-    res.b += pkb;
-    res.err_a += fabs(pka - pga) + pea;
-    res.err_b += fabs(pkb - pgb) + peb;
+    if (refine) {
+      /* two halves; only the first keeps the v1 end, only the last the v2 end */
+      real mid = RC(0.5) * (cur + next);
+      hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, cur, mid, partial, sq_lo, 0, refine, &res);
+      hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, mid, next, partial, 0, sq_hi, refine, &res);
+    } else {
+      hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, cur, next, partial, sq_lo, sq_hi, refine, &res);
     }
     cur = next;
   }
@@ -304,9 +314,10 @@ BRDF_FN real hemi_rel_error(HemiResult h) {
 /* The default budget, and the refined one where its bound exceeds `target`. */
 BRDF_FN HemiResult hemisphere_moments_to(int ndf, int gaf, BrdfParams p, real mu, real target) {
   HemiResult h = hemisphere_moments(ndf, gaf, p, mu, 0);
-  if (hemi_rel_error(h) > target) {
+  real e = hemi_rel_error(h);
+  if (e > target) {
     HemiResult r = hemisphere_moments(ndf, gaf, p, mu, 1);
-    if (hemi_rel_error(r) < hemi_rel_error(h)) h = r;
+    if (hemi_rel_error(r) < e) h = r;
   }
   return h;
 }
