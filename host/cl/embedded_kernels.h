@@ -1,4 +1,4 @@
-// The OpenCL sources compiled into the binary by cmake/embed_kernels.cmake, in device-compile order.
+// The OpenCL sources compiled into the binary by cmake/embed_kernels.cmake.
 #pragma once
 #include <string>
 #include <vector>

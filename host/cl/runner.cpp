@@ -6,14 +6,34 @@
 
 namespace brdfbake {
 
+namespace {
+const char* embedded(const std::string& path) {
+  for (const auto& f : kEmbeddedKernelSources)
+    if (path == f.path) return f.text;
+  throw Error(kExitSoftware, "internal: OpenCL source " + path + " is not embedded (CMakeLists.txt)");
+}
+void append(std::string& src, const std::string& path) {
+  src += "#line 1 \"" + path + "\"\n";
+  src += embedded(path);
+  src += "\n";
+}
+}  // namespace
+
+// The program for one model pair: the prelude fixing the pair, then the shared code in dependency
+// order. The pointwise functions (models and integrand) are compiled twice, for one value and for
+// a lane vector of values (kernels/brdf/compat.h explains the lanes).
 std::string kernelSource(int ndf, int gaf) {
   std::string src = "/* brdfbake prelude: " + ndfNames()[ndf] + " + " + gafNames()[gaf] + " */\n";
   src += "#define BRDF_NDF " + std::to_string(ndf) + "\n#define BRDF_GAF " + std::to_string(gaf) + "\n";
-  for (const auto& f : kEmbeddedKernelSources) {
-    src += "#line 1 \"" + std::string(f.path) + "\"\n";
-    src += f.text;
-    src += "\n";
-  }
+  const char* pointwise[] = {"kernels/brdf/ndf.h", "kernels/brdf/gaf.h", "kernels/brdf/fresnel.h",
+                             "kernels/integrate/integrand.h"};
+  append(src, "kernels/brdf/compat.h");
+  for (const char* f : pointwise) append(src, f);
+  src += "#define BRDF_LANE_PASS 1\n#undef real\n#define real lane_t\n";
+  for (const char* f : pointwise) append(src, f);
+  src += "#undef BRDF_LANE_PASS\n#undef real\n#define real float\n";
+  for (const char* f : {"kernels/integrate/quadrature.h", "kernels/integrate/hemisphere.h", "kernels/bake.cl"})
+    append(src, f);
   return src;
 }
 

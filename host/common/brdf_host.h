@@ -3,6 +3,7 @@
 // arithmetic, for tests that mirror a kernel exactly).
 #pragma once
 #include "brdf/compat.h"
+#define BRDF_HOST_NAMESPACE 1
 
 namespace brdf64 {
 typedef double real;
@@ -10,6 +11,7 @@ typedef double real;
 #include "brdf/ndf.h"
 #include "brdf/gaf.h"
 #include "brdf/fresnel.h"
+#include "integrate/integrand.h"
 #include "integrate/quadrature.h"
 #include "integrate/hemisphere.h"
 }  // namespace brdf64
@@ -20,6 +22,7 @@ typedef float real;
 #include "brdf/ndf.h"
 #include "brdf/gaf.h"
 #include "brdf/fresnel.h"
+#include "integrate/integrand.h"
 #include "integrate/quadrature.h"
 #include "integrate/hemisphere.h"
 }  // namespace brdf32

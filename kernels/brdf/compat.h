@@ -4,16 +4,36 @@
  * OpenCL C 1.2 and C++17 compile. The device compiles it with `real` = float; the host includes it
  * inside a namespace that defines `real` (double for tests, float to mirror the device).
  *   RC(x)      a floating literal of type real (0.5f on the device, (real)0.5 on the host)
- *   BRDF_FN    storage class of shared functions
- *   acc_t      accumulator type: double where the device has fp64, else float (Kahan-compensated)
+ *   BRDF_FN    storage class of shared functions (overloadable on the device, see lanes)
+ *   acc_t      accumulator type: double where the device has fp64, else float
+ *
+ * Lanes. PoCL does not vectorise across work-items when a kernel has loops, so the integrators
+ * evaluate BRDF_LANES quadrature nodes of one texel at once: lane_t is float16 on the device and
+ * plain `real` on the host (BRDF_LANES = 1). The pointwise functions (models in brdf/, the integrand
+ * in integrate/integrand.h) are branch-free in their lane arguments (selects, never `if` on a
+ * value) and the device compiles them twice, with `real` = float and `real` = lane_t
+ * (BRDF_LANE_PASS defined), overloaded by argument type. Parts that only exist once (ids, structs,
+ * grid maps) sit in `#ifndef BRDF_LANE_PASS` blocks.
+ *   lane_load(tab, k)  tab[k .. k + BRDF_LANES) as a lane_t;  lane_sum(x)  the sum of x's lanes
+ *   param_t            a value derived from the per-texel parameters: one value in both passes
  */
 #ifndef BRDF_COMPAT_H
 #define BRDF_COMPAT_H
 
 #ifdef __OPENCL_C_VERSION__
-#define BRDF_FN static inline
+#define BRDF_FN static inline __attribute__((overloadable))
 #define RC(x) x##f
-typedef float real;
+#define real float
+typedef float param_t;
+#define BRDF_LANES 16
+typedef float16 lane_t;
+#define lane_load(tab, k) vload16(0, (tab) + (k))
+static inline float lane_sum(float16 x) {
+  float8 a = x.lo + x.hi;
+  float4 b = a.lo + a.hi;
+  float2 c = b.lo + b.hi;
+  return c.x + c.y;
+}
 #if defined(cl_khr_fp64) && !defined(BRDF_NO_FP64)
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 typedef double acc_t;
@@ -23,12 +43,15 @@ typedef float acc_t;
 #define BRDF_ACC_IS_DOUBLE 0
 #endif
 #define BRDF_CONST constant
+#define BRDF_TABLE constant /* a parameter pointing into a BRDF_CONST table */
 #else /* C++ host */
 #include <cmath>
 #define BRDF_FN static inline
 #define RC(x) ((real)(x))
 #define BRDF_CONST static const
+#define BRDF_TABLE const
 #define BRDF_ACC_IS_DOUBLE 1
+#define BRDF_LANES 1
 #endif
 
 #define BRDF_PI RC(3.14159265358979323846)
@@ -37,9 +60,10 @@ typedef float acc_t;
 
 #endif /* BRDF_COMPAT_H */
 
-/* Per-namespace part for the host: pull the overloaded math functions into scope. This block is
- * outside the include guard on purpose: the host includes the models once per precision. */
-#ifndef __OPENCL_C_VERSION__
+/* Per-namespace part for the host: pull the overloaded math functions into scope and define the
+ * one-lane helpers for this namespace's `real`. Outside the include guard on purpose: the host
+ * includes the models once per precision (host/common/brdf_host.h defines BRDF_HOST_NAMESPACE). */
+#if !defined(__OPENCL_C_VERSION__) && defined(BRDF_HOST_NAMESPACE)
 using std::acos;
 using std::atan;
 using std::atan2;
@@ -57,4 +81,8 @@ using std::sin;
 using std::sqrt;
 using std::tan;
 typedef double acc_t;
+typedef real lane_t;
+typedef real param_t;
+BRDF_FN real lane_load(const real* tab, int k) { return tab[k]; }
+BRDF_FN real lane_sum(real x) { return x; }
 #endif

@@ -1,9 +1,11 @@
 /* fresnel.h: Fresnel reflectance, MODELS.md "Fresnel". c is the cosine of the angle to the normal
  * of the reflecting facet (o.h for microfacets). */
+#ifndef BRDF_LANE_PASS
 #define FRESNEL_ONE 0
 #define FRESNEL_SCHLICK 1
 #define FRESNEL_DIELECTRIC 2
 #define FRESNEL_SCHLICK_TIR 3
+#endif
 
 /* (1 - c)^5, Schlick's weight, with two multiplications instead of pow. */
 BRDF_FN real fresnel_schlick_weight(real c) {
@@ -20,11 +22,11 @@ BRDF_FN real fresnel_schlick(real f0, real c) { return f0 + (RC(1.0) - f0) * fre
 BRDF_FN real fresnel_dielectric(real eta, real c) {
   c = fabs(c);
   real g2 = eta * eta + c * c - RC(1.0);
-  if (g2 < RC(0.0)) return RC(1.0);
-  real g = sqrt(g2);
+  real g = sqrt(fmax(g2, RC(0.0)));
   real a = (g - c) / (g + c);
   real b = (c * (g + c) - RC(1.0)) / (c * (g - c) + RC(1.0));
-  return RC(0.5) * a * a * (RC(1.0) + b * b);
+  real f = RC(0.5) * a * a * (RC(1.0) + b * b);
+  return g2 < RC(0.0) ? RC(1.0) : f;
 }
 
 /* Schlick on the transmitted angle where eta < 1 (Burley 2015, MODELS.md errata):
@@ -32,8 +34,7 @@ BRDF_FN real fresnel_dielectric(real eta, real c) {
 BRDF_FN real fresnel_schlick_tir(real eta, real c) {
   real f0 = (eta - RC(1.0)) / (eta + RC(1.0));
   f0 *= f0;
-  if (eta >= RC(1.0)) return fresnel_schlick(f0, c);
   real ct2 = RC(1.0) - (RC(1.0) - c * c) / (eta * eta);
-  if (ct2 < RC(0.0)) return RC(1.0);
-  return fresnel_schlick(f0, sqrt(ct2));
+  real f = fresnel_schlick(f0, eta >= RC(1.0) ? c : sqrt(fmax(ct2, RC(0.0))));
+  return (eta < RC(1.0) && ct2 < RC(0.0)) ? RC(1.0) : f;
 }

@@ -6,6 +6,7 @@
  * n.i <= 0 or o.h <= 0 (i.h = o.h for the half vector).
  *   ni, no, nh, oh: the cosines n.i, n.o, n.h, o.h; s2i, s2o: sin^2 of theta_i, theta_o.
  */
+#ifndef BRDF_LANE_PASS
 #define GAF_NONE 0
 #define GAF_IMPLICIT 1
 #define GAF_COOK_TORRANCE 2
@@ -29,39 +30,44 @@ BRDF_FN real gaf_schlick_k(int gaf, real r, real alpha) {
   return RC(0.0);
 }
 
+#endif /* !BRDF_LANE_PASS */
+
 BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, real no, real nh, real oh,
                            real s2i, real s2o) {
-  if (ni <= RC(0.0) || oh <= RC(0.0)) return RC(0.0);
+  real g;
   if (gaf == GAF_NONE) {
     /* Ward: G = 1 */
-    return RC(1.0) / no;
+    g = RC(1.0) / no;
   } else if (gaf == GAF_IMPLICIT) {
     /* Blinn-Phong's hidden G = (n.i)(n.o) */
-    return ni;
+    g = ni;
   } else if (gaf == GAF_COOK_TORRANCE) {
     /* Cook and Torrance 1982: min(1, 2(n.h)(n.o)/(o.h), 2(n.h)(n.i)/(o.h)) */
     real t = RC(2.0) * nh / oh;
-    return fmin(fmin(RC(1.0) / no, t), t * ni / no);
+    g = fmin(fmin(RC(1.0) / no, t), t * ni / no);
   } else if (gaf == GAF_KELEMEN) {
     /* Kelemen and Szirmay-Kalos 2001: (n.i)(n.o)/(o.h)^2 */
-    return ni / (oh * oh);
+    g = ni / (oh * oh);
   } else if (gaf == GAF_NEUMANN) {
     /* Neumann et al. 1999: (n.i)(n.o)/max(n.i, n.o) */
-    return ni / fmax(ni, no);
+    g = ni / fmax(ni, no);
   } else if (gaf == GAF_ASHIKHMIN_PREMOZE) {
     /* Ashikhmin and Premoze 2007: (n.i)(n.o)/(n.i + n.o - (n.i)(n.o)) */
-    return ni / (ni + no - ni * no);
+    g = ni / (ni + no - ni * no);
   } else if (gaf == GAF_SCHLICK_BECKMANN || gaf == GAF_SCHLICK_GGX || gaf == GAF_SCHLICK_GGX_DIRECT) {
     /* Schlick 1994: g(x) = x/(x(1-k)+k); G = g(n.i) g(n.o) */
-    real k = p.k;
-    return ni / (ni * (RC(1.0) - k) + k) / (no * (RC(1.0) - k) + k);
+    param_t k = p.k;
+    g = ni / (ni * (RC(1.0) - k) + k) / (no * (RC(1.0) - k) + k);
   } else if (gaf == GAF_SMITH) {
     /* separable Smith: G1(i) G1(o), G1(v)/(n.v) = 1/(n.v + n.v Lambda(v)) */
-    return ni / ((ni + ndf_cLambda(ndf, p, ni, s2i)) * (no + ndf_cLambda(ndf, p, no, s2o)));
+    g = ni / ((ni + ndf_cLambda(ndf, p, ni, s2i)) * (no + ndf_cLambda(ndf, p, no, s2o)));
   } else {
     /* height-correlated Smith (Heitz 2014): 1/(1 + Lambda_i + Lambda_o), times ni/ni */
-    return ni / (ni * no + no * ndf_cLambda(ndf, p, ni, s2i) + ni * ndf_cLambda(ndf, p, no, s2o));
+    g = ni / (ni * no + no * ndf_cLambda(ndf, p, ni, s2i) + ni * ndf_cLambda(ndf, p, no, s2o));
   }
+  /* chi+: nothing where i is below the surface or h faces away from o (selected, not branched,
+   * so that the same code serves one value and a lane vector) */
+  return (ni <= RC(0.0) || oh <= RC(0.0)) ? RC(0.0) : g;
 }
 
 BRDF_FN real gaf_G(int gaf, int ndf, BrdfParams p, real ni, real no, real nh, real oh, real s2i,
@@ -69,6 +75,7 @@ BRDF_FN real gaf_G(int gaf, int ndf, BrdfParams p, real ni, real no, real nh, re
   return no * gaf_G_over_no(gaf, ndf, p, ni, no, nh, oh, s2i, s2o);
 }
 
+#ifndef BRDF_LANE_PASS
 /* Where G has a kink as a function of the azimuth phi of h (fixed theta_h), as values of cos(phi).
  * The integrators split their phi panels there so Gauss rules see only smooth pieces.
  * With o = (s, 0, mu) and h at (theta, phi): o.h = s sin cos(phi) + mu c, n.i = 2 (o.h) c - mu.
@@ -119,3 +126,4 @@ BRDF_FN int gaf_theta_breaks(int gaf, real mu, real s, real* t2) {
   }
   return m;
 }
+#endif /* !BRDF_LANE_PASS */

@@ -8,7 +8,10 @@
  * Angles are passed as (c, s2) = (cos theta, sin^2 theta), computed by the caller without
  * cancellation, so that near-mirror lobes (alpha = 1e-4, Blinn-Phong e = 2e8) keep full precision.
  * The model id is a compile-time constant on the device (prelude #define), so every switch folds.
+ * The pointwise verbs are lane-generic (compat.h): branches only on the model id and per-texel
+ * parameters, selects on values.
  */
+#ifndef BRDF_LANE_PASS
 #define NDF_GGX 0
 #define NDF_BECKMANN 1
 #define NDF_BLINN_PHONG 2
@@ -29,36 +32,37 @@ typedef struct BrdfAngle {
   real s2; /* sin^2 theta */
   real t2; /* tan^2 theta */
 } BrdfAngle;
+#endif /* !BRDF_LANE_PASS */
 
 /* Raw shapes, MODELS.md table. GGX: c^2(alpha^2-1)+1 = c^2 alpha^2 + s2 (no cancellation). */
 BRDF_FN real ndf_p(int ndf, BrdfParams p, real c, real s2) {
-  real a2 = p.alpha * p.alpha;
-  if (s2 <= RC(0.0)) return RC(1.0);
+  param_t a2 = p.alpha * p.alpha;
+  real v;
   if (ndf == NDF_GGX) {
     real den = c * c * a2 + s2;
-    return (a2 / den) * (a2 / den);
+    v = (a2 / den) * (a2 / den);
+  } else if (a2 <= RC(0.0)) {
+    v = RC(0.0); /* a delta at h = n: 0 off the normal */
   } else if (ndf == NDF_BECKMANN) {
     /* exp(-tan^2/alpha^2)/c^4 */
-    if (a2 <= RC(0.0)) return RC(0.0);
     real c2 = c * c;
-    return exp(-s2 / (c2 * a2)) / (c2 * c2);
+    v = exp(-s2 / (c2 * a2)) / (c2 * c2);
   } else if (ndf == NDF_BLINN_PHONG) {
     /* c^e with e = 2/alpha^2 - 2 (Walter 2007), in log space: log c = log1p(-s2)/2 */
-    if (a2 <= RC(0.0)) return RC(0.0);
     real e = RC(2.0) / a2 - RC(2.0);
-    return exp(e * RC(0.5) * log1p(-s2));
+    v = exp(e * RC(0.5) * log1p(-s2));
   } else {
     /* Torrance-Sparrow gaussian exp(-c_g^2 theta^2), c_g = 1/alpha */
-    if (a2 <= RC(0.0)) return RC(0.0);
     real th = atan2(sqrt(s2), c) / p.alpha;
-    return exp(-th * th);
+    v = exp(-th * th);
   }
+  return s2 <= RC(0.0) ? RC(1.0) : v;
 }
 
 /* Normalised D. GGX: Walter 2007 eq. 33; Beckmann: Walter eq. 25; Blinn-Phong: (e+2)/(2 pi) c^e
  * = c^e/(pi alpha^2) since (e+2)/2 = 1/alpha^2; gaussian: p/k_p. */
 BRDF_FN real ndf_D(int ndf, BrdfParams p, real c, real s2) {
-  real a2 = p.alpha * p.alpha;
+  param_t a2 = p.alpha * p.alpha;
   if (ndf == NDF_GGX) {
     real den = c * c * a2 + s2;
     return a2 / (BRDF_PI * den * den);
@@ -78,15 +82,15 @@ BRDF_FN real ndf_D(int ndf, BrdfParams p, real c, real s2) {
  * Blinn-Phong and the gaussian use the Beckmann Lambda with alpha = sqrt(2/(e+2)) resp. 1/c_g, which
  * both equal our alpha (MODELS.md). */
 BRDF_FN real ndf_cLambda(int ndf, BrdfParams p, real c, real s2) {
-  real a2 = p.alpha * p.alpha;
+  param_t a2 = p.alpha * p.alpha;
   if (ndf == NDF_GGX) {
     real x = a2 * s2;
     return RC(0.5) * x / (sqrt(c * c + x) + c);
   } else {
     real as = p.alpha * sqrt(s2);
-    if (as <= RC(0.0)) return RC(0.0);
     real a = c / as;
-    return RC(0.5) * (as * exp(-a * a) / BRDF_SQRT_PI - c * erfc(a));
+    real v = RC(0.5) * (as * exp(-a * a) / BRDF_SQRT_PI - c * erfc(a));
+    return as <= RC(0.0) ? RC(0.0) : v;
   }
 }
 
@@ -102,6 +106,7 @@ BRDF_FN real ndf_G(int ndf, BrdfParams p, real ci, real s2i, real co, real s2o) 
   return ci * co / (ci * co + co * ndf_cLambda(ndf, p, ci, s2i) + ci * ndf_cLambda(ndf, p, co, s2o));
 }
 
+#ifndef BRDF_LANE_PASS
 /* ---- change of variables: v = -log(1 - CDF(theta_h)) ----------------------------------------
  * With u = CDF(theta) of the measure D(h)(n.h) dw_h, D sin dtheta dphi = du dphi/(2 pi cos), and
  * du = exp(-v) dv. v is the natural coordinate of each NDF's tail:
@@ -164,3 +169,4 @@ BRDF_FN real ndf_tan2_diff(int ndf, BrdfParams p, real v1, real dv) {
   if (g == NDF_BECKMANN) return a2 * dv;
   return exp(a2 * v1) * expm1(a2 * dv);
 }
+#endif /* !BRDF_LANE_PASS */

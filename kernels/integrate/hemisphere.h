@@ -27,37 +27,60 @@ typedef struct HemiResult {
   acc_t err_a, err_b; /* error bounds */
 } HemiResult;
 
-/* The integrand H split by Schlick's weight: fa = H (1 - (1-o.h)^5), fb = H (1-o.h)^5. */
-BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real cphi,
-                       real* fa, real* fb) {
-  real oh = fmin(s * sn * cphi + mu * h.c, RC(1.0));
-  /* n.i <= 1 exactly, but not always after rounding: clamp so sin^2 theta_i never goes negative */
-  real ni = fmin(RC(2.0) * oh * h.c - mu, RC(1.0));
-  real s2i = (RC(1.0) - ni) * (RC(1.0) + ni);
-  real s2o = s * s;
-  real H = gaf_G_over_no(gaf, ndf, p, ni, mu, h.c, oh, s2i, s2o) * oh / h.c;
-  real f5 = fresnel_schlick_weight(oh);
-  *fb = H * f5;
-  *fa = H - *fb;
-}
-
-/* GK15 over phi in [lo, hi]: adds the Kronrod values to ka, kb and |K - G| to ea, eb. */
+/* GK15 over phi in [lo, hi]: adds the Kronrod values to ka, kb and |K - G| to ea, eb.
+ * All 15 nodes in one lane vector on the device (HEMI_GK_N = 16, the last of weight 0). */
 BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo,
                          real hi, real* ka, real* kb, real* ea, real* eb) {
   real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo);
-  real sa = RC(0.0), sb = RC(0.0), ga = RC(0.0), gb = RC(0.0);
-  for (int k = 0; k < 15; ++k) {
-    real fa, fb;
-    hemi_node(ndf, gaf, p, mu, s, h, sn, cos(mid + hw * gk15_x(k)), &fa, &fb);
-    sa += gk15_wk(k) * fa;
-    sb += gk15_wk(k) * fb;
-    ga += gk15_wg(k) * fa;
-    gb += gk15_wg(k) * fb;
+  real sa = RC(0.0), sb = RC(0.0), da = RC(0.0), db = RC(0.0);
+  int k = 0;
+  for (; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
+    lane_t fa, fb;
+    hemi_node(ndf, gaf, p, mu, s, h, sn, cos(mid + hw * lane_load(GK15_XL, k)), &fa, &fb);
+    lane_t wk = lane_load(GK15_WKL, k), wd = lane_load(GK15_WDL, k);
+    sa += lane_sum(wk * fa);
+    sb += lane_sum(wk * fb);
+    da += lane_sum(wd * fa);
+    db += lane_sum(wd * fb);
   }
   *ka += sa * hw;
   *kb += sb * hw;
-  *ea += fabs(sa - ga) * hw;
-  *eb += fabs(sb - gb) * hw;
+  *ea += fabs(da) * hw;
+  *eb += fabs(db) * hw;
+}
+
+/* Trapezoid on the whole half-circle with n = 16 or 32 intervals (nodes cos(k pi/n)): values to
+ * ia, ib, the difference from the n/2-interval rule to ea, eb. Lane vectors of nodes, then the
+ * remaining node(s) one by one. */
+BRDF_FN void hemi_phi_trap(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, int n,
+                           real* ia, real* ib, real* ea, real* eb) {
+  BRDF_TABLE real* cs = n == 32 ? COS_PI32 : COS_PI16;
+  BRDF_TABLE real* w = n == 32 ? TRAP32_W : TRAP16_W;
+  BRDF_TABLE real* d = n == 32 ? TRAP32_D : TRAP16_D;
+  real sa = RC(0.0), sb = RC(0.0), da = RC(0.0), db = RC(0.0);
+  int k = 0;
+  for (; k + BRDF_LANES <= n + 1; k += BRDF_LANES) {
+    lane_t fa, fb;
+    hemi_node(ndf, gaf, p, mu, s, h, sn, lane_load(cs, k), &fa, &fb);
+    lane_t wk = lane_load(w, k), dk = lane_load(d, k);
+    sa += lane_sum(wk * fa);
+    sb += lane_sum(wk * fb);
+    da += lane_sum(dk * fa);
+    db += lane_sum(dk * fb);
+  }
+  for (; k <= n; ++k) {
+    real fa, fb;
+    hemi_node(ndf, gaf, p, mu, s, h, sn, cs[k], &fa, &fb);
+    sa += w[k] * fa;
+    sb += w[k] * fb;
+    da += d[k] * fa;
+    db += d[k] * fb;
+  }
+  real step = BRDF_PI / (real)n;
+  *ia = sa * step;
+  *ib = sb * step;
+  *ea = fabs(da) * step;
+  *eb = fabs(db) * step;
 }
 
 /* int_0^phimax H dphi at fixed theta_h (full: phimax = pi). Results in ia, ib; bounds in ea, eb. */
@@ -71,25 +94,7 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   real kinks[3];
   int nk = gaf_kinks(gaf, mu, s, h.c, sn, kinks);
   if (full && nk == 0) {
-    /* trapezoid, HEMI_PHI_N intervals on [0, pi], and its half-size subset */
-    int nphi = refine ? 32 : HEMI_PHI_N;
-    real ta = RC(0.0), tb = RC(0.0), ha = RC(0.0), hb = RC(0.0);
-    for (int k = 0; k <= nphi; ++k) {
-      real fa, fb;
-      hemi_node(ndf, gaf, p, mu, s, h, sn, COS_PI32[k * (32 / nphi)], &fa, &fb);
-      real w = (k == 0 || k == nphi) ? RC(0.5) : RC(1.0);
-      ta += w * fa;
-      tb += w * fb;
-      if ((k & 1) == 0) {
-        ha += w * fa;
-        hb += w * fb;
-      }
-    }
-    real step = BRDF_PI / (real)nphi;
-    *ia = ta * step;
-    *ib = tb * step;
-    *ea = fabs(ta - RC(2.0) * ha) * step;
-    *eb = fabs(tb - RC(2.0) * hb) * step;
+    hemi_phi_trap(ndf, gaf, p, mu, s, h, sn, refine ? 32 : 16, ia, ib, ea, eb);
     return;
   }
   /* Breakpoints inside (0, phimax): the GAF's kinks, and on a partial arc a geometric grading
