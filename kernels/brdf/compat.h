@@ -14,7 +14,8 @@
  * value) and the device compiles them twice, with `real` = float and `real` = lane_t
  * (BRDF_LANE_PASS defined), overloaded by argument type. Parts that only exist once (ids, structs,
  * grid maps) sit in `#ifndef BRDF_LANE_PASS` blocks.
- *   lane_load(tab, k)  tab[k .. k + BRDF_LANES) as a lane_t;  lane_sum(x)  the sum of x's lanes
+ *   lane_load(tab, k)  tab[k .. k + BRDF_LANES) as a lane_t;  lane_store(x, arr, k) the reverse
+ *   lane_sum(x)        the sum of x's lanes
  *   param_t            a value derived from the per-texel parameters: one value in both passes
  */
 #ifndef BRDF_COMPAT_H
@@ -28,6 +29,7 @@ typedef float param_t;
 #define BRDF_LANES 16
 typedef float16 lane_t;
 #define lane_load(tab, k) vload16(0, (tab) + (k))
+#define lane_store(x, arr, k) vstore16((x), 0, (arr) + (k))
 static inline float lane_sum(float16 x) {
   float8 a = x.lo + x.hi;
   float4 b = a.lo + a.hi;
@@ -85,4 +87,5 @@ typedef real lane_t;
 typedef real param_t;
 BRDF_FN real lane_load(const real* tab, int k) { return tab[k]; }
 BRDF_FN real lane_sum(real x) { return x; }
+BRDF_FN void lane_store(real x, real* arr, int k) { arr[k] = x; }
 #endif

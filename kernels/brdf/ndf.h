@@ -106,7 +106,6 @@ BRDF_FN real ndf_G(int ndf, BrdfParams p, real ci, real s2i, real co, real s2o) 
   return ci * co / (ci * co + co * ndf_cLambda(ndf, p, ci, s2i) + ci * ndf_cLambda(ndf, p, co, s2o));
 }
 
-#ifndef BRDF_LANE_PASS
 /* ---- change of variables: v = -log(1 - CDF(theta_h)) ----------------------------------------
  * With u = CDF(theta) of the measure D(h)(n.h) dw_h, D sin dtheta dphi = du dphi/(2 pi cos), and
  * du = exp(-v) dv. v is the natural coordinate of each NDF's tail:
@@ -115,22 +114,56 @@ BRDF_FN real ndf_G(int ndf, BrdfParams p, real ci, real s2i, real co, real s2o) 
  *   Blinn-Phong: 1-u = c^(e+2) = c^(2/alpha^2) => c^2 = exp(-alpha^2 v),  v = log1p(t2)/alpha^2
  * The gaussian has no closed-form CDF: it is integrated on the GGX grid of the same alpha, with the
  * weight D_gauss/D_ggx (ndf_weight), which is bounded because GGX has the heavier tail. */
+#ifndef BRDF_LANE_PASS
 BRDF_FN int ndf_grid_model(int ndf) { return ndf == NDF_GAUSSIAN ? NDF_GGX : ndf; }
+#endif
 
-BRDF_FN BrdfAngle ndf_angle_of_v(int ndf, BrdfParams p, real v) {
-  BrdfAngle a;
-  real a2 = p.alpha * p.alpha;
+/* The angle at v: cos, sin^2 and tan^2 of theta_h. */
+BRDF_FN void ndf_angle_v(int ndf, BrdfParams p, real v, real* c, real* s2, real* t2) {
+  param_t a2 = p.alpha * p.alpha;
   int g = ndf_grid_model(ndf);
   if (g == NDF_BLINN_PHONG) {
     real c2 = exp(-a2 * v);
-    a.c = sqrt(c2);
-    a.s2 = -expm1(-a2 * v);
-    a.t2 = a.s2 / c2;
+    *c = sqrt(c2);
+    *s2 = -expm1(-a2 * v);
+    *t2 = *s2 / c2;
   } else {
-    a.t2 = a2 * (g == NDF_GGX ? expm1(v) : v);
-    a.c = RC(1.0) / sqrt(RC(1.0) + a.t2);
-    a.s2 = a.t2 / (RC(1.0) + a.t2);
+    *t2 = a2 * (g == NDF_GGX ? expm1(v) : v);
+    *c = RC(1.0) / sqrt(RC(1.0) + *t2);
+    *s2 = *t2 / (RC(1.0) + *t2);
   }
+}
+
+/* p / D_grid, the integrand of k_p on the v grid (k_p = integral of e^-v p/D_grid dv):
+ * pi alpha^2 for GGX, Beckmann and Blinn-Phong (p/D is that constant), and for the gaussian
+ * p / D_ggx = p pi (c^2 alpha^2 + s2)^2 / alpha^2. */
+BRDF_FN real ndf_p_over_D_grid(int ndf, BrdfParams p, real c, real s2) {
+  param_t a2 = p.alpha * p.alpha;
+  if (ndf != NDF_GAUSSIAN) return BRDF_PI * a2;
+  real den = c * c * a2 + s2;
+  return ndf_p(NDF_GAUSSIAN, p, c, s2) * BRDF_PI * (den / p.alpha) * (den / p.alpha);
+}
+
+/* D / D_grid: 1 where the grid is the NDF's own CDF, D_gauss/D_ggx for the gaussian. */
+BRDF_FN real ndf_weight(int ndf, BrdfParams p, real c, real s2) {
+  if (ndf != NDF_GAUSSIAN) return RC(1.0);
+  return p.inv_kp * ndf_p_over_D_grid(ndf, p, c, s2);
+}
+
+/* tan^2(theta(v1 + dv)) - tan^2(theta(v1)), exact in dv (no cancellation when dv is small):
+ *   GGX: alpha^2 e^{v1} expm1(dv);  Beckmann: alpha^2 dv;  Blinn-Phong: e^{alpha^2 v1} expm1(alpha^2 dv). */
+BRDF_FN real ndf_tan2_diff(int ndf, BrdfParams p, param_t v1, real dv) {
+  param_t a2 = p.alpha * p.alpha;
+  int g = ndf_grid_model(ndf);
+  if (g == NDF_GGX) return a2 * exp(v1) * expm1(dv);
+  if (g == NDF_BECKMANN) return a2 * dv;
+  return exp(a2 * v1) * expm1(a2 * dv);
+}
+
+#ifndef BRDF_LANE_PASS
+BRDF_FN BrdfAngle ndf_angle_of_v(int ndf, BrdfParams p, real v) {
+  BrdfAngle a;
+  ndf_angle_v(ndf, p, v, &a.c, &a.s2, &a.t2);
   return a;
 }
 
@@ -142,31 +175,5 @@ BRDF_FN real ndf_v_of_tan2(int ndf, BrdfParams p, real t2) {
   if (g == NDF_GGX) return log1p(t2 / a2);
   if (g == NDF_BECKMANN) return t2 / a2;
   return log1p(t2) / a2;
-}
-
-/* p / D_grid, the integrand of k_p on the v grid (k_p = integral of e^-v p/D_grid dv):
- * pi alpha^2 for GGX, Beckmann and Blinn-Phong (p/D is that constant), and for the gaussian
- * p / D_ggx = p pi (c^2 alpha^2 + s2)^2 / alpha^2. */
-BRDF_FN real ndf_p_over_D_grid(int ndf, BrdfParams p, BrdfAngle a) {
-  real a2 = p.alpha * p.alpha;
-  if (ndf != NDF_GAUSSIAN) return BRDF_PI * a2;
-  real den = a.c * a.c * a2 + a.s2;
-  return ndf_p(NDF_GAUSSIAN, p, a.c, a.s2) * BRDF_PI * (den / p.alpha) * (den / p.alpha);
-}
-
-/* D / D_grid: 1 where the grid is the NDF's own CDF, D_gauss/D_ggx for the gaussian. */
-BRDF_FN real ndf_weight(int ndf, BrdfParams p, BrdfAngle a) {
-  if (ndf != NDF_GAUSSIAN) return RC(1.0);
-  return p.inv_kp * ndf_p_over_D_grid(ndf, p, a);
-}
-
-/* tan^2(theta(v1 + dv)) - tan^2(theta(v1)), exact in dv (no cancellation when dv is small):
- *   GGX: alpha^2 e^{v1} expm1(dv);  Beckmann: alpha^2 dv;  Blinn-Phong: e^{alpha^2 v1} expm1(alpha^2 dv). */
-BRDF_FN real ndf_tan2_diff(int ndf, BrdfParams p, real v1, real dv) {
-  real a2 = p.alpha * p.alpha;
-  int g = ndf_grid_model(ndf);
-  if (g == NDF_GGX) return a2 * exp(v1) * expm1(dv);
-  if (g == NDF_BECKMANN) return a2 * dv;
-  return exp(a2 * v1) * expm1(a2 * dv);
 }
 #endif /* !BRDF_LANE_PASS */

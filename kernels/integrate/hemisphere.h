@@ -83,10 +83,10 @@ BRDF_FN void hemi_phi_trap(int ndf, int gaf, BrdfParams p, real mu, real s, Brdf
   *eb = fabs(db) * step;
 }
 
-/* int_0^phimax H dphi at fixed theta_h (full: phimax = pi). Results in ia, ib; bounds in ea, eb. */
-BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, int full, real phimax,
-                      int refine, real* ia, real* ib, real* ea, real* eb) {
-  real sn = sqrt(h.s2);
+/* int_0^phimax H dphi at fixed theta_h (full: phimax = pi; sn = sin theta_h, sinmax = sin phimax).
+ * Results in ia, ib; bounds in ea, eb. */
+BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, int full,
+                      real phimax, real sinmax, int refine, real* ia, real* ib, real* ea, real* eb) {
   *ia = RC(0.0);
   *ib = RC(0.0);
   *ea = RC(0.0);
@@ -111,7 +111,7 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
     }
   }
   if (!full) {
-    real layer = mu / (RC(2.0) * h.c * s * sn * fmax(sin(phimax), RC(1e-30)));
+    real layer = mu / (RC(2.0) * h.c * s * sn * fmax(sinmax, RC(1e-30)));
     real grow = refine ? RC(2.0) : RC(4.0);
     for (real d = layer; d < RC(0.5) * phimax && nb < 16; d *= grow) br[nb++] = phimax - d;
   }
@@ -139,14 +139,16 @@ BRDF_CONST real HEMI_BREAKS[HEMI_NBREAKS] = {RC(1.0), RC(3.0), RC(7.0), RC(15.0)
 /* One GK15 panel [a, b] of the outer v axis, added to res (values, |K15 - G7| + inner bounds).
  * partial: the panel lies in [v1, v2], where the phi arc ends at phimax(v) < pi.
  * sq_lo / sq_hi: the panel starts at v1 / ends at v2, where the inner integral has a square-root
- * end; v = a + L y^2, b - L (1-y)^2, or the smoothstep for both, make it smooth in y. */
+ * end; v = a + L y^2, b - L (1-y)^2, or the smoothstep for both, make it smooth in y.
+ * First the nodes' angles, arcs and weights, all nodes at once in lanes; then each node's azimuth
+ * integral (itself in lanes). */
 BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, real t1, real v1, real a,
                               real b, int partial, int sq_lo, int sq_hi, int refine, HemiResult* res) {
   real len = b - a;
-  real pka = RC(0.0), pkb = RC(0.0), pga = RC(0.0), pgb = RC(0.0), pea = RC(0.0), peb = RC(0.0);
-  for (int k = 0; k < 15; ++k) {
-    real y = RC(0.5) * (gk15_x(k) + RC(1.0));
-    real off, jac; /* v - a and dv/dy */
+  real nc[16], ns2[16], nt2[16], nsn[16], nphi[16], nsin[16], nw[16];
+  for (int k = 0; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
+    lane_t y = RC(0.5) * (lane_load(GK15_XL, k) + RC(1.0));
+    lane_t off, jac; /* v - a and dv/dy */
     if (sq_lo && sq_hi) {
       off = len * y * y * (RC(3.0) - RC(2.0) * y);
       jac = RC(6.0) * len * y * (RC(1.0) - y);
@@ -160,34 +162,47 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
       off = len * y;
       jac = len;
     }
-    real v = a + off;
-    BrdfAngle h = ndf_angle_of_v(ndf, p, v);
-    real phimax = BRDF_PI;
+    lane_t v = a + off, c, s2, t2;
+    ndf_angle_v(ndf, p, v, &c, &s2, &t2);
+    lane_t phimax = BRDF_PI, sinmax = RC(0.0);
     if (partial) {
-      real t = sqrt(h.t2);
-      real dt2 = ndf_tan2_diff(ndf, p, v1, v - v1); /* t^2 - t1^2 */
-      real inv = RC(1.0) / (RC(2.0) * s * t);
-      real opc = dt2 / (t + t1) * (mu * t + RC(1.0) + s) * inv; /* 1 + c0 */
-      real omc = (RC(1.0) + s - mu * t) * (t + t1) * inv;        /* 1 - c0 */
-      opc = fmax(opc, RC(0.0));
-      omc = fmax(omc, RC(0.0));
-      real c0 = opc < RC(1.0) ? opc - RC(1.0) : RC(1.0) - omc;
-      phimax = atan2(sqrt(opc * omc), c0);
+      lane_t t = sqrt(t2);
+      lane_t dt2 = ndf_tan2_diff(ndf, p, v1, v - v1); /* t^2 - t1^2 */
+      lane_t inv = RC(1.0) / (RC(2.0) * s * t);
+      lane_t opc = fmax(dt2 / (t + t1) * (mu * t + RC(1.0) + s) * inv, RC(0.0)); /* 1 + c0 */
+      lane_t omc = fmax((RC(1.0) + s - mu * t) * (t + t1) * inv, RC(0.0));        /* 1 - c0 */
+      lane_t c0 = opc < RC(1.0) ? opc - RC(1.0) : RC(1.0) - omc;
+      sinmax = sqrt(opc * omc);
+      phimax = atan2(sinmax, c0);
     }
+    lane_store(c, nc, k);
+    lane_store(s2, ns2, k);
+    lane_store(t2, nt2, k);
+    lane_store(sqrt(s2), nsn, k);
+    lane_store(phimax, nphi, k);
+    lane_store(sinmax, nsin, k);
+    lane_store(RC(0.5) * jac * exp(-v) * ndf_weight(ndf, p, c, s2), nw, k);
+  }
+  real pka = RC(0.0), pkb = RC(0.0), pda = RC(0.0), pdb = RC(0.0), pea = RC(0.0), peb = RC(0.0);
+  for (int k = 0; k < 15; ++k) {
+    BrdfAngle h;
+    h.c = nc[k];
+    h.s2 = ns2[k];
+    h.t2 = nt2[k];
     real ia, ib, ea, eb;
-    hemi_phi(ndf, gaf, p, mu, s, h, !partial, phimax, refine, &ia, &ib, &ea, &eb);
-    real w = RC(0.5) * jac * exp(-v) * ndf_weight(ndf, p, h);
-    pka += gk15_wk(k) * w * ia;
-    pkb += gk15_wk(k) * w * ib;
-    pga += gk15_wg(k) * w * ia;
-    pgb += gk15_wg(k) * w * ib;
-    pea += gk15_wk(k) * w * ea;
-    peb += gk15_wk(k) * w * eb;
+    hemi_phi(ndf, gaf, p, mu, s, h, nsn[k], !partial, nphi[k], nsin[k], refine, &ia, &ib, &ea, &eb);
+    real wk = GK15_WKL[k] * nw[k], wd = GK15_WDL[k] * nw[k];
+    pka += wk * ia;
+    pkb += wk * ib;
+    pda += wd * ia;
+    pdb += wd * ib;
+    pea += wk * ea;
+    peb += wk * eb;
   }
   res->a += pka;
   res->b += pkb;
-  res->err_a += fabs(pka - pga) + pea;
-  res->err_b += fabs(pkb - pgb) + peb;
+  res->err_a += fabs(pda) + pea;
+  res->err_b += fabs(pdb) + peb;
 }
 
 /* refine = 0: the default budget; 1: every outer panel halved, 32 trapezoid intervals, phi grading
@@ -280,7 +295,8 @@ BRDF_FN real ndf_kp(int ndf, BrdfParams p, real* err) {
     real sk = RC(0.0), sg = RC(0.0);
     for (int k = 0; k < 15; ++k) {
       real v = cur + RC(0.5) * len * (gk15_x(k) + RC(1.0));
-      real f = exp(-v) * ndf_p_over_D_grid(ndf, p, ndf_angle_of_v(ndf, p, v));
+      BrdfAngle a = ndf_angle_of_v(ndf, p, v);
+      real f = exp(-v) * ndf_p_over_D_grid(ndf, p, a.c, a.s2);
       sk += gk15_wk(k) * f;
       sg += gk15_wg(k) * f;
     }
