@@ -19,6 +19,9 @@
  * 16 intervals converges geometrically (error from its 8-interval subset, cosines from a table); on a
  * partial arc, and around the kinks of min/max GAFs (gaf_kinks), GK15 on each smooth piece.
  * The returned error is |K15 - G7| on the outer axis plus the weighted inner errors: a bound.
+ * Cost: libm calls are counted per lane vector, not per node (compat.h): one float16 pass prepares
+ * an outer panel's 15 nodes (expm1, sqrt, atan2, exp), one evaluates a GK15 azimuth panel (cos and
+ * the integrand), and one plus a single node the 16-interval trapezoid (cosines from a table).
  */
 #define HEMI_VCAP RC(40.0)
 
