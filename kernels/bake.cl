@@ -1,6 +1,7 @@
 /* bake.cl: one texel per work-item, no barriers. The host prepends a prelude that fixes the model
- * pair, e.g. "#define BRDF_NDF 0\n#define BRDF_GAF 10\n", then compat.h, the model headers and the
- * integrators, so every model switch folds at compile time. */
+ * pair, e.g. "#define BRDF_NDF 0\n#define BRDF_GAF 10\n", so every model switch folds at compile
+ * time, then compat.h, the pointwise headers twice (one value, then lanes) and the integrators:
+ * kernelSource() in host/cl/runner.cpp. */
 #ifndef BRDF_NDF
 #error "BRDF_NDF must be defined by the prelude"
 #endif

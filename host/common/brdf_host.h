@@ -1,6 +1,7 @@
 // The shared BRDF code (kernels/brdf, kernels/integrate) compiled for the host, twice:
 // brdf64 in double (model tests, the reference's integrand) and brdf32 in float (the device's
-// arithmetic, for tests that mirror a kernel exactly).
+// arithmetic, one lane: same formulas and rules, but lane sums in a different order, so results
+// agree with the device's to float rounding, not bit for bit).
 #pragma once
 #include "brdf/compat.h"
 #define BRDF_HOST_NAMESPACE 1

@@ -1,8 +1,10 @@
 /* compat.h: the few differences between OpenCL C and C++ that the shared BRDF code needs.
  *
  * Everything under kernels/brdf/ and kernels/integrate/ is written in the subset of C that both
- * OpenCL C 1.2 and C++17 compile. The device compiles it with `real` = float; the host includes it
- * inside a namespace that defines `real` (double for tests, float to mirror the device).
+ * OpenCL C 1.2 and C++17 compile, plus one Clang extension on the device: functions are
+ * __attribute__((overloadable)) (PoCL and the other Clang-based OpenCL compilers accept it). The
+ * device compiles it with `real` = float (a macro there); the host includes it inside a namespace
+ * that defines `real` (double for tests, float to mirror the device).
  *   RC(x)      a floating literal of type real (0.5f on the device, (real)0.5 on the host)
  *   BRDF_FN    storage class of shared functions (overloadable on the device, see lanes)
  *   acc_t      accumulator type: double where the device has fp64, else float

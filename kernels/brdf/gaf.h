@@ -5,6 +5,7 @@
  * of the BRDF never meets a zero. gaf_G multiplies back by n.o. All include chi+: G = 0 where
  * n.i <= 0 or o.h <= 0 (i.h = o.h for the half vector).
  *   ni, no, nh, oh: the cosines n.i, n.o, n.h, o.h; s2i, s2o: sin^2 of theta_i, theta_o.
+ * The view (no, s2o) is param_t: one per call, also in the lane pass (compat.h).
  */
 #ifndef BRDF_LANE_PASS
 #define GAF_NONE 0
@@ -32,8 +33,8 @@ BRDF_FN real gaf_schlick_k(int gaf, real r, real alpha) {
 
 #endif /* !BRDF_LANE_PASS */
 
-BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, real no, real nh, real oh,
-                           real s2i, real s2o) {
+BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, param_t no, real nh, real oh,
+                           real s2i, param_t s2o) {
   real g;
   if (gaf == GAF_NONE) {
     /* Ward: G = 1 */
@@ -70,8 +71,8 @@ BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, real no, rea
   return (ni <= RC(0.0) || oh <= RC(0.0)) ? RC(0.0) : g;
 }
 
-BRDF_FN real gaf_G(int gaf, int ndf, BrdfParams p, real ni, real no, real nh, real oh, real s2i,
-                   real s2o) {
+BRDF_FN real gaf_G(int gaf, int ndf, BrdfParams p, real ni, param_t no, real nh, real oh, real s2i,
+                   param_t s2o) {
   return no * gaf_G_over_no(gaf, ndf, p, ni, no, nh, oh, s2i, s2o);
 }
 

@@ -3,7 +3,7 @@
  *   ndf_D       normalised D(h), integral of D (n.h) dw = 1
  *   ndf_cLambda cos(theta) * Smith Lambda: finite at grazing, so G/(n.o) never divides 0 by 0
  *   ndf_Lambda, ndf_G1, ndf_G   Smith Lambda, G1 = 1/(1+Lambda), height-correlated G2
- * plus the change of variables the integrators use (ndf_angle_of_v, ndf_v_of_tan2).
+ * plus the change of variables the integrators use (ndf_angle_v, ndf_tan2_diff, ndf_v_of_tan2).
  *
  * Angles are passed as (c, s2) = (cos theta, sin^2 theta), computed by the caller without
  * cancellation, so that near-mirror lobes (alpha = 1e-4, Blinn-Phong e = 2e8) keep full precision.

@@ -3,15 +3,17 @@
  * variables, with o = (s, 0, mu) and h at (theta_h, phi):
  *   o.h = s sin(theta_h) cos(phi) + mu cos(theta_h),  n.i = 2 (o.h) cos(theta_h) - mu,
  *   H = (G/(n.o)) (o.h)/(n.h), split by Schlick's weight into the F0 and F90 moments.
+ * Only cos(phi) varies across lanes: the view and theta_h are param_t, so the view's Lambda is
+ * computed once per call, not once per lane.
  */
 /* The integrand H split by Schlick's weight: fa = H (1 - (1-o.h)^5), fb = H (1-o.h)^5. */
-BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real cphi,
-                       real* fa, real* fb) {
+BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, BrdfAngle h, param_t sn,
+                       real cphi, real* fa, real* fb) {
   real oh = fmin(s * sn * cphi + mu * h.c, RC(1.0)); /* rounding can push it past 1 */
   /* n.i <= 1 exactly, but not always after rounding: clamp so sin^2 theta_i never goes negative */
   real ni = fmin(RC(2.0) * oh * h.c - mu, RC(1.0));
   real s2i = (RC(1.0) - ni) * (RC(1.0) + ni);
-  real s2o = s * s;
+  param_t s2o = s * s;
   real H = gaf_G_over_no(gaf, ndf, p, ni, mu, h.c, oh, s2i, s2o) * oh / h.c;
   real f5 = fresnel_schlick_weight(oh);
   *fb = H * f5;

@@ -41,7 +41,8 @@ BRDF_CONST real COS_PI32[33] = {RC(1.00000000000000000000000000000), RC(0.995184
 
 /* GK15 in lane order (node k at gk15_x(k)): nodes, Kronrod weights, and Kronrod minus Gauss weights
  * (the error estimate's), padded to 16 with a zero-weight node so that one float16 lane vector holds
- * a whole panel on the device; the host stops at 15 (HEMI_GK_N). */
+ * a whole panel on the device; the host stops at 15 (HEMI_GK_N). The pad is a real node (x = 0,
+ * inside the panel), so that 0 * f stays finite. */
 #define HEMI_GK_N (BRDF_LANES > 1 ? 16 : 15)
 BRDF_CONST real GK15_XL[16] = {RC(-0.991455371120812639206854697526329), RC(-0.949107912342758524526189684047851),
                                RC(-0.864864423359769072789712788640926), RC(-0.741531185599394439863864773280788),
