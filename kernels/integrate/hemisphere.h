@@ -268,6 +268,16 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, i
     while (ib < nbp && bp[ib] <= cur) ++ib;
     real next = ib < nbp ? fmin(bp[ib], vend) : vend;
     int partial = cur >= v1;
+    /* A square-root end just outside a panel (v1 before it, v2 after it) spoils GK15 as surely as
+     * one inside. Panels that do not start at v1 (end at v2) are kept within 3 times their distance
+     * from it, as HEMI_BREAKS are by construction: a GAF break close to v1 (cook-torrance at
+     * grazing views puts one at ~4 v1) would otherwise leave a long panel right beside it. */
+    if (partial && cur > v1) next = fmin(next, v1 + RC(4.0) * (cur - v1));
+    if (partial && next < v2 && v2 <= HEMI_VCAP && next - cur > RC(3.0) * (v2 - next)) {
+      real d = v2 - next;
+      while (v2 - RC(4.0) * d > cur) d *= RC(4.0);
+      next = v2 - d;
+    }
     int sq_lo = partial && cur == v1;
     int sq_hi = next == v2;
     if (refine) {
