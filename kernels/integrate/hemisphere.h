@@ -135,6 +135,9 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   }
 }
 
+/* Where refinement cuts each outer panel (fractions of its length). */
+BRDF_CONST real HEMI_REFINE_CUTS[4] = {RC(0.0625), RC(0.25), RC(0.75), RC(0.9375)};
+
 /* The outer breakpoints after the ones at v1, v2: the e^-v decay wants panels of growing width. */
 #define HEMI_NBREAKS 5
 BRDF_CONST real HEMI_BREAKS[HEMI_NBREAKS] = {RC(1.0), RC(3.0), RC(7.0), RC(15.0), RC(40.0)};
@@ -208,8 +211,8 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
   res->err_b += fabs(pdb) + peb;
 }
 
-/* refine = 0: the default budget; 1: every outer panel halved, 32 trapezoid intervals, phi grading
- * x2 instead of x4 and every phi panel halved. Callers refine the few texels whose bound is above
+/* refine = 0: the default budget; 1: every outer panel cut in five graded pieces, 32 trapezoid
+ * intervals, phi grading x2 instead of x4 and every phi panel halved. Callers refine the few texels whose bound is above
  * their target (hemisphere_moments_to). */
 BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, int refine) {
   HemiResult res;
@@ -281,10 +284,17 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, i
     int sq_lo = partial && cur == v1;
     int sq_hi = next == v2;
     if (refine) {
-      /* two halves; only the first keeps the v1 end, only the last the v2 end */
-      real mid = RC(0.5) * (cur + next);
-      hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, cur, mid, partial, sq_lo, 0, refine, &res);
-      hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, mid, next, partial, 0, sq_hi, refine, &res);
+      /* five pieces graded towards both ends, at 1/16, 1/4, 3/4, 15/16 of the panel: an end may
+       * carry a square-root (v1, v2) or a 3/2-power singularity (a GAF kink entering the azimuth
+       * range at a theta break), which halving resolves only algebraically. The first piece keeps
+       * the v1 substitution, the last the v2 one. */
+      real len = next - cur, lo = cur;
+      for (int q = 0; q < 5; ++q) {
+        real hi = q < 4 ? cur + len * HEMI_REFINE_CUTS[q] : next;
+        hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, lo, hi, partial, q == 0 && sq_lo, q == 4 && sq_hi, refine,
+                         &res);
+        lo = hi;
+      }
     } else {
       hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, cur, next, partial, sq_lo, sq_hi, refine, &res);
     }
