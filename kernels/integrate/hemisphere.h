@@ -315,16 +315,16 @@ BRDF_FN real ndf_kp(int ndf, BrdfParams p, real* err) {
   real cur = RC(0.0);
   for (int i = 0; i < HEMI_NBREAKS; ++i) {
     real len = HEMI_BREAKS[i] - cur;
-    real sk = RC(0.0), sg = RC(0.0);
+    real sk = RC(0.0), sd = RC(0.0);
     for (int k = 0; k < 15; ++k) {
-      real v = cur + RC(0.5) * len * (gk15_x(k) + RC(1.0));
+      real v = cur + RC(0.5) * len * (GK15_XL[k] + RC(1.0));
       BrdfAngle a = ndf_angle_of_v(ndf, p, v);
       real f = exp(-v) * ndf_p_over_D_grid(ndf, p, a.c, a.s2);
-      sk += gk15_wk(k) * f;
-      sg += gk15_wg(k) * f;
+      sk += GK15_WKL[k] * f;
+      sd += GK15_WDL[k] * f;
     }
     sum += RC(0.5) * len * sk;
-    e += RC(0.5) * len * fabs(sk - sg);
+    e += RC(0.5) * len * fabs(sd);
     cur = HEMI_BREAKS[i];
   }
   *err = (real)e;
@@ -378,17 +378,17 @@ BRDF_FN real albedo_average(int ndf, int gaf, BrdfParams p, real* err) {
     hi = fmin(hi, RC(1.0));
     if (hi > RC(0.25)) hi = RC(1.0); /* no sliver panel at the end */
     real hw = RC(0.5) * (hi - lo);
-    acc_t sk = 0, sg = 0, se = 0;
+    acc_t sk = 0, sd = 0, se = 0;
     for (int k = 0; k < 15; ++k) {
-      real mu = lo + hw * (gk15_x(k) + RC(1.0));
+      real mu = lo + hw * (GK15_XL[k] + RC(1.0));
       HemiResult h = hemisphere_moments_to(ndf, gaf, p, mu, RC(2e-6));
       real f = RC(2.0) * mu * (real)(h.a + h.b);
-      sk += gk15_wk(k) * f;
-      sg += gk15_wg(k) * f;
-      se += gk15_wk(k) * RC(2.0) * mu * (real)(h.err_a + h.err_b);
+      sk += GK15_WKL[k] * f;
+      sd += GK15_WDL[k] * f;
+      se += GK15_WKL[k] * RC(2.0) * mu * (real)(h.err_a + h.err_b);
     }
     sum += hw * sk;
-    e += hw * (fabs((real)(sk - sg)) + se);
+    e += hw * (fabs((real)sd) + se);
     lo = hi;
     hi *= RC(4.0);
   }
