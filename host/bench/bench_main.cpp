@@ -7,6 +7,8 @@
 //   --stride K: reference on every K-th texel per axis plus the first/last rows and columns
 //               (default 1: every texel; the reference takes a few seconds for all 16384).
 //   --times-only: skip the errors; times and ratio only.
+//   --all-pairs: no timing; every NDF/GAF pair's table against the reference (largest error,
+//               largest kernel bound, texels whose error exceeds their bound). ~5 minutes.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,11 +23,52 @@
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "common/models.h"
 #include "reference/reference.h"
 
 using namespace brdfbake;
 
 namespace {
+double rel(double got, double want) { return std::fabs(got - want) / std::max(1.0, std::fabs(want)); }
+
+// Every pair's n x n texel-centre split-sum table against the reference, on every stride-th
+// texel per axis plus the edges, 2 threads. Returns 0 if every error is within its bound.
+int allPairs(KernelRunner& runner, int n, int stride) {
+  const double allowance = 1e-6;  // host/bake: float arithmetic on the device
+  std::printf("split-sum %dx%d, every NDF/GAF pair, errors on every %d-th texel + edges\n", n, n, stride);
+  std::printf("%-12s %-20s %12s %12s %10s\n", "ndf", "gaf", "max error", "max bound", "over bound");
+  double all = 0;
+  int over = 0;
+  for (int ndf = 0; ndf < static_cast<int>(ndfNames().size()); ++ndf)
+    for (int gaf = 0; gaf < static_cast<int>(gafNames().size()); ++gaf) {
+      KernelTable t = runner.hemisphere(ndf, gaf, n, n, false);
+      double worst[2] = {0, 0}, bound[2] = {0, 0};
+      int bad[2] = {0, 0};
+      auto work = [&](int part) {
+        for (int j = part; j < n; j += 2)
+          for (int i = 0; i < n; ++i) {
+            if (!((i % stride == 0 && j % stride == 0) || i == 0 || j == 0 || i == n - 1 || j == n - 1)) continue;
+            size_t k = static_cast<size_t>(j) * n + i;
+            reference::Moments ref = reference::albedo(ndf, gaf, (j + 0.5) / n, (i + 0.5) / n);
+            double e = std::max({rel(t.planes[0][k], ref.a), rel(t.planes[1][k], ref.b), rel(t.planes[2][k], ref.e())});
+            worst[part] = std::max(worst[part], e);
+            bound[part] = std::max(bound[part], static_cast<double>(t.err[k]));
+            if (e > t.err[k] + allowance) ++bad[part];
+          }
+      };
+      std::thread th(work, 1);
+      work(0);
+      th.join();
+      double w = std::max(worst[0], worst[1]);
+      all = std::max(all, w);
+      over += bad[0] + bad[1];
+      std::printf("%-12s %-20s %12.2e %12.2e %10d\n", ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), w,
+                  std::max(bound[0], bound[1]), bad[0] + bad[1]);
+    }
+  std::printf("all pairs: largest error %.2e, %d texels over their bound\n", all, over);
+  return over == 0 ? 0 : 1;
+}
+
 double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -34,7 +77,7 @@ double seconds(std::chrono::steady_clock::time_point t0) {
 int main(int argc, char** argv) {
   int n = 128, samples = 1024, stride = 1, repeat = 3;
   std::string device;
-  bool timesOnly = false;
+  bool timesOnly = false, everyPair = false;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     auto next = [&]() -> std::string {
@@ -47,6 +90,7 @@ int main(int argc, char** argv) {
     else if (a == "--repeat") repeat = std::atoi(next().c_str());
     else if (a == "--device") device = next();
     else if (a == "--times-only") timesOnly = true;
+    else if (a == "--all-pairs") everyPair = true;
     else { std::fprintf(stderr, "unknown option %s\n", a.c_str()); return 64; }
   }
   if (n < 1 || samples < 1 || stride < 1 || repeat < 1) { std::fprintf(stderr, "arguments must be >= 1\n"); return 64; }
@@ -54,6 +98,7 @@ int main(int argc, char** argv) {
   try {
     DeviceEntry dev = selectDevice(device);
     KernelRunner runner(dev.device);
+    if (everyPair) return allPairs(runner, n, stride);
     runner.hemisphere(ndf, gaf, 1, 1, false);  // builds the program: not part of the timing
 
     double tq = 1e30, tm = 1e30;
@@ -103,7 +148,6 @@ int main(int argc, char** argv) {
         double mu = (i + 0.5) / n, r = (j + 0.5) / n;
         reference::Moments ref = reference::albedo(ndf, gaf, r, mu);
         size_t t = static_cast<size_t>(j) * n + i;
-        auto rel = [](double got, double want) { return std::fabs(got - want) / std::max(1.0, std::fabs(want)); };
         errQ[k] = std::max(rel(q.planes[0][t], ref.a), rel(q.planes[1][t], ref.b));
         errM[k] = std::max(rel(mc[0][t], ref.a), rel(mc[1][t], ref.b));
         sq[k] = std::pow(mc[0][t] - ref.a, 2) + std::pow(mc[1][t] - ref.b, 2);
