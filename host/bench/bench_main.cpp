@@ -31,39 +31,56 @@ using namespace brdfbake;
 namespace {
 double rel(double got, double want) { return std::fabs(got - want) / std::max(1.0, std::fabs(want)); }
 
-// Every pair's n x n texel-centre split-sum table against the reference, on every stride-th
-// texel per axis plus the edges, 2 threads. Returns 0 if every error is within its bound.
+// The texels whose errors are measured: every stride-th per axis, plus the table's edges.
+std::vector<std::pair<int, int>> sampledTexels(int n, int stride) {
+  std::vector<std::pair<int, int>> texels;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if ((i % stride == 0 && j % stride == 0) || i == 0 || j == 0 || i == n - 1 || j == n - 1) texels.push_back({i, j});
+  return texels;
+}
+
+// f(k) for every k in [0, count), on 2 threads (the reference is the slow part).
+template <class F>
+void onTwoThreads(size_t count, F f) {
+  std::thread th([&] {
+    for (size_t k = 1; k < count; k += 2) f(k);
+  });
+  for (size_t k = 0; k < count; k += 2) f(k);
+  th.join();
+}
+
+// Every pair's n x n texel-centre split-sum table against the reference on the sampled texels.
+// Returns 0 if every error is within its bound.
 int allPairs(KernelRunner& runner, int n, int stride) {
   const double allowance = 1e-6;  // host/bake: float arithmetic on the device
-  std::printf("split-sum %dx%d, every NDF/GAF pair, errors on every %d-th texel + edges\n", n, n, stride);
+  std::vector<std::pair<int, int>> texels = sampledTexels(n, stride);
+  std::printf("split-sum %dx%d, every NDF/GAF pair, errors on %zu texels (stride %d + edges)\n", n, n,
+              texels.size(), stride);
   std::printf("%-12s %-20s %12s %12s %10s\n", "ndf", "gaf", "max error", "max bound", "over bound");
   double all = 0;
   int over = 0;
   for (int ndf = 0; ndf < static_cast<int>(ndfNames().size()); ++ndf)
     for (int gaf = 0; gaf < static_cast<int>(gafNames().size()); ++gaf) {
       KernelTable t = runner.hemisphere(ndf, gaf, n, n, false);
-      double worst[2] = {0, 0}, bound[2] = {0, 0};
-      int bad[2] = {0, 0};
-      auto work = [&](int part) {
-        for (int j = part; j < n; j += 2)
-          for (int i = 0; i < n; ++i) {
-            if (!((i % stride == 0 && j % stride == 0) || i == 0 || j == 0 || i == n - 1 || j == n - 1)) continue;
-            size_t k = static_cast<size_t>(j) * n + i;
-            reference::Moments ref = reference::albedo(ndf, gaf, (j + 0.5) / n, (i + 0.5) / n);
-            double e = std::max({rel(t.planes[0][k], ref.a), rel(t.planes[1][k], ref.b), rel(t.planes[2][k], ref.e())});
-            worst[part] = std::max(worst[part], e);
-            bound[part] = std::max(bound[part], static_cast<double>(t.err[k]));
-            if (e > t.err[k] + allowance) ++bad[part];
-          }
-      };
-      std::thread th(work, 1);
-      work(0);
-      th.join();
-      double w = std::max(worst[0], worst[1]);
-      all = std::max(all, w);
-      over += bad[0] + bad[1];
-      std::printf("%-12s %-20s %12.2e %12.2e %10d\n", ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), w,
-                  std::max(bound[0], bound[1]), bad[0] + bad[1]);
+      std::vector<double> err(texels.size());
+      onTwoThreads(texels.size(), [&](size_t k) {
+        auto [i, j] = texels[k];
+        size_t x = static_cast<size_t>(j) * n + i;
+        reference::Moments ref = reference::albedo(ndf, gaf, (j + 0.5) / n, (i + 0.5) / n);
+        err[k] = std::max({rel(t.planes[0][x], ref.a), rel(t.planes[1][x], ref.b), rel(t.planes[2][x], ref.e())});
+      });
+      double worst = 0, bound = 0;
+      int bad = 0;
+      for (size_t k = 0; k < texels.size(); ++k) {
+        double b = t.err[static_cast<size_t>(texels[k].second) * n + texels[k].first];
+        worst = std::max(worst, err[k]);
+        bound = std::max(bound, b);
+        if (err[k] > b + allowance) ++bad;
+      }
+      all = std::max(all, worst);
+      over += bad;
+      std::printf("%-12s %-20s %12.2e %12.2e %10d\n", ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), worst, bound, bad);
     }
   std::printf("all pairs: largest error %.2e, %d texels over their bound\n", all, over);
   return over == 0 ? 0 : 1;
@@ -137,26 +154,18 @@ int main(int argc, char** argv) {
     }
 
     // errors against the reference on the sampled texels (2 threads)
-    std::vector<std::pair<int, int>> texels;
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        if ((i % stride == 0 && j % stride == 0) || i == 0 || j == 0 || i == n - 1 || j == n - 1) texels.push_back({i, j});
+    std::vector<std::pair<int, int>> texels = sampledTexels(n, stride);
     std::vector<double> errQ(texels.size()), errM(texels.size()), sq(texels.size()), bound(texels.size());
-    auto work = [&](size_t from) {
-      for (size_t k = from; k < texels.size(); k += 2) {
-        auto [i, j] = texels[k];
-        double mu = (i + 0.5) / n, r = (j + 0.5) / n;
-        reference::Moments ref = reference::albedo(ndf, gaf, r, mu);
-        size_t t = static_cast<size_t>(j) * n + i;
-        errQ[k] = std::max(rel(q.planes[0][t], ref.a), rel(q.planes[1][t], ref.b));
-        errM[k] = std::max(rel(mc[0][t], ref.a), rel(mc[1][t], ref.b));
-        sq[k] = std::pow(mc[0][t] - ref.a, 2) + std::pow(mc[1][t] - ref.b, 2);
-        bound[k] = q.err[t];
-      }
-    };
-    std::thread th(work, 1);
-    work(0);
-    th.join();
+    onTwoThreads(texels.size(), [&](size_t k) {
+      auto [i, j] = texels[k];
+      double mu = (i + 0.5) / n, r = (j + 0.5) / n;
+      reference::Moments ref = reference::albedo(ndf, gaf, r, mu);
+      size_t t = static_cast<size_t>(j) * n + i;
+      errQ[k] = std::max(rel(q.planes[0][t], ref.a), rel(q.planes[1][t], ref.b));
+      errM[k] = std::max(rel(mc[0][t], ref.a), rel(mc[1][t], ref.b));
+      sq[k] = std::pow(mc[0][t] - ref.a, 2) + std::pow(mc[1][t] - ref.b, 2);
+      bound[k] = q.err[t];
+    });
     double maxQ = *std::max_element(errQ.begin(), errQ.end());
     double maxM = *std::max_element(errM.begin(), errM.end());
     double rmsM = 0;
