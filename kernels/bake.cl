@@ -28,8 +28,7 @@ kernel void bake_hemisphere(global float* out_a, global float* out_b, global flo
   if (i >= nx || j >= ny) return;
   float mu = grid_coord(i, nx, mu_lo, mu_hi, node_grid);
   float r = grid_coord(j, ny, r_lo, r_hi, node_grid);
-  BrdfParams p = brdf_params(BRDF_NDF, BRDF_GAF, r);
-  HemiResult h = hemisphere_moments_to(BRDF_NDF, BRDF_GAF, p, mu, BAKE_TARGET);
+  HemiResult h = hemisphere_texel(BRDF_NDF, BRDF_GAF, mu, r, BAKE_TARGET);
   int t = j * nx + i;
   out_a[t] = (float)h.a;
   out_b[t] = (float)h.b;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/math/tools/roots.hpp>
 #include <cmath>
+#include <glm/glm.hpp>
 #include <vector>
 
 #include "common/brdf_host.h"
@@ -11,6 +13,7 @@
 namespace brdfbake::reference {
 namespace {
 
+using glm::dvec3;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTol = 1e-11;  // absolute, per integral
 constexpr unsigned kDepth = 18;
@@ -51,8 +54,6 @@ auto adapt(F& f, double a, double b, double tol, unsigned depth, double rel) -> 
   auto v = vk * h;
   double err = norm(vk - vg) * h;
   l1 *= h;
-  // converged: absolutely, or relative to the piece's L1 norm (the pieces' L1 norms add up to
-  // about the whole integral, so the sum is good to ~rel relative)
   if (err <= tol || err <= rel * l1 || depth == 0) return v;
   double m = 0.5 * (a + b);
   return adapt(f, a, m, 0.5 * tol, depth - 1, rel) + adapt(f, m, b, 0.5 * tol, depth - 1, rel);
@@ -82,88 +83,188 @@ std::vector<double> lobeBreaks(double alpha, double hi) {
   return b;
 }
 
-brdf64::BrdfParams params(int ndf, int gaf, double r) {
-  brdf64::BrdfParams p{};
-  p.r = r;
-  p.alpha = r * r;
-  p.k = brdf64::gaf_schlick_k(gaf, r, p.alpha);
-  p.inv_kp = (ndf == NDF_GAUSSIAN && p.alpha > 0) ? 1.0 / kp(ndf, r) : 0.0;
-  return p;
-}
+// ---- the models, written here from the papers (only D comes from kernels/brdf) -----------------
 
-}  // namespace
+struct Model {
+  int ndf, gaf;
+  double r, alpha;
+  double k;                   // Schlick's k
+  brdf64::BrdfParams dp;      // for D only (alpha, and 1/k_p of the gaussian)
+};
 
-double kp(int ndf, double r) {
-  brdf64::BrdfParams p{};
-  p.r = r;
-  p.alpha = r * r;
-  // k_p = 2 pi int_0^{pi/2} p(theta) cos sin dtheta
-  auto f = [&](double th) {
-    double s = std::sin(th), c = std::cos(th);
-    return 2 * kPi * brdf64::ndf_p(ndf, p, c, s * s) * c * s;
-  };
-  return integrate(f, 0, kPi / 2, lobeBreaks(p.alpha, kPi / 2));
-}
-
-Moments albedo(int ndf, int gaf, double r, double mu) {
-  brdf64::BrdfParams p = params(ndf, gaf, r);
-  double s = std::sqrt((1 - mu) * (1 + mu));
-  Moments m;
-  if (p.alpha == 0) {
-    brdf64::HemiResult h = brdf64::hemisphere_moments(ndf, gaf, p, mu, 0);  // the delta limit
-    m.a = h.a;
-    m.b = h.b;
-    return m;
+// Schlick's k: Schlick 1994 with m = alpha (k = alpha sqrt(2/pi)); Karis 2013: alpha/2 for image
+// based lighting, (r + 1)^2/8 for analytic lights.
+double schlickK(int gaf, double r) {
+  double alpha = r * r;
+  switch (gaf) {
+    case GAF_SCHLICK_BECKMANN: return alpha * std::sqrt(2 / kPi);
+    case GAF_SCHLICK_GGX: return alpha / 2;
+    case GAF_SCHLICK_GGX_DIRECT: return (r + 1) * (r + 1) / 8;
+    default: return 0;
   }
-  // E = int sin(th) dth 2 int_0^phimax dphi D (G/no) F (o.h), the h-space form of the albedo.
-  // E and B = the same with F = (1 - o.h)^5 are integrated together (Pair).
+}
+
+Model model(int ndf, int gaf, double r) {
+  Model m{ndf, gaf, r, r * r, schlickK(gaf, r), {}};
+  m.dp.r = r;
+  m.dp.alpha = m.alpha;
+  m.dp.inv_kp = (ndf == NDF_GAUSSIAN && m.alpha > 0) ? 1 / kp(ndf, r) : 0;
+  return m;
+}
+
+// Smith Lambda of a direction with cosine c to the normal (0 < c <= 1).
+// GGX, Heitz 2014 eq. 72: (-1 + sqrt(1 + alpha^2 tan^2))/2. Beckmann, Heitz 2014 eq. 71 with
+// a = 1/(alpha tan): (erf(a) - 1)/2 + exp(-a^2)/(2 a sqrt(pi)). Blinn-Phong and the gaussian use
+// Beckmann's with the same alpha (docs/MODELS.md).
+double smithLambda(const Model& m, double c) {
+  double t2 = (1 - c) * (1 + c) / (c * c);
+  if (t2 <= 0 || m.alpha <= 0) return 0;
+  if (m.ndf == NDF_GGX) return (std::sqrt(1 + m.alpha * m.alpha * t2) - 1) / 2;
+  double a = 1 / (m.alpha * std::sqrt(t2));
+  return -std::erfc(a) / 2 + std::exp(-a * a) / (2 * a * std::sqrt(kPi));
+}
+
+double gafOf(const Model& m, const dvec3& i, const dvec3& o, const dvec3& h) {
+  double ni = i.z, no = o.z, nh = h.z, oh = glm::dot(o, h), ih = glm::dot(i, h);
+  if (ni <= 0 || no <= 0 || oh <= 0 || ih <= 0) return 0;  // chi+
+  switch (m.gaf) {
+    case GAF_NONE: return 1;                                             // Ward
+    case GAF_IMPLICIT: return ni * no;                                   // Blinn-Phong's implicit G
+    case GAF_COOK_TORRANCE: return std::min({1.0, 2 * nh * no / oh, 2 * nh * ni / ih});  // Cook-Torrance 1982
+    case GAF_KELEMEN: return ni * no / (oh * ih);                        // Kelemen, Szirmay-Kalos 2001
+    case GAF_NEUMANN: return ni * no / std::max(ni, no);                 // Neumann et al. 1999
+    case GAF_ASHIKHMIN_PREMOZE: return ni * no / (ni + no - ni * no);    // Ashikhmin, Premoze 2007
+    case GAF_SCHLICK_BECKMANN:
+    case GAF_SCHLICK_GGX:
+    case GAF_SCHLICK_GGX_DIRECT: {                                       // Schlick 1994
+      auto g = [&](double x) { return x / (x * (1 - m.k) + m.k); };
+      return g(ni) * g(no);
+    }
+    case GAF_SMITH: return 1 / ((1 + smithLambda(m, ni)) * (1 + smithLambda(m, no)));  // separable
+    default: return 1 / (1 + smithLambda(m, ni) + smithLambda(m, no));  // height-correlated, Heitz 2014
+  }
+}
+
+// The branch differences of the min/max GAFs: G has a kink where one of these changes sign (and
+// nowhere else). The integrators split there; the locations are found by root finding.
+int branchDifferences(const Model& m, const dvec3& i, const dvec3& o, const dvec3& h, double* d) {
+  double ni = i.z, no = o.z, nh = h.z, oh = glm::dot(o, h);
+  if (m.gaf == GAF_NEUMANN) {
+    d[0] = ni - no;
+    return 1;
+  }
+  if (m.gaf == GAF_COOK_TORRANCE) {
+    d[0] = 2 * nh * no - oh;
+    d[1] = 2 * nh * ni - oh;
+    d[2] = ni - no;
+    return 3;
+  }
+  return 0;
+}
+
+// The half vector at (theta, phi), the view o = (s, 0, mu) and the mirror direction i.
+struct Geometry {
+  dvec3 o, h, i;
+};
+Geometry geometry(double mu, double s, double th, double phi) {
+  Geometry g;
+  g.o = dvec3(s, 0, mu);
+  g.h = dvec3(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th));
+  g.i = 2 * glm::dot(g.o, g.h) * g.h - g.o;
+  return g;
+}
+
+// Roots of the branch differences along x in [lo, hi], sampled at `xs` (sorted, inside [lo, hi])
+// and refined by TOMS 748 where a difference changes sign between samples.
+template <class At>
+void branchRoots(const Model& m, At at, const std::vector<double>& xs, std::vector<double>& roots) {
+  if (m.gaf != GAF_NEUMANN && m.gaf != GAF_COOK_TORRANCE) return;
+  auto diffs = [&](double x, double* d) {
+    Geometry g = at(x);
+    return branchDifferences(m, g.i, g.o, g.h, d);
+  };
+  double prev[3], cur[3];
+  int nd = diffs(xs[0], prev);
+  for (size_t j = 1; j < xs.size(); ++j) {
+    diffs(xs[j], cur);
+    for (int k = 0; k < nd; ++k) {
+      if ((prev[k] < 0) != (cur[k] < 0) && prev[k] != 0 && cur[k] != 0) {
+        boost::uintmax_t iters = 200;
+        auto f = [&](double x) {
+          double d[3];
+          diffs(x, d);
+          return d[k];
+        };
+        auto r = boost::math::tools::toms748_solve(f, xs[j - 1], xs[j], prev[k], cur[k],
+                                                   boost::math::tools::eps_tolerance<double>(52), iters);
+        roots.push_back(0.5 * (r.first + r.second));
+      }
+      prev[k] = cur[k];
+    }
+  }
+}
+
+// cos(phimax): the mirror direction is above the surface (n.i > 0) for cos(phi) > c0, with
+// n.i = 2 (o.h) cos(theta) - mu and o.h = s sin(theta) cos(phi) + mu cos(theta).
+double cosPhiLimit(double mu, double s, double th) {
+  return -mu * std::cos(2 * th) / (s * std::sin(2 * th));
+}
+
+Moments albedoInside(int ndf, int gaf, double r, double mu) {
+  Model m = model(ndf, gaf, r);
+  double s = std::sqrt((1 - mu) * (1 + mu));
+  // E = int sin(th) dth 2 int_0^phimax dphi D (G/no) F (o.h), the h-space form of the albedo
+  // (dw_i = 4 (o.h) dw_h, phi folded). E and B (F = (1 - o.h)^5) are integrated together.
   double th1 = std::atan(mu / (1 + s)), th2 = std::atan2(1 + s, mu);
+  auto phiEnd = [&](double th) {
+    return th <= th1 ? kPi : std::acos(std::clamp(cosPhiLimit(mu, s, th), -1.0, 1.0));
+  };
   auto outer = [&](double th) {
     double sn = std::sin(th), c = std::cos(th);
-    double D = brdf64::ndf_D(ndf, p, c, sn * sn);
-    double phimax = kPi;
-    if (th > th1) {
-      double c0 = -mu * std::cos(2 * th) / (s * std::sin(2 * th));
-      phimax = std::acos(std::clamp(c0, -1.0, 1.0));
-    }
+    double D = brdf64::ndf_D(ndf, m.dp, c, sn * sn);
+    double phimax = phiEnd(th);
     auto inner = [&](double phi) {
-      double oh = s * sn * std::cos(phi) + mu * c;
-      double ni = 2 * oh * c - mu;
-      double G = brdf64::gaf_G_over_no(gaf, ndf, p, ni, mu, c, oh, (1 - ni) * (1 + ni), s * s);
-      double f5 = std::pow(1 - oh, 5);
-      return Pair{G * oh, G * oh * f5};
+      Geometry g = geometry(mu, s, th, phi);
+      double oh = glm::dot(g.o, g.h);
+      double G = gafOf(m, g.i, g.o, g.h);
+      double H = G / mu * oh;
+      return Pair{H, H * std::pow(1 - oh, 5)};
     };
-    if (phimax <= 0) return Pair{};
-    // Split at the kinks of min/max GAFs (their locations are checked on their own in
-    // tests/models_test.cpp); elsewhere the integrand is smooth and the bisection converges.
-    double kinks[3];
-    int nk = brdf64::gaf_kinks(gaf, mu, s, c, sn, kinks);
-    std::vector<double> br;
-    for (int k = 0; k < nk; ++k)
-      if (kinks[k] > -1 && kinks[k] < 1) br.push_back(std::acos(kinks[k]));
-    // inner far tighter than outer: its rounding must not look like structure to the outer rule.
-    // Its absolute tolerance applies to the weighted value w * inner (1e-14, or as before where
-    // w > 1): where D is tiny, far from the lobe, resolving the n.i ~ alpha layer at the arc's end
-    // to 1e-14 of the inner integral alone would take millions of nodes and buy nothing.
     double w = 2 * sn * D;
-    if (!(w > 0)) return Pair{};
+    if (phimax <= 0 || !(w > 0)) return Pair{};
+    // the kinks of min/max GAFs in phi, by root finding on 65 samples
+    std::vector<double> br, xs;
+    for (int k = 0; k <= 64; ++k) xs.push_back(phimax * k / 64.0);
+    branchRoots(m, [&](double phi) { return geometry(mu, s, th, phi); }, xs, br);
+    // inner far tighter than outer: its rounding must not look like structure to the outer rule.
+    // Its absolute tolerance applies to the weighted value w * inner.
     return w * integrate(inner, 0, phimax, br, 30, std::max(1e-14, 1e-14 / w), 1e-13);
   };
+  // Where the phi-integral has kinks in theta: a branch root enters or leaves the arc at one of
+  // its ends (phi = 0, phi = phimax). Sampled densely, geometrically towards both ends of the
+  // theta range (grazing views put them within mu of 0 and of th2), refined by root finding.
+  std::vector<double> kinkTheta;
+  {
+    std::vector<double> xs;
+    for (int k = 1; k < 512; ++k) xs.push_back(th2 * k / 512.0);
+    for (double d = 1e-14; d < th2 / 512; d *= 1.5) {
+      xs.push_back(d);
+      xs.push_back(th2 - d);
+    }
+    std::sort(xs.begin(), xs.end());
+    branchRoots(m, [&](double th) { return geometry(mu, s, th, 0.0); }, xs, kinkTheta);
+    branchRoots(m, [&](double th) { return geometry(mu, s, th, phiEnd(th)); }, xs, kinkTheta);
+  }
   // [0, th1]: the whole half circle is visible; [th1, th2]: phimax falls from pi to 0 with
   // square-root ends. The partial range is cut geometrically (th1 2^k: the NDF's tail is a power
-  // law there), at the lobe scale and at the GAF's kinks; th = a + L y^2 on the first panel and
+  // law there), at the lobe scale and at the kinks; th = a + L y^2 on the first panel and
   // th = b - L (1-y)^2 on the last one make the square-root ends smooth.
-  std::vector<double> fullBreaks = lobeBreaks(p.alpha, th1);
-  double gt2[4];
-  int ng = brdf64::gaf_theta_breaks(gaf, mu, s, gt2);
-  std::vector<double> kinkTheta;
-  for (int k = 0; k < ng; ++k) kinkTheta.push_back(std::atan(std::sqrt(gt2[k])));
+  std::vector<double> fullBreaks = lobeBreaks(m.alpha, th1);
   fullBreaks.insert(fullBreaks.end(), kinkTheta.begin(), kinkTheta.end());
   Pair v = integrate(outer, 0, th1, fullBreaks);
-  std::vector<double> pb = lobeBreaks(p.alpha, th2);
+  std::vector<double> pb = lobeBreaks(m.alpha, th2);
   pb.insert(pb.end(), kinkTheta.begin(), kinkTheta.end());
-  // (at mu = 0, th1 = 0: start the doubling at the lobe scale instead)
-  for (double t = th1 > 0 ? 2 * th1 : std::max(p.alpha, 1e-6); t < th2; t *= 2) pb.push_back(t);
+  for (double t = th1 > 0 ? 2 * th1 : std::max(m.alpha, 1e-6); t < th2; t *= 2) pb.push_back(t);
   pb.push_back(th1);
   pb.push_back(th2);
   std::sort(pb.begin(), pb.end());
@@ -180,29 +281,90 @@ Moments albedo(int ndf, int gaf, double r, double mu) {
     };
     v = v + integrate(panel, 0, 1, {});
   }
-  m.a = v.e - v.b;
-  m.b = v.b;
+  Moments out;
+  out.a = v.e - v.b;
+  out.b = v.b;
+  return out;
+}
+
+}  // namespace
+
+double gaf(int ndf, int g, double r, const double i[3], const double o[3], const double h[3]) {
+  return gafOf(model(ndf, g, r), dvec3(i[0], i[1], i[2]), dvec3(o[0], o[1], o[2]), dvec3(h[0], h[1], h[2]));
+}
+
+double kp(int ndf, double r) {
+  brdf64::BrdfParams p{};
+  p.r = r;
+  p.alpha = r * r;
+  if (p.alpha <= 0) return 0;  // pi alpha^2 -> 0 (the delta's normalisation)
+  // k_p = 2 pi int_0^{pi/2} p(theta) cos sin dtheta
+  auto f = [&](double th) {
+    double s = std::sin(th), c = std::cos(th);
+    return 2 * kPi * brdf64::ndf_p(ndf, p, c, s * s) * c * s;
+  };
+  return integrate(f, 0, kPi / 2, lobeBreaks(p.alpha, kPi / 2));
+}
+
+// Derived by hand: with alpha -> 0 at mu > 0, E = int D (G/no) F (o.h) dw_h concentrates at h = n,
+// where i = (-s, 0, mu): n.i = n.o = o.h = i.h = mu, n.h = 1, so E = (G/mu) mu = G there:
+//   none, cook-torrance (min(1, 2, 2)), kelemen (mu^2/mu^2): 1; implicit: mu^2; neumann: mu;
+//   ashikhmin-premoze: mu^2/(2 mu - mu^2) = mu/(2 - mu); Schlick with k -> 0: 1, and
+//   schlick-ggx-direct, whose k = (r + 1)^2/8 -> 1/8: (mu/(mu (1 - k) + k))^2;
+//   smith, smith-correlated: Lambda -> 0 for every direction above the horizon, so 1.
+Moments mirrorAlbedo(int gaf, double mu) {
+  double e = 1;
+  switch (gaf) {
+    case GAF_IMPLICIT: e = mu * mu; break;
+    case GAF_NEUMANN: e = mu; break;
+    case GAF_ASHIKHMIN_PREMOZE: e = mu / (2 - mu); break;
+    case GAF_SCHLICK_GGX_DIRECT: {
+      double g = mu / (mu * 7 / 8 + 1.0 / 8);
+      e = g * g;
+      break;
+    }
+    default: break;
+  }
+  if (mu <= 0 && gaf != GAF_NONE) e = 0;
+  Moments m;
+  m.b = e * std::pow(1 - mu, 5);
+  m.a = e - m.b;
   return m;
 }
 
+Moments albedo(int ndf, int gaf, double r, double mu) {
+  if (r <= 0 && mu <= 0) {
+    // the corner: the limit along the mu = 0 edge, from inside (alpha ~ 1e-9, mu << alpha)
+    const double rc = 3e-5;
+    return albedoInside(ndf, gaf, rc, 1e-9 * rc * rc);
+  }
+  if (r <= 0) return mirrorAlbedo(gaf, mu);
+  if (mu <= 0) return albedoInside(ndf, gaf, r, 1e-9 * std::min(1.0, r * r));
+  return albedoInside(ndf, gaf, r, mu);
+}
+
 double albedoAvg(int ndf, int gaf, double r) {
-  auto f = [&](double mu) { return 2 * mu * albedo(ndf, gaf, r, mu).e(); };
+  if (r <= 0) {
+    auto f = [&](double mu) { return 2 * mu * mirrorAlbedo(gaf, mu).e(); };
+    return integrate(f, 0, 1, {});
+  }
+  auto f = [&](double mu) { return 2 * mu * albedoInside(ndf, gaf, r, mu).e(); };
   return integrate(f, 0, 1, lobeBreaks(r * r, 1));
 }
 
 double weakFurnace(int ndf, double r, double mu) {
-  brdf64::BrdfParams p = params(ndf, NDF_GGX, r);
+  Model m = model(ndf, GAF_SMITH, r);
   double s = std::sqrt((1 - mu) * (1 + mu));
-  double g1 = brdf64::ndf_G1(ndf, p, mu, s * s);
+  double g1 = 1 / (1 + smithLambda(m, mu));
   // int over h with o.h > 0: cos(phi) > -mu c/(s sn)
   auto outer = [&](double th) {
     double sn = std::sin(th), c = std::cos(th);
     double c0 = s > 0 && sn > 0 ? -mu * c / (s * sn) : -2.0;
     double phimax = std::acos(std::clamp(c0, -1.0, 1.0));
     auto inner = [&](double phi) { return std::max(0.0, s * sn * std::cos(phi) + mu * c); };
-    return 2 * sn * brdf64::ndf_D(ndf, p, c, sn * sn) * integrate(inner, 0, phimax, {});
+    return 2 * sn * brdf64::ndf_D(ndf, m.dp, c, sn * sn) * integrate(inner, 0, phimax, {});
   };
-  std::vector<double> br = lobeBreaks(p.alpha, kPi / 2);
+  std::vector<double> br = lobeBreaks(m.alpha, kPi / 2);
   br.push_back(std::atan2(mu, s));  // theta_h = pi/2 - theta_o: o.h > 0 on the whole circle below it
   return g1 * integrate(outer, 0, kPi / 2, br);
 }

@@ -1,7 +1,18 @@
 // Independent high-precision reference for the baked quantities: host-side adaptive
-// Gauss-Kronrod quadrature (Boost.Math) in double, in the plain angles (theta_h, phi_h) of the
-// half vector, sharing only the model formulas (kernels/brdf) with the device. Slow; for tests,
-// the benchmark and `brdfbake verify`-style checks.
+// Gauss-Kronrod quadrature (Boost.Math GK31/G15) in double, in the plain angles (theta_h, phi_h)
+// of the half vector, with directions as GLM vectors.
+//
+// What it shares with the kernels: the normalised NDF D(h) (kernels/brdf/ndf.h, as a formula) and
+// nothing else. Its own, written from the papers (see docs/MODELS.md): the GAFs G(i, o, h) on
+// vectors, the Smith Lambdas, Schlick's k conventions, Schlick's weight (pow), the gaussian's k_p
+// (adaptive in theta), the visible domain, the kinks of min/max GAFs (located by root finding on
+// the GAFs' own branch differences, not taken from the kernel), and the limits:
+//   r = 0 (mirror):      closed forms derived by hand (mirrorAlbedo), checked against the integral
+//                        at small alpha in tests/models_test.cpp;
+//   mu = 0 (grazing):    the integral evaluated from inside, at mu = 1e-9 min(1, alpha) (E changes
+//                        on the scale mu ~ alpha, so this is the limit to ~1e-9);
+//   mu = 0 and r = 0:    the limit along the mu = 0 edge, from inside at r = 3e-5 (alpha ~ 1e-9).
+// Slow (seconds per value at grazing); for tests, the benchmark and checks.
 #pragma once
 
 namespace brdfbake::reference {
@@ -13,11 +24,18 @@ struct Moments {
 
 // k_p of the NDF's raw shape at perceptual roughness r (alpha = r^2).
 double kp(int ndf, double r);
-// Split-sum moments and directional albedo at (mu, r).
+// Split-sum moments and directional albedo at (mu, r), limits included as above.
 Moments albedo(int ndf, int gaf, double r, double mu);
 // Average albedo E_avg(r) = 2 int_0^1 E(mu) mu dmu.
 double albedoAvg(int ndf, int gaf, double r);
 // Weak white furnace: int G1(o) max(0, o.h) D(h) dw_h, which is mu for a Smith G1 matching D.
 double weakFurnace(int ndf, double r, double mu);
+
+// The mirror limit (alpha -> 0 at mu > 0): D becomes a delta at h = n, i = o mirrored, and
+// E(mu, 0) = G at that configuration (hand-derived per GAF); A and B split it by (1 - mu)^5.
+Moments mirrorAlbedo(int gaf, double mu);
+// The GAF G(i, o, h) for directions in the frame n = (0, 0, 1), chi+ included, in double.
+// (Public so tests can compare the kernel's grazing form G/(n.o) with it away from grazing.)
+double gaf(int ndf, int gaf, double r, const double i[3], const double o[3], const double h[3]);
 
 }  // namespace brdfbake::reference

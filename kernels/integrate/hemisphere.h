@@ -366,6 +366,21 @@ BRDF_FN HemiResult hemisphere_moments_to(int ndf, int gaf, BrdfParams p, real mu
   return h;
 }
 
+/* The value a table holds at (mu, r), its edges included.
+ * r = 0 (alpha = 0) is the mirror limit (hemisphere_moments); mu = 0 is the limit mu -> 0 at fixed
+ * alpha > 0, which the estimator computes directly (G/(n.o) is finite there). The corner
+ * (mu = 0, r = 0), where the two limits can disagree (schlick-ggx: E -> 1 along the r = 0 row but
+ * E(0, r) -> 0.84 as r -> 0), holds the limit along the mu = 0 edge, lim_{r->0} E(0, r): a view
+ * more grazing than the surface is rough, which is what a grazing view of any real, very smooth
+ * surface sees. The scale of that limit is alpha (theta_h ~ alpha, n.i ~ alpha), so r = 1e-5
+ * (alpha = 1e-10) reaches it to O(1e-10), far inside float rounding; the mirror formula at h = n
+ * would give 0 there (o.h = mu = 0, where chi+ zeroes G). */
+#define HEMI_CORNER_R RC(1e-5)
+BRDF_FN HemiResult hemisphere_texel(int ndf, int gaf, real mu, real r, real target) {
+  real rr = (mu <= RC(0.0) && r <= RC(0.0)) ? HEMI_CORNER_R : r;
+  return hemisphere_moments_to(ndf, gaf, brdf_params(ndf, gaf, rr), mu, target);
+}
+
 /* Average albedo E_avg = 2 int_0^1 E(mu) mu dmu (Kulla and Conty 2017).
  * E(mu) changes fastest where the lobe meets the horizon, mu ~ alpha, so GK15 panels on [0, 1] grow
  * geometrically from alpha/4 (x4 per panel). The bound adds the panels' |K15 - G7| and the inner
