@@ -3,6 +3,7 @@
 // Errors are exceptions inside, caught here once and mapped to sysexits-style exit codes.
 #include <CL/opencl.hpp>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 
@@ -30,8 +31,11 @@ int main(int argc, char** argv) {
         return kExitOk;
       case Command::Kind::Info:
         std::cout << describeTableExr(cmd.file);
+        std::cout << energyWarnings(readTableExr(cmd.file));
         return kExitOk;
       case Command::Kind::Bake: {
+        // before the first OpenCL call: PoCL reads its cache location when the platform starts
+        if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);
         Plan plan = makePlan(cmd.bake);
         std::cout << formatReport(runPlan(plan));
         return kExitOk;

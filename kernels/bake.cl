@@ -11,7 +11,7 @@
 
 /* Texels whose quadrature bound exceeds this are recomputed with the refined budget: the default
  * accuracy is 1e-5 including the 1e-6 float allowance and storage rounding (host/bake). */
-#define BAKE_TARGET 8e-6f
+#define BAKE_TARGET ((float)HEMI_BAKE_TARGET)
 
 /* Coordinate of sample i of n on [lo, hi]: texel centres (i + 0.5)/n, or nodes i/(n - 1). */
 static inline float grid_coord(int i, int n, float lo, float hi, int node_grid) {

@@ -9,6 +9,7 @@
 
 #include "cl/device.h"
 #include "cl/runner.h"
+#include "common/brdf_host.h"
 #include "common/models.h"
 #include "reference/reference.h"
 
@@ -26,19 +27,50 @@ double rel(double got, double want) { return std::fabs(got - want) / std::max(1.
 // The bake's allowance for float arithmetic (host/bake/bake.cpp), added to the kernel's bound.
 constexpr double kAllowance = 1e-6;
 constexpr double kGoal = 1e-5;  // issue #2: every texel within 1e-5 of the exact integral
+// The reference's own accuracy (adaptive GK31 to ~1e-11; limits from inside to ~1e-9).
+constexpr double kReferenceSlack = 3e-9;
+constexpr double kLimitSlack = 1e-7;
+
+std::string pairName(int ndf, int gaf) { return ndfNames()[ndf] + "+" + gafNames()[gaf]; }
 
 class PairTest : public ::testing::TestWithParam<std::pair<int, int>> {};
 
-// Texel k of a hemisphere table at (mu, r) against the reference: finite, within the goal, within
-// its own bound, A + B = E. Returns the error (relative to max(1, |value|)).
+// Texel k of a hemisphere table at (mu, r) against the reference, each claim on its own:
+//  - the quadrature bound: the same rule in double on the host (both budgets, default and
+//    refined), against the reference: |estimate - exact| <= its per-texel bound;
+//  - the float allowance: the device's float result is the double result of one of those two
+//    budgets (whichever the device chose) to within kAllowance;
+//  - the whole claim: |device - exact| <= device bound + allowance, and <= the 1e-5 goal.
+// A, B and E each, E against the reference's own E (integrated directly, not A + B).
+// Returns the device's error (relative to max(1, |value|)).
 double checkTexel(const KernelTable& t, size_t k, int ndf, int gaf, double mu, double r) {
-  SCOPED_TRACE(ndfNames()[ndf] + "+" + gafNames()[gaf] + " mu=" + std::to_string(mu) + " r=" + std::to_string(r));
+  SCOPED_TRACE(pairName(ndf, gaf) + " mu=" + std::to_string(mu) + " r=" + std::to_string(r));
   reference::Moments ref = reference::albedo(ndf, gaf, r, mu);
+  const double want[3] = {ref.a, ref.b, ref.e()};
+  double flt[3] = {1, 1, 1};
+  // the limits (mu = 0: the reference at mu = 1e-9 alpha; the corner at alpha ~ 1e-9 where the
+  // kernel takes 1e-10) are approached along different paths: they agree to ~1e-7
+  const double slack = mu == 0 ? kLimitSlack : kReferenceSlack;
+  brdf64::BrdfParams p = brdf64::hemisphere_texel_params(ndf, gaf, mu, r);
+  for (int refine : {0, 1}) {
+    brdf64::HemiResult h = brdf64::hemisphere_moments(ndf, gaf, p, mu, refine);
+    const double est[3] = {h.a, h.b, h.a + h.b}, bound = brdf64::hemi_rel_error(h);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_LE(rel(est[c], want[c]), bound + slack)
+          << "quadrature bound not honest, budget " << refine << ", channel " << "ABE"[c] << ": estimate "
+          << est[c] << " exact " << want[c] << " bound " << bound;
+      flt[c] = std::min(flt[c], rel(t.planes[c][k], est[c]));
+    }
+  }
+  double e = 0;
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_LE(flt[c], kAllowance) << "float allowance exceeded, channel " << "ABE"[c] << ": device "
+                                  << t.planes[c][k];
+    e = std::max(e, rel(t.planes[c][k], want[c]));
+  }
   EXPECT_TRUE(std::isfinite(t.planes[2][k]));
-  double e = std::max({rel(t.planes[0][k], ref.a), rel(t.planes[1][k], ref.b), rel(t.planes[2][k], ref.e())});
   EXPECT_LE(e, t.err[k] + kAllowance) << "bound is not honest: value " << t.planes[2][k] << " ref " << ref.e();
   EXPECT_LE(e, kGoal) << "value " << t.planes[2][k] << " ref " << ref.e();
-  EXPECT_NEAR(t.planes[0][k] + t.planes[1][k], t.planes[2][k], 2e-7 * std::max(1.0, std::fabs(ref.e())));
   return e;
 }
 
@@ -57,25 +89,30 @@ TEST_P(PairTest, HemisphereMatchesReference) {
   }
 }
 
+// E_avg at r = 0 (the mirror limit, exact: 2 int_0^1 E(mu, 0) mu dmu with E(mu, 0) = G at the
+// mirror configuration, docs/MODELS.md), at r = 0.5 and r = 1 against the reference.
+double exactMirrorAverage(int gaf) {
+  switch (gaf) {
+    case GAF_IMPLICIT: return 0.5;                          // 2 int mu^3
+    case GAF_NEUMANN: return 2.0 / 3.0;                     // 2 int mu^2
+    case GAF_ASHIKHMIN_PREMOZE: return 8 * std::log(2.0) - 5;  // 2 int mu^2/(2 - mu)
+    case GAF_SCHLICK_GGX_DIRECT:                            // 2 int mu (8 mu/(7 mu + 1))^2
+      return 128.0 / 2401.0 * (9.625 + 9 * std::log(2.0));
+    default: return 1.0;  // G = 1 at the mirror configuration
+  }
+}
+
 TEST_P(PairTest, AverageAlbedoMatchesReference) {
   auto [ndf, gaf] = GetParam();
   KernelTable t = runner().albedoAvg(ndf, gaf, 3, true);  // r = 0, 0.5, 1
   for (int j = 0; j < 3; ++j) {
     double r = j / 2.0;
-    double ref = r == 0 ? 0 : reference::albedoAvg(ndf, gaf, r);
+    double ref = r == 0 ? exactMirrorAverage(gaf) : reference::albedoAvg(ndf, gaf, r);
     if (r == 0) {
-      // mirror: E(mu) = G(mirror) F = 1 for none and the Smith GAFs (G = 1 there), mu^2 for
-      // implicit, so E_avg = 1, resp. 2 int mu^3 dmu = 1/2
-      EXPECT_TRUE(std::isfinite(t.planes[0][j]));
-      if (gaf == 0 || gaf == 9 || gaf == 10) {
-        EXPECT_NEAR(t.planes[0][j], 1.0, 1e-5);
-      } else if (gaf == 1) {
-        EXPECT_NEAR(t.planes[0][j], 0.5, 1e-5);
-      }
-      continue;
+      EXPECT_NEAR(reference::albedoAvg(ndf, gaf, 0), ref, 1e-10) << "the reference's mirror limit";
     }
     double e = rel(t.planes[0][j], ref);
-    SCOPED_TRACE(ndfNames()[ndf] + "+" + gafNames()[gaf] + " r=" + std::to_string(r));
+    SCOPED_TRACE(pairName(ndf, gaf) + " r=" + std::to_string(r));
     EXPECT_LE(e, t.err[j] + kAllowance) << "bound is not honest: " << t.planes[0][j] << " ref " << ref;
     EXPECT_LE(e, kGoal) << t.planes[0][j] << " ref " << ref;
   }
@@ -123,15 +160,16 @@ TEST_P(PairTest, EveryEdgeTexelOfA128TableMatchesReference) {
   std::printf("%s + %s: largest edge-texel error %.2e\n", ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), worst);
 }
 
-TEST(Stiff, BlinnPhongHugeExponentsAndGrazingViewsStayFinite) {
-  // r -> 0 at the table edge: e = 2/alpha^2 - 2 passes 1e9; mu -> 0
-  KernelTable t = runner().hemisphere(2, 10, 64, 64, false);
-  for (float v : t.planes[2]) ASSERT_TRUE(std::isfinite(v));
+// Stiff parameters: Blinn-Phong exponents past 1e9 (r = 1/128 and below) at grazing views, every
+// GAF. Finite everywhere, and the stiffest texels of a 64x64 table match the reference.
+TEST(Stiff, BlinnPhongHugeExponentsAndGrazingViewsMatchReference) {
+  const int n = 64;
   for (int gaf = 0; gaf < 11; ++gaf) {
-    KernelTable s = runner().hemisphere(2, gaf, 16, 16, false);
-    for (size_t k = 0; k < s.planes[2].size(); ++k) {
-      ASSERT_TRUE(std::isfinite(s.planes[0][k]) && std::isfinite(s.planes[1][k]) && std::isfinite(s.err[k]));
-    }
+    KernelTable t = runner().hemisphere(NDF_BLINN_PHONG, gaf, n, n, false);
+    for (size_t k = 0; k < t.planes[2].size(); ++k)
+      ASSERT_TRUE(std::isfinite(t.planes[0][k]) && std::isfinite(t.planes[1][k]) && std::isfinite(t.err[k]));
+    for (int i : {0, 1, n / 2, n - 1})  // mu = 1/128 (e = 2 128^4 ~ 5e8 at r = 1/128), 3/128, 1/2, 1 - 1/128
+      checkTexel(t, static_cast<size_t>(i), NDF_BLINN_PHONG, gaf, (i + 0.5) / n, 0.5 / n);
   }
 }
 

@@ -1,9 +1,15 @@
 // The brdfbake command as a user runs it: default bake, files read back, bad input, exit codes.
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <chrono>
+#include <map>
+#include <thread>
+#include <vector>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -164,10 +170,15 @@ TEST(Cli, BadInputGetsAClearErrorAndNothingIsWritten) {
       {"bake --ndf phong", 64, "--ndf: unknown NDF 'phong'; valid: ggx, beckmann, blinn-phong, gaussian"},
       {"bake --gaf smyth", 64, "valid: none, implicit, cook-torrance"},
       {"bake --table lut", 64, "--table: unknown table 'lut'; valid: splitsum, albedo, albedo-avg, kp"},
-      {"bake --size 0", 64, "--size: '0' is not an integer in 1..8192"},
+      {"bake --size 0", 64, "--size must be an integer in 1..8192, got 0"},
+      {"bake --size -5", 64, "--size must be an integer in 1..8192, got -5"},
+      {"--size=-5", 64, "--size must be an integer in 1..8192, got -5"},
+      {"bake --size 32 --size 64", 64, "--size given twice; give it once"},
+      {"--size=32 --size 64", 64, "--size given twice; give it once"},
+      {"-o a --output b", 64, "--output given twice; give it once"},
       {"bake --size 8193", 64, "1..8192"},
       {"bake --size 12x", 64, "--size"},
-      {"bake --grid corner", 64, "--grid: unknown grid 'corner'; valid: texel-center, node"},
+      {"bake --grid corner", 64, "--grid must be texel-center or node, got 'corner'"},
       {"bake --gaf none --grid node --table albedo", 64, "infinite albedo at mu = 0"},
       {"bake --device no-such-device", 69, "--device: no OpenCL device or platform name contains 'no-such-device'"},
       {"frobnicate", 64, "unknown command 'frobnicate'"},
@@ -177,7 +188,7 @@ TEST(Cli, BadInputGetsAClearErrorAndNothingIsWritten) {
     CmdResult r = run(std::string(c.args) + o);
     EXPECT_EQ(r.code, c.code) << c.args << "\n" << r.out;
     EXPECT_NE(r.out.find(c.message), std::string::npos) << c.args << "\n" << r.out;
-    EXPECT_EQ(countFiles(d / "out"), 0u) << c.args;
+    EXPECT_FALSE(fs::exists(d / "out")) << c.args << ": a run that fails before it writes creates nothing";
   }
   // an output "directory" that is a file, and one below a file
   CmdResult r = run("bake --table kp -o '" + file.string() + "'");
@@ -185,8 +196,131 @@ TEST(Cli, BadInputGetsAClearErrorAndNothingIsWritten) {
   EXPECT_NE(r.out.find("not a directory"), std::string::npos) << r.out;
   r = run("bake --table kp -o '" + (file / "sub").string() + "'");
   EXPECT_EQ(r.code, 73) << r.out;
-  EXPECT_NE(r.out.find("cannot create output directory"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("exists and is not a directory"), std::string::npos) << r.out;
   EXPECT_EQ(countFiles(d), 1u);
+}
+
+// Every regular file under d with its bytes: what "the output directory is as it was" compares.
+std::map<std::string, std::string> snapshot(const fs::path& d) {
+  std::map<std::string, std::string> m;
+  if (!fs::exists(d)) return m;
+  for (auto& e : fs::recursive_directory_iterator(d))
+    if (e.is_regular_file()) m[fs::relative(e.path(), d).string()] = bytes(e.path());
+  return m;
+}
+
+// Starts brdfbake with `args` (and an extra environment variable), returns its pid.
+pid_t spawn(const std::vector<std::string>& args, const std::string& envName = "", const std::string& envValue = "") {
+  pid_t pid = fork();
+  if (pid == 0) {
+    if (!envName.empty()) setenv(envName.c_str(), envValue.c_str(), 1);
+    std::vector<char*> argv{const_cast<char*>(BRDFBAKE_EXE)};
+    for (auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    freopen("/dev/null", "w", stdout);
+    execv(BRDFBAKE_EXE, argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+int exitCode(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
+}
+
+// A full disk: a 200 KiB tmpfs, mounted in a private mount namespace (needs root, as CI has). The
+// earlier outputs and the small tables fit; the 128x128 float split-sum (~190 KB) does not.
+TEST(Cli, DiskFullMidBakeLeavesEarlierOutputsUntouched) {
+  fs::path d = freshDir("full");
+  fs::create_directories(d / "disk");
+  std::string exe = BRDFBAKE_EXE, disk = (d / "disk").string(), rep = (d / "report").string();
+  std::ofstream(d / "t.sh") << "set -u\n"
+                               "mount -t tmpfs -o size=200k tmpfs '" << disk << "' || { echo 'cannot mount a tmpfs (root needed)'; exit 99; }\n"
+                               "'" << exe << "' --table kp,albedo,splitsum --size 8 -o '" << disk << "/out' > /dev/null || exit 98\n"
+                               "list() { (cd '" << disk << "' && find . -type f | sort | xargs sha256sum); }\n"
+                               "list > '" << rep << ".before'\n"
+                               "'" << exe << "' --table kp,albedo,splitsum -o '" << disk << "/out'; echo $? > '" << rep << ".rc'\n"
+                               "list > '" << rep << ".after'\n"
+                               "'" << exe << "' --table kp,albedo,splitsum -o '" << disk << "/new/sub'; echo $? > '" << rep << ".rc2'\n"
+                               "test -e '" << disk << "/new' && echo left > '" << rep << ".new'\n"
+                               "exit 0\n";
+  CmdResult r{0, ""};
+  {
+    std::string cmd = "unshare -m sh '" + (d / "t.sh").string() + "' 2>&1";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::array<char, 4096> buf;
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+    int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(bytes(rep + ".rc"), "74\n") << r.out;
+  EXPECT_NE(r.out.find("cannot write " + disk + "/out/splitsum_ggx_smith-correlated.exr"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("No space left on device"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("nothing was written"), std::string::npos) << r.out;
+  const std::string before = bytes(rep + ".before");
+  EXPECT_EQ(std::count(before.begin(), before.end(), '\n'), 3) << before;
+  EXPECT_EQ(bytes(rep + ".after"), bytes(rep + ".before")) << "a failed bake changed the output directory";
+  EXPECT_EQ(bytes(rep + ".rc2"), "74\n") << r.out;
+  EXPECT_FALSE(fs::exists(rep + ".new")) << "a failed bake left the directory it created";
+}
+
+TEST(Cli, InterruptDuringComputeLeavesNothing) {
+  fs::path d = freshDir("sigint");
+  // a table that takes seconds to compute
+  pid_t pid = spawn({"--table", "splitsum", "--size", "2048", "-o", (d / "out").string()});
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  kill(pid, SIGINT);
+  EXPECT_EQ(exitCode(pid), 130);
+  EXPECT_FALSE(fs::exists(d / "out"));
+}
+
+TEST(Cli, InterruptWhileWritingLeavesTheDirectoryAsItWas) {
+  fs::path d = freshDir("sigterm");
+  fs::path out = d / "out";
+  CmdResult r = run("--table kp,albedo --size 8 -o '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  auto before = snapshot(d);
+  // hold after the temporaries are written, before they are renamed; interrupt there
+  pid_t pid = spawn({"--table", "kp,albedo,albedo-avg", "-o", out.string()}, "BRDFBAKE_TEST_HOLD_BEFORE_COMMIT_MS", "20000");
+  bool temps = false;
+  for (int k = 0; k < 600 && !temps; ++k) {  // until all three temporaries exist (at most 60 s)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    temps = snapshot(d).size() == before.size() + 3;
+  }
+  EXPECT_TRUE(temps) << "the temporaries never appeared";
+  kill(pid, SIGTERM);
+  EXPECT_EQ(exitCode(pid), 143);
+  EXPECT_EQ(snapshot(d), before) << "temporaries or partial outputs left behind";
+}
+
+TEST(Cli, GnuStyleOptionsParentsAndTopLevelOptions) {
+  fs::path d = freshDir("gnu");
+  // --opt=value, bake options without `bake`, -o with missing parents
+  CmdResult r = run("--ndf=beckmann --table=kp --size=4 --output='" + (d / "a/b/c").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  brdfbake::TableImage t = brdfbake::readTableExr((d / "a/b/c/kp_beckmann.exr").string());
+  EXPECT_EQ(t.width, 4);
+  EXPECT_EQ(t.strings["brdf.ndf"], "beckmann");
+  // the report's columns line up: every line has "table" at the same column
+  r = run("bake --ndf blinn-phong --gaf schlick-ggx-direct --table albedo-avg,kp --size 4 -o '" + (d / "x").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::istringstream lines(r.out);
+  std::string line;
+  std::vector<size_t> col;
+  while (std::getline(lines, line)) col.push_back(line.find_first_not_of(' ', line.find(' ')));
+  ASSERT_EQ(col.size(), 3u) << r.out;
+  EXPECT_EQ(col[0], col[1]) << r.out;
+  EXPECT_EQ(col[1], col[2]) << r.out;
+}
+
+TEST(Cli, CacheDirHoldsTheCompiledKernels) {
+  fs::path d = freshDir("cache");
+  CmdResult r = run("--table kp --size 4 --cache-dir '" + (d / "cache").string() + "' -o '" + (d / "out").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_GT(countFiles(d / "cache"), 0u) << "PoCL did not use --cache-dir";
 }
 
 TEST(Cli, NoOpenClPlatformNamesThePackage) {
@@ -195,6 +329,7 @@ TEST(Cli, NoOpenClPlatformNamesThePackage) {
   EXPECT_EQ(r.code, 69) << r.out;
   EXPECT_NE(r.out.find("pocl-opencl-icd"), std::string::npos) << r.out;
   EXPECT_EQ(countFiles(d), 0u);
+  EXPECT_FALSE(fs::exists(d / "out"));
 }
 
 TEST(Cli, InfoHelpVersionDevices) {

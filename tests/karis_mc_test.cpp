@@ -83,7 +83,9 @@ TEST(KarisSplitSumMC, RoughestNormalIncidenceMatchesBruteForce) {
     // of the energy (the reference is ~0.386 here), but it must stay a proper albedo.
     EXPECT_GT(ref, 0.0);
     EXPECT_LT(ref, 1.0);
-    EXPECT_NEAR(est, ref, 0.05) << "mu=" << mu << " r=" << r;
+    // Hammersley points are deterministic: the difference is what it is (3.3e-4), pinned within
+    // 5%; a change of the estimator or of the brute force moves it.
+    EXPECT_NEAR(std::fabs(est - ref), 3.3e-4, 0.17e-4) << "mu=" << mu << " r=" << r << " est " << est << " ref " << ref;
     std::printf("[ info     ] roughest/normal texel: MC A+B = %.6f, brute force = %.6f\n", est, ref);
 }
 

@@ -9,8 +9,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "bake/output_set.h"
 #include "cl/device.h"
 #include "cl/runner.h"
+#include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/models.h"
 #include "version.h"
@@ -25,22 +27,51 @@ namespace {
 // default table); the allowance keeps a 3x margin, and those tests check bound + allowance.
 constexpr double kFloatArithmeticAllowance = 1e-6;
 
-const char* kMethod =
-    "h-space quadrature: theta_h by v=-log(1-CDF_ndf) in GK15 panels (breaks 1,3,7,15,40 and at the "
-    "visible-domain limits, sqrt ends substituted), phi_h by 16-interval trapezoid on the full "
-    "circle or GK15 per smooth arc; texels bounded above 8e-6 redone with a doubled budget; error "
-    "|K15-G7| + inner bounds + float allowance";
+}  // namespace
+}  // namespace brdfbake
+namespace brdf64 {
+const double kPhiGrow = HEMI_PHI_GROW;  // RC() needs brdf64::real
+}
+namespace brdfbake {
+namespace {
 
-void ensureOutputDir(const std::string& dir) {
-  struct stat st {};
-  if (stat(dir.c_str(), &st) != 0) {
-    if (mkdir(dir.c_str(), 0777) != 0)
-      throw Error(kExitCantCreat, "-o: cannot create output directory '" + dir + "': " + std::strerror(errno));
-  } else if (!S_ISDIR(st.st_mode)) {
-    throw Error(kExitCantCreat, "-o: '" + dir + "' exists and is not a directory");
+// brdf.method, generated from the constants the estimators use (kernels/integrate/hemisphere.h),
+// so that it describes the code that ran.
+std::string fmt(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
+std::string hemisphereMethod() {
+  std::string breaks;
+  for (int k = 0; k < HEMI_NBREAKS; ++k) breaks += (k ? "," : "") + fmt(brdf64::HEMI_BREAKS[k]);
+  std::string cuts;
+  for (double c : brdf64::HEMI_REFINE_CUTS) cuts += (cuts.empty() ? "" : ",") + fmt(c);
+  return "h-space quadrature: theta_h by v=-log(1-CDF_ndf) in GK15 panels (breaks " + breaks +
+         " and at the visible-domain limits, sqrt ends substituted), phi_h by " + std::to_string(HEMI_TRAP_N) +
+         "-interval trapezoid on the full circle or GK15 per smooth arc (graded x" + fmt(brdf64::kPhiGrow) +
+         " towards the horizon); texels bounded above " + fmt(HEMI_BAKE_TARGET) +
+         " redone with each outer panel cut at " + cuts + ", " + std::to_string(2 * HEMI_TRAP_N) +
+         " trapezoid intervals, grading x" + fmt(0.5 * brdf64::kPhiGrow) + " and every arc panel halved; error |K15-G7| + inner bounds + " +
+         fmt(kFloatArithmeticAllowance) + " float allowance + storage rounding";
+}
+
+std::string methodText(TableKind kind) {
+  switch (kind) {
+    case TableKind::AlbedoAvg:
+      return "E_avg = 2 int E(mu) mu dmu by GK15 panels in mu graded from alpha/4 (x4), E at each node by " +
+             hemisphereMethod();
+    case TableKind::Kp:
+      return "k_p = int e^-v p/D_grid dv by GK15 panels on v in [0," + fmt(brdf64::HEMI_BREAKS[HEMI_NBREAKS - 1]) +
+             "] (breaks " + [] {
+               std::string b;
+               for (int k = 0; k < HEMI_NBREAKS; ++k) b += (k ? "," : "") + fmt(brdf64::HEMI_BREAKS[k]);
+               return b;
+             }() + "); error |K15-G7| + " + fmt(kFloatArithmeticAllowance) + " float allowance";
+    default:
+      return hemisphereMethod();
   }
-  if (access(dir.c_str(), W_OK | X_OK) != 0)
-    throw Error(kExitCantCreat, "-o: output directory '" + dir + "' is not writable");
 }
 
 // The largest relative error that storing `v` in the file's pixel type adds.
@@ -73,23 +104,26 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       break;
     case TableKind::Albedo:
       kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid);
-      img.channels = {"R"};
       img.planes = {kt.planes[2]};
-      channels = "R=E";
+      channels = "R=G=B=E";
       axes = "mu,r";
       break;
     case TableKind::AlbedoAvg:
       kt = runner.albedoAvg(job.ndf, job.gaf, job.width, job.nodeGrid);
-      img.channels = {"R"};
       img.planes = {kt.planes[0]};
-      channels = "R=E_avg";
+      channels = "R=G=B=E_avg";
       break;
     case TableKind::Kp:
       kt = runner.kp(job.ndf, job.width, job.nodeGrid);
-      img.channels = {"R"};
       img.planes = {kt.planes[0]};
-      channels = "R=k_p";
+      channels = "R=G=B=k_p";
       break;
+  }
+  // One-value tables repeat it in R, G and B: a lone R channel reads back as zeros through
+  // FreeImage, and three.js's EXRLoader takes only R, G, B, A and Y; R, G, B reads everywhere.
+  if (img.planes.size() == 1) {
+    img.channels = {"R", "G", "B"};
+    img.planes = {img.planes[0], img.planes[0], img.planes[0]};
   }
   *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   img.width = job.width;
@@ -117,7 +151,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   img.strings["brdf.grid"] = job.nodeGrid ? "node" : "texel-center";
   img.strings["brdf.roughness"] = roughnessMapping(job.ndf);
   img.strings["brdf.channels"] = channels;
-  img.strings["brdf.method"] = kMethod;
+  img.strings["brdf.method"] = methodText(job.kind);
   img.strings["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
   img.v2f["brdf.r.range"] = {0.0f, 1.0f};
   if (axes == "mu,r") img.v2f["brdf.mu.range"] = {0.0f, 1.0f};
@@ -126,8 +160,11 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
 }
 
 std::vector<TableReport> runPlan(const Plan& plan) {
-  ensureOutputDir(plan.outDir);
+  // Nothing is created before every table is computed and checked: a bad -o, a missing device
+  // or an interrupt leaves the file system as it was.
+  checkOutputDir(plan.outDir);
   DeviceEntry dev = selectDevice(plan.device);
+  guardInterrupts("abandoned " + std::to_string(plan.jobs.size()) + " table(s) for " + plan.outDir + "/");
   KernelRunner runner(dev.device);
   std::vector<TableImage> images;
   std::vector<TableReport> reports;
@@ -143,21 +180,67 @@ std::vector<TableReport> runPlan(const Plan& plan) {
     r.errorBound = images.back().floats["brdf.error"];
     reports.push_back(r);
   }
-  for (size_t i = 0; i < plan.jobs.size(); ++i) writeTableExr(plan.jobs[i].path, images[i], plan.jobs[i].half);
+  std::vector<OutputFile> files;
+  for (size_t i = 0; i < plan.jobs.size(); ++i) files.push_back({plan.jobs[i].path, &images[i], plan.jobs[i].half});
+  commitOutputs(plan.outDir, files);
   return reports;
 }
 
 std::string formatReport(const std::vector<TableReport>& reports) {
+  // columns as wide as their longest entry
+  size_t wf = 4, wt = 5;
+  for (const auto& r : reports) {
+    wf = std::max(wf, r.path.size());
+    wt = std::max(wt, r.table.size());
+  }
   std::string s;
-  char line[512];
-  std::snprintf(line, sizeof line, "%-44s %-10s %9s %10s %9s\n", "file", "table", "size", "max error", "seconds");
+  char line[1024];
+  std::snprintf(line, sizeof line, "%-*s  %-*s  %9s  %9s  %7s\n", int(wf), "file", int(wt), "table", "size", "max error",
+                "seconds");
   s += line;
   for (const auto& r : reports) {
-    std::snprintf(line, sizeof line, "%-44s %-10s %4dx%-4d %10.2e %9.3f\n", r.path.c_str(), r.table.c_str(), r.width,
-                  r.height, r.errorBound, r.seconds);
+    std::string size = std::to_string(r.width) + "x" + std::to_string(r.height);
+    std::snprintf(line, sizeof line, "%-*s  %-*s  %9s  %9.2e  %7.3f\n", int(wf), r.path.c_str(), int(wt), r.table.c_str(),
+                  size.c_str(), r.errorBound, r.seconds);
     s += line;
   }
   return s;
+}
+
+}  // namespace brdfbake
+
+namespace brdfbake {
+
+std::string energyWarnings(const TableImage& t) {
+  auto str = [&](const char* k) {
+    auto it = t.strings.find(k);
+    return it == t.strings.end() ? std::string() : it->second;
+  };
+  std::string table = str("brdf.table");
+  // the energy quantity's channel: E = A + B (splitsum B), E (albedo R), E_avg (albedo-avg R)
+  std::string name, channel;
+  if (table == "splitsum") name = "A+B", channel = "B";
+  else if (table == "albedo") name = "E", channel = "R";
+  else if (table == "albedo-avg") name = "E_avg", channel = "R";
+  else return "";
+  for (size_t c = 0; c < t.channels.size(); ++c) {
+    if (t.channels[c] != channel) continue;
+    float mx = 0;
+    for (float v : t.planes[c]) mx = std::max(mx, v);
+    double tol = 0;
+    auto e = t.floats.find("brdf.error");
+    if (e != t.floats.end()) tol = e->second;
+    if (mx > 1 + tol) {
+      char b[64];
+      std::snprintf(b, sizeof b, "%.4g", mx);
+      return "warning: " + name + " exceeds 1 (max " + b + "): a single-scattering albedo cannot; " + str("brdf.ndf") +
+             " with " + str("brdf.gaf") +
+             (str("brdf.gaf") == "none" ? " (G = 1, albedo ~ 1/mu at grazing)"
+                                        : " (a Lambda borrowed from Beckmann, not the NDF's own)") +
+             " does not conserve energy; see docs/MODELS.md, \"Tables that exceed 1\"\n";
+    }
+  }
+  return "";
 }
 
 }  // namespace brdfbake

@@ -25,4 +25,8 @@ std::vector<TableReport> runPlan(const Plan& plan);
 
 std::string formatReport(const std::vector<TableReport>& reports);
 
+// For `info`: a warning line when an energy table (splitsum A+B, albedo, albedo-avg) exceeds 1 by
+// more than its error bound, naming the cause; "" otherwise.
+std::string energyWarnings(const TableImage& table);
+
 }  // namespace brdfbake

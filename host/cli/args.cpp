@@ -1,6 +1,7 @@
 #include "cli/args.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdlib>
 
@@ -20,23 +21,29 @@ BakeRequest defaultRequest() {
 
 std::string usageText() {
   return "usage:\n"
-         "  brdfbake                      bake the default tables (ggx + smith-correlated) into out/\n"
-         "  brdfbake bake [options]       bake the product of the given models and tables\n"
+         "  brdfbake [options]            bake (the default set: ggx + smith-correlated, every table, into out/)\n"
+         "  brdfbake bake [options]       the same, spelled out\n"
          "  brdfbake devices              list OpenCL platforms and devices\n"
          "  brdfbake info FILE.exr        print a table's metadata and value range\n"
          "  brdfbake --help | --version\n"
          "\n"
-         "bake options (each of --ndf, --gaf, --table may be repeated or comma-separated):\n"
-         "  --ndf NAME      " + joinNames(ndfNames()) + " (default ggx)\n"
-         "  --gaf NAME      " + joinNames(gafNames()) + "\n"
-         "                  (default smith-correlated)\n"
-         "  --table KIND    " + joinNames(tableNames()) + " (default: all four)\n"
-         "  --size N        texels per axis, 1..8192 (default 128 for splitsum, 32 otherwise)\n"
-         "  --grid G        texel-center (default: value at (i+0.5)/n) or node (at i/(n-1), n >= 2)\n"
-         "  --half          store HALF channels instead of FLOAT\n"
-         "  -o, --output DIR  output directory (default out)\n"
-         "  --device TEXT   use the first OpenCL device whose name or platform contains TEXT\n"
-         "                  (default: the first CPU device, e.g. PoCL)\n";
+         "bake options (--opt VALUE or --opt=VALUE; --ndf, --gaf, --table may be repeated or comma-separated,\n"
+         "their product is baked; the others may be given once):\n"
+         "  --ndf NAME        " + joinNames(ndfNames()) + " (default ggx)\n"
+         "  --gaf NAME        " + joinNames(gafNames()) + "\n"
+         "                    (default smith-correlated)\n"
+         "  --table KIND      " + joinNames(tableNames()) + " (default: all four)\n"
+         "  --size N          texels per axis, 1..8192 (default 128 for splitsum, 32 otherwise)\n"
+         "  --grid G          texel-center (default: value at (i+0.5)/n) or node (at i/(n-1), n >= 2)\n"
+         "  --half            store HALF channels instead of FLOAT\n"
+         "  -o, --output DIR  output directory, created with its parents (default out)\n"
+         "  --device TEXT     use the first OpenCL device whose name or platform contains TEXT\n"
+         "                    (default: the first CPU device, e.g. PoCL)\n"
+         "  --cache-dir DIR   PoCL's kernel cache (default: $POCL_CACHE_DIR, else ~/.cache/pocl)\n"
+         "\n"
+         "Models, formulas and table conventions: docs/MODELS.md in the source tree.\n"
+         "Exit codes: 0 ok, 64 usage, 66 unreadable input, 69 no OpenCL device, 70 internal error,\n"
+         "73 cannot create output, 74 write error (e.g. disk full), 128+N interrupted by signal N.\n";
 }
 
 namespace {
@@ -58,8 +65,8 @@ int parseSize(const std::string& text) {
   char* end = nullptr;
   long v = std::strtol(text.c_str(), &end, 10);
   if (text.empty() || *end != '\0' || errno != 0 || v < kMinSize || v > kMaxSize)
-    throw Error(kExitUsage, "--size: '" + text + "' is not an integer in " + std::to_string(kMinSize) + ".." +
-                                std::to_string(kMaxSize));
+    throw Error(kExitUsage, "--size must be an integer in " + std::to_string(kMinSize) + ".." +
+                                std::to_string(kMaxSize) + ", got " + text);
   return static_cast<int>(v);
 }
 
@@ -70,8 +77,19 @@ void addUnique(std::vector<T>& v, T x) {
 
 }  // namespace
 
-Command parseArgs(const std::vector<std::string>& args) {
+Command parseArgs(const std::vector<std::string>& rawArgs) {
   Command cmd;
+  // GNU style --opt=value is the same as --opt value
+  std::vector<std::string> args;
+  for (const auto& a : rawArgs) {
+    size_t eq = a.find('=');
+    if (a.rfind("--", 0) == 0 && eq != std::string::npos && eq > 2) {
+      args.push_back(a.substr(0, eq));
+      args.push_back(a.substr(eq + 1));
+    } else {
+      args.push_back(a);
+    }
+  }
   if (args.empty()) {
     cmd.bake = defaultRequest();
     return cmd;
@@ -103,14 +121,23 @@ Command parseArgs(const std::vector<std::string>& args) {
   } else if (first.rfind("-", 0) != 0) {
     throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, devices, info (see --help)");
   }
-  // the bare form (`brdfbake --device X`) takes bake options and bakes the default set
-  bool bare = first != "bake";
+  // `brdfbake [options]` is `brdfbake bake [options]`: every bake option works at the top level.
+  std::vector<std::string> seen;  // scalar options given so far: each at most once
+  auto once = [&](const std::string& opt, const std::string& canonical) {
+    if (std::find(seen.begin(), seen.end(), canonical) != seen.end())
+      throw Error(kExitUsage, opt + " given twice; give it once");
+    seen.push_back(canonical);
+  };
   std::string gridName;
   for (; i < args.size(); ++i) {
     const std::string& opt = args[i];
+    // the option's value: the next argument, unless that is another option (a negative number is
+    // a value, so that --size -5 is answered with the range)
     auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size() || (args[i + 1].size() > 1 && args[i + 1][0] == '-'))
-        throw Error(kExitUsage, opt + ": missing value");
+      bool next = i + 1 < args.size();
+      bool looksLikeOption = next && args[i + 1].size() > 1 && args[i + 1][0] == '-' &&
+                             !std::isdigit(static_cast<unsigned char>(args[i + 1][1]));
+      if (!next || looksLikeOption) throw Error(kExitUsage, opt + ": missing value");
       return args[++i];
     };
     if (opt == "--ndf") {
@@ -120,19 +147,28 @@ Command parseArgs(const std::vector<std::string>& args) {
     } else if (opt == "--table") {
       for (const auto& n : splitCommas(value())) addUnique(req.tables, tableKind(n));
     } else if (opt == "--size") {
+      once(opt, "--size");
       req.size = parseSize(value());
     } else if (opt == "--grid") {
+      once(opt, "--grid");
       gridName = value();
       if (gridName == "node") req.nodeGrid = true;
       else if (gridName == "texel-center") req.nodeGrid = false;
-      else throw Error(kExitUsage, "--grid: unknown grid '" + gridName + "'; valid: texel-center, node");
+      else throw Error(kExitUsage, "--grid must be texel-center or node, got '" + gridName + "'");
     } else if (opt == "--half") {
+      once(opt, "--half");
       req.half = true;
     } else if (opt == "-o" || opt == "--output") {
+      once(opt, "--output");
       req.outDir = value();
       if (req.outDir.empty()) throw Error(kExitUsage, opt + ": empty directory name");
     } else if (opt == "--device") {
+      once(opt, "--device");
       req.device = value();
+    } else if (opt == "--cache-dir") {
+      once(opt, "--cache-dir");
+      req.cacheDir = value();
+      if (req.cacheDir.empty()) throw Error(kExitUsage, "--cache-dir: empty directory name");
     } else if (opt == "--help" || opt == "-h") {
       cmd.kind = Command::Kind::Help;
       return cmd;
@@ -140,15 +176,12 @@ Command parseArgs(const std::vector<std::string>& args) {
       throw Error(kExitUsage, "unknown option '" + opt + "' (see --help)");
     }
   }
-  if (bare && (!req.ndfs.empty() || !req.gafs.empty() || !req.tables.empty()))
-    throw Error(kExitUsage, "--ndf, --gaf and --table belong to the 'bake' command: brdfbake bake --ndf ...");
   BakeRequest def = defaultRequest();
   if (req.ndfs.empty()) req.ndfs = def.ndfs;
   if (req.gafs.empty()) req.gafs = def.gafs;
   if (req.tables.empty()) req.tables = def.tables;
   if (req.nodeGrid && req.size && *req.size < 2)
-    throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis (got " +
-                                std::to_string(*req.size) + ")");
+    throw Error(kExitUsage, "--size must be at least 2 on the node grid, got " + std::to_string(*req.size));
   cmd.bake = req;
   return cmd;
 }

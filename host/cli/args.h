@@ -17,6 +17,7 @@ struct BakeRequest {
   bool half = false;                 // HALF instead of FLOAT channels
   bool nodeGrid = false;             // samples at i/(n-1) instead of texel centres (i+0.5)/n
   std::string device;                // substring of the device (or platform) name; "" = first CPU
+  std::string cacheDir;              // PoCL kernel cache (POCL_CACHE_DIR); "" = PoCL's default
 };
 
 struct Command {

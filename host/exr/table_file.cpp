@@ -197,15 +197,27 @@ class TempFileGuard {
 
 }  // namespace
 
-void writeTableExr(const std::string& path, const TableImage& img, bool half) {
-  validate(path, img, half);
-
+std::string temporaryPathFor(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
   const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
   if (name.empty() || name == "." || name == "..")
     throw Error(kExitCantCreat, "cannot create " + path + ": not a file name");
-  const std::string tmp = dir + "." + name + ".tmp-" + std::to_string(::getpid());
+  return dir + "." + name + ".tmp-" + std::to_string(::getpid());
+}
+
+void writeTableExr(const std::string& path, const TableImage& img, bool half) {
+  const std::string tmp = temporaryPathFor(path);
+  writeTableExrTemporary(tmp, path, img, half);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    throw Error(kExitCantCreat, "cannot create " + path + ": " + errnoText(err));
+  }
+}
+
+void writeTableExrTemporary(const std::string& tmp, const std::string& path, const TableImage& img, bool half) {
+  validate(path, img, half);
 
   // Everything that can fail for reasons other than the file system is prepared first.
   Imf::Header header(img.width, img.height);
@@ -270,10 +282,6 @@ void writeTableExr(const std::string& path, const TableImage& img, bool half) {
   }
   if (const int err = guard.close())
     throw Error(kExitIoErr, "cannot write " + path + ": close: " + errnoText(err));
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    throw Error(kExitCantCreat, "cannot create " + path + ": " + errnoText(err));
-  }
   guard.release();
 }
 

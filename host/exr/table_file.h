@@ -42,6 +42,13 @@ struct TableImage {
 // OpenEXR is called with numThreads = 0 (the global thread count is not touched).
 void writeTableExr(const std::string& path, const TableImage& img, bool half);
 
+// The first half of writeTableExr, for sets of files that land together (bake/output_set.h):
+// validates, writes `tmp` (the temporary for `path`, named in messages) and fsyncs it; no rename.
+// On failure `tmp` is removed and Error is thrown as above.
+void writeTableExrTemporary(const std::string& tmp, const std::string& path, const TableImage& img, bool half);
+// `<dir>/.<name>.tmp-<pid>` for `path`; throws kExitCantCreat when path names no file.
+std::string temporaryPathFor(const std::string& path);
+
 // Reads a file written by writeTableExr (or any single-part scanline EXR with R/G/B/A
 // channels; other channels are ignored), converting HALF (or UINT) to float.  The
 // returned channels are the R/G/B/A channels present, in that order; a data window not

@@ -24,6 +24,10 @@
  * the integrand), and one plus a single node the 16-interval trapezoid (cosines from a table).
  */
 #define HEMI_VCAP RC(40.0)
+/* The budgets (the brdf.method text is generated from these: host/bake/bake.cpp). */
+#define HEMI_TRAP_N 16         /* trapezoid intervals on the whole circle; refined: twice as many */
+#define HEMI_PHI_GROW RC(4.0)  /* grading of the arc panels towards phimax; refined: halved */
+#define HEMI_BAKE_TARGET 8e-6  /* texels whose bound exceeds this are refined (1e-5 with allowances) */
 
 typedef struct HemiResult {
   acc_t a, b;         /* A (F0 coefficient) and B (F90 bias), E = A + B */
@@ -97,7 +101,7 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   real kinks[3];
   int nk = gaf_kinks(gaf, mu, s, h.c, sn, kinks);
   if (full && nk == 0) {
-    hemi_phi_trap(ndf, gaf, p, mu, s, h, sn, refine ? 32 : 16, ia, ib, ea, eb);
+    hemi_phi_trap(ndf, gaf, p, mu, s, h, sn, refine ? 2 * HEMI_TRAP_N : HEMI_TRAP_N, ia, ib, ea, eb);
     return;
   }
   /* Breakpoints inside (0, phimax): the GAF's kinks, and on a partial arc a geometric grading
@@ -115,7 +119,7 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   }
   if (!full) {
     real layer = mu / (RC(2.0) * h.c * s * sn * fmax(sinmax, RC(1e-30)));
-    real grow = refine ? RC(2.0) : RC(4.0);
+    real grow = refine ? RC(0.5) * HEMI_PHI_GROW : HEMI_PHI_GROW;
     for (real d = layer; d < RC(0.5) * phimax && nb < 16; d *= grow) br[nb++] = phimax - d;
   }
   sort_ascending(br, nb);
@@ -346,13 +350,19 @@ BRDF_FN BrdfParams brdf_params(int ndf, int gaf, real r) {
   return p;
 }
 
-/* The largest of the bounds on A, B and E = A + B, each relative to max(1, |value|). */
+/* The texel's claimed bound: the largest of the bounds on A, B and E = A + B, each relative to
+ * max(1, |value|), plus HEMI_ERR_FLOOR. |K15 - G7| and the inner differences estimate the error
+ * rather than bound it; where they are tiny the true error can exceed them (measured, in double,
+ * over every edge texel of a 128x128 table and a 9x9 node grid for all 44 pairs: at most 1.7e-7,
+ * beckmann + none at mu = 1/256, r = 255/256, where the estimate is 1.8e-8). The floor covers that
+ * (tests/accuracy_test.cpp checks every such texel against the reference). */
+#define HEMI_ERR_FLOOR RC(2e-7)
 BRDF_FN real hemi_rel_error(HemiResult h) {
   real a = (real)h.a, b = (real)h.b, e = (real)(h.a + h.b);
   real ea = (real)h.err_a / fmax(RC(1.0), fabs(a));
   real eb = (real)h.err_b / fmax(RC(1.0), fabs(b));
   real ee = (real)(h.err_a + h.err_b) / fmax(RC(1.0), fabs(e));
-  return fmax(ee, fmax(ea, eb));
+  return fmax(ee, fmax(ea, eb)) + HEMI_ERR_FLOOR;
 }
 
 /* The default budget, and the refined one where its bound exceeds `target`. */
@@ -376,9 +386,11 @@ BRDF_FN HemiResult hemisphere_moments_to(int ndf, int gaf, BrdfParams p, real mu
  * (alpha = 1e-10) reaches it to O(1e-10), far inside float rounding; the mirror formula at h = n
  * would give 0 there (o.h = mu = 0, where chi+ zeroes G). */
 #define HEMI_CORNER_R RC(1e-5)
+BRDF_FN BrdfParams hemisphere_texel_params(int ndf, int gaf, real mu, real r) {
+  return brdf_params(ndf, gaf, (mu <= RC(0.0) && r <= RC(0.0)) ? HEMI_CORNER_R : r);
+}
 BRDF_FN HemiResult hemisphere_texel(int ndf, int gaf, real mu, real r, real target) {
-  real rr = (mu <= RC(0.0) && r <= RC(0.0)) ? HEMI_CORNER_R : r;
-  return hemisphere_moments_to(ndf, gaf, brdf_params(ndf, gaf, rr), mu, target);
+  return hemisphere_moments_to(ndf, gaf, hemisphere_texel_params(ndf, gaf, mu, r), mu, target);
 }
 
 /* Average albedo E_avg = 2 int_0^1 E(mu) mu dmu (Kulla and Conty 2017).

@@ -1,0 +1,230 @@
+#include "bake/output_set.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <thread>
+
+#include "common/errors.h"
+
+namespace brdfbake {
+
+namespace {
+
+// ---- what the signal handler may touch: fixed buffers, no allocation -----------------------
+constexpr int kMaxPaths = 512;
+constexpr int kPathLen = 4096;
+char gPaths[kMaxPaths][kPathLen];   // temporaries to unlink
+char gDirs[64][kPathLen];           // directories we created, to rmdir (deepest last)
+volatile sig_atomic_t gNumPaths = 0, gNumDirs = 0;
+char gWhat[1024];
+
+void copyTo(char* dst, const std::string& s) {
+  size_t n = std::min(s.size(), static_cast<size_t>(kPathLen - 1));
+  std::memcpy(dst, s.data(), n);
+  dst[n] = '\0';
+}
+
+void put(const char* s) {
+  ssize_t r = ::write(2, s, std::strlen(s));
+  (void)r;
+}
+
+extern "C" void onInterrupt(int sig) {
+  for (int i = 0; i < gNumPaths; ++i) ::unlink(gPaths[i]);
+  for (int i = gNumDirs - 1; i >= 0; --i) ::rmdir(gDirs[i]);
+  put("brdfbake: interrupted (");
+  put(sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "SIGHUP");
+  put("): ");
+  put(gWhat);
+  put("; nothing was written\n");
+  ::_exit(128 + sig);
+}
+
+const int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+sigset_t interruptSet() {
+  sigset_t set;
+  sigemptyset(&set);
+  for (int s : kSignals) sigaddset(&set, s);
+  return set;
+}
+
+std::string errnoText(int err) { return std::strerror(err); }
+
+std::string parentOf(const std::string& p) {
+  size_t slash = p.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  if (slash == 0) return "/";
+  return p.substr(0, slash);
+}
+
+bool isDir(const std::string& p, bool* exists) {
+  struct stat st {};
+  *exists = ::stat(p.c_str(), &st) == 0;
+  return *exists && S_ISDIR(st.st_mode);
+}
+
+// Removes what a failed commit left: temporaries, then created directories, deepest first.
+void cleanUp(const std::vector<std::string>& temps, const std::vector<std::string>& created) {
+  for (const auto& t : temps) ::unlink(t.c_str());
+  for (auto it = created.rbegin(); it != created.rend(); ++it) ::rmdir(it->c_str());
+}
+
+}  // namespace
+
+void checkOutputDir(const std::string& dir) {
+  if (dir.empty()) throw Error(kExitUsage, "-o: empty directory name");
+  std::string p = dir;
+  while (p.size() > 1 && p.back() == '/') p.pop_back();
+  bool exists = false;
+  // the nearest existing ancestor (or dir itself) must be a writable directory
+  std::string cur = p;
+  while (true) {
+    if (isDir(cur, &exists)) break;
+    if (exists) throw Error(kExitCantCreat, "-o: '" + cur + "' exists and is not a directory");
+    std::string up = parentOf(cur);
+    if (up == cur) break;
+    cur = up;
+  }
+  if (::access(cur.c_str(), W_OK | X_OK) != 0)
+    throw Error(kExitCantCreat, "-o: cannot write in '" + cur + "': " + errnoText(errno));
+}
+
+void guardInterrupts(const std::string& what) {
+  std::string w = what.substr(0, sizeof gWhat - 1);
+  std::memcpy(gWhat, w.c_str(), w.size() + 1);
+  gNumPaths = 0;
+  gNumDirs = 0;
+  struct sigaction sa {};
+  sa.sa_handler = onInterrupt;
+  sigemptyset(&sa.sa_mask);
+  for (int s : kSignals) sigaddset(&sa.sa_mask, s);  // one handler at a time
+  for (int s : kSignals) {
+    struct sigaction old {};
+    ::sigaction(s, nullptr, &old);
+    if (old.sa_handler == SIG_IGN) continue;  // e.g. nohup: keep ignoring
+    ::sigaction(s, &sa, nullptr);
+  }
+}
+
+void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files) {
+  if (files.size() > static_cast<size_t>(kMaxPaths))
+    throw Error(kExitUsage, "too many tables in one bake (" + std::to_string(files.size()) + "; at most " +
+                                std::to_string(kMaxPaths) + ")");
+  checkOutputDir(dir);
+  // mkdir -p, remembering what we created; the handler sees each one before it exists
+  std::vector<std::string> created, chain;
+  std::string p = dir;
+  while (p.size() > 1 && p.back() == '/') p.pop_back();
+  for (std::string cur = p;; cur = parentOf(cur)) {
+    bool exists = false;
+    if (isDir(cur, &exists)) break;
+    chain.push_back(cur);
+    if (parentOf(cur) == cur) break;
+  }
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+    if (gNumDirs < 64) {
+      copyTo(gDirs[gNumDirs], *it);
+      gNumDirs = gNumDirs + 1;
+    }
+    if (::mkdir(it->c_str(), 0777) != 0 && errno != EEXIST) {
+      int err = errno;
+      cleanUp({}, created);
+      throw Error(kExitCantCreat, "-o: cannot create directory '" + *it + "': " + errnoText(err));
+    }
+    created.push_back(*it);
+  }
+
+  // every file to its temporary, synced
+  std::vector<std::string> temps;
+  try {
+    for (const auto& f : files) {
+      std::string tmp = temporaryPathFor(f.path);
+      copyTo(gPaths[gNumPaths], tmp);
+      gNumPaths = gNumPaths + 1;
+      temps.push_back(tmp);
+      writeTableExrTemporary(tmp, f.path, *f.image, f.half);
+    }
+  } catch (const Error& e) {
+    cleanUp(temps, created);
+    throw Error(e.code(), std::string(e.what()) + "; nothing was written");
+  } catch (...) {
+    cleanUp(temps, created);
+    throw;
+  }
+  // For tests of interrupted writes: hold here, every temporary written, nothing renamed yet.
+  if (const char* hold = std::getenv("BRDFBAKE_TEST_HOLD_BEFORE_COMMIT_MS"))
+    std::this_thread::sleep_for(std::chrono::milliseconds(std::atoi(hold)));
+
+  // The renames, with the interrupt signals held back until all have landed (or been undone).
+  sigset_t set = interruptSet(), old;
+  ::sigprocmask(SIG_BLOCK, &set, &old);
+  std::vector<std::string> backups(files.size());
+  std::string failure;
+  ExitCode code = kExitOk;
+  // keep a link to each file we replace, so a failed rename can put the set back as it was
+  for (size_t k = 0; k < files.size() && failure.empty(); ++k) {
+    bool exists = false;
+    isDir(files[k].path, &exists);
+    if (!exists) continue;
+    backups[k] = temps[k] + ".old";
+    if (::link(files[k].path.c_str(), backups[k].c_str()) != 0) {
+      failure = "cannot keep a backup of " + files[k].path + ": " + errnoText(errno);
+      code = kExitCantCreat;
+      backups[k].clear();
+    }
+  }
+  size_t landed = 0;
+  for (; landed < files.size() && failure.empty(); ++landed) {
+    if (std::rename(temps[landed].c_str(), files[landed].path.c_str()) != 0) {
+      failure = "cannot create " + files[landed].path + ": " + errnoText(errno);
+      code = kExitCantCreat;
+      break;
+    }
+  }
+  if (!failure.empty()) {
+    for (size_t k = 0; k < landed; ++k) {
+      if (!backups[k].empty()) {
+        std::rename(backups[k].c_str(), files[k].path.c_str());
+        backups[k].clear();
+      } else {
+        ::unlink(files[k].path.c_str());
+      }
+    }
+  }
+  for (const auto& b : backups)
+    if (!b.empty()) ::unlink(b.c_str());
+  if (!failure.empty()) {
+    cleanUp(temps, created);
+  } else {
+    int fd = ::open(p.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd >= 0) {
+      ::fsync(fd);  // the renames themselves reach the disk
+      ::close(fd);
+    }
+  }
+  // Done with what the handler would remove. A signal that arrived meanwhile is delivered with its
+  // default action once unblocked: the set has landed whole (or not at all) by then.
+  gNumPaths = 0;
+  gNumDirs = 0;
+  for (int s : kSignals) {
+    struct sigaction cur {};
+    ::sigaction(s, nullptr, &cur);
+    if (cur.sa_handler == onInterrupt) {
+      struct sigaction dfl {};
+      dfl.sa_handler = SIG_DFL;
+      ::sigaction(s, &dfl, nullptr);
+    }
+  }
+  ::sigprocmask(SIG_SETMASK, &old, nullptr);
+  if (!failure.empty()) throw Error(code, failure + "; nothing was written");
+}
+
+}  // namespace brdfbake

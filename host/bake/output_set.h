@@ -1,0 +1,33 @@
+// A set of table files that lands whole or not at all: every file is written to a temporary next to
+// its target and synced, then all are renamed together; any failure, or SIGINT/SIGTERM/SIGHUP at
+// any point before the renames, leaves the output directory exactly as it was (no temporaries, no
+// directories created, earlier outputs untouched).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "exr/table_file.h"
+
+namespace brdfbake {
+
+struct OutputFile {
+  std::string path;
+  const TableImage* image;
+  bool half;
+};
+
+// Before any work: `dir` is a directory we can write into, or can be created (mkdir -p) under the
+// nearest existing ancestor. Throws Error(kExitCantCreat) naming -o otherwise. Creates nothing.
+void checkOutputDir(const std::string& dir);
+
+// From here until commitOutputs returns, SIGINT, SIGTERM and SIGHUP remove whatever this process
+// has written, print "brdfbake: interrupted (SIGINT): <what>; ..." and exit 128 + the signal.
+// `what` names the abandoned work, e.g. "abandoned 4 tables for out/".
+void guardInterrupts(const std::string& what);
+
+// Creates `dir` (and missing parents), writes every file to a temporary, syncs, renames them all.
+// Error kExitIoErr (write failed, e.g. disk full) or kExitCantCreat (cannot create); in either case
+// nothing is left behind and files that were there before are unchanged.
+void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files);
+
+}  // namespace brdfbake
