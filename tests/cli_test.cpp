@@ -75,7 +75,13 @@ TEST(Cli, DefaultBakeWritesTheFourTablesIntoOut) {
   fs::path out = defaultBake() / "out";
   for (const char* f : {"splitsum_ggx_smith-correlated.exr", "albedo_ggx_smith-correlated.exr",
                         "albedo-avg_ggx_smith-correlated.exr", "kp_ggx.exr"})
-    EXPECT_TRUE(fs::exists(out / f)) << f;
+  {
+    ASSERT_TRUE(fs::exists(out / f)) << f;
+    // every default-size table claims at most 1e-5 (tests/accuracy_test.cpp checks it is honest)
+    float claim = brdfbake::readTableExr((out / f).string()).floats["brdf.error"];
+    EXPECT_GT(claim, 0.0f) << f;
+    EXPECT_LE(claim, 1e-5f) << f;
+  }
   EXPECT_EQ(countFiles(out), 4u);  // no temporary files left
 }
 
