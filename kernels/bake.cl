@@ -36,17 +36,20 @@ kernel void bake_hemisphere(global float* out_a, global float* out_b, global flo
   out_err[t] = hemi_rel_error(h);
 }
 
-/* Average albedo E_avg(r). */
-kernel void bake_albedo_avg(global float* out, global float* out_err, int n, float r_lo, float r_hi,
-                            int node_grid) {
-  int j = get_global_id(0);
-  if (j >= n) return;
+/* Average albedo E_avg(r), first step: E at the rule's nodes, E(AVG_MU[i], r_j) and its bound
+ * (absolute), one node per work-item, out[j * AVG_NODES + i]. The host forms each r's weighted
+ * sums and bound (kernels/integrate/hemisphere.h, AVG_MU). A 2D range (AVG_NODES x n) fills a
+ * device as the albedo table does, where one work-item per r ran its ~100 nodes in series. */
+kernel void bake_albedo_nodes(global float* out_e, global float* out_err, int n, float r_lo, float r_hi,
+                              int node_grid) {
+  int i = get_global_id(0), j = get_global_id(1);
+  if (i >= AVG_NODES || j >= n) return;
   float r = grid_coord(j, n, r_lo, r_hi, node_grid);
   BrdfParams p = brdf_params(BRDF_NDF, BRDF_GAF, r);
-  float err;
-  float v = albedo_average(BRDF_NDF, BRDF_GAF, p, &err);
-  out[j] = v;
-  out_err[j] = err / fmax(1.0f, fabs(v));
+  HemiResult h = hemisphere_moments_to(BRDF_NDF, BRDF_GAF, p, AVG_MU[i], avg_node_target(i));
+  int t = j * AVG_NODES + i;
+  out_e[t] = (float)(h.a + h.b);
+  out_err[t] = (float)(h.err_a + h.err_b);
 }
 
 /* k_p of the NDF's raw shape over r. */

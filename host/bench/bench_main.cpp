@@ -4,11 +4,25 @@
 // measured against the host reference (adaptive Gauss-Kronrod in double).
 //
 // usage: brdfbake-bench [--size N] [--samples S] [--stride K] [--repeat R] [--device TEXT] [--times-only]
+//                       [--all-pairs] [--albedo-avg] [--cold-start [--build-threads N] [--skip-all]]
 //   --stride K: reference on every K-th texel per axis plus the first/last rows and columns
 //               (default 1: every texel; the reference takes a few seconds for all 16384).
 //   --times-only: skip the errors; times and ratio only.
 //   --all-pairs: no timing; every NDF/GAF pair's table against the reference (largest error,
 //               largest kernel bound, texels whose error exceeds their bound). ~5 minutes.
+//   --albedo-avg: the albedo-avg table (size 32, texel centres) timed against the 32x32 albedo
+//               table it averages, then every pair's albedo-avg against the reference: the
+//               largest bound over all 32 entries, the error at every --stride-th r (default 8)
+//               plus r = 3/64, 5/64, 63/64 and the node-grid r = 0, 1/2, 1. ~10 minutes.
+//   --cold-start: build + bake times of the default set and of every pair's tables, cold (fresh
+//               empty POCL_CACHE_DIR) and warm (same cache again), each in a child process of
+//               this program, as ratios against the Karis MC baseline timed in this run; and
+//               the albedo-avg/albedo table time ratio. ~1 minute on 2 cores.
+//               --build-threads N: threads for the program builds (default: all cores; 1 shows
+//               the serial cost). --skip-all: only the default set.
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -89,12 +103,211 @@ int allPairs(KernelRunner& runner, int n, int stride) {
 double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
+
+// The tables of a bake: the default set (ggx + smith-correlated: split-sum 128, albedo 32,
+// albedo-avg 32, k_p 32), or every pair with every table (k_p once per NDF), as brdfbake bakes them.
+struct BenchTable {
+  TableKind kind;
+  int ndf, gaf, size;
+};
+std::vector<BenchTable> bakeSet(bool all) {
+  std::vector<BenchTable> v;
+  int ndfs = all ? static_cast<int>(ndfNames().size()) : 1, gafs = all ? static_cast<int>(gafNames().size()) : 1;
+  for (int n = 0; n < ndfs; ++n) {
+    for (int g = 0; g < gafs; ++g) {
+      int gaf = all ? g : 10;
+      v.push_back({TableKind::SplitSum, n, gaf, 128});
+      v.push_back({TableKind::Albedo, n, gaf, 32});
+      v.push_back({TableKind::AlbedoAvg, n, gaf, 32});
+    }
+    v.push_back({TableKind::Kp, n, 0, 32});
+  }
+  return v;
+}
+
+KernelTable bakeOne(KernelRunner& runner, const BenchTable& t) {
+  switch (t.kind) {
+    case TableKind::SplitSum:
+    case TableKind::Albedo:
+      return runner.hemisphere(t.ndf, t.gaf, t.size, t.size, false);
+    case TableKind::AlbedoAvg:
+      return runner.albedoAvg(t.ndf, t.gaf, t.size, false);
+    case TableKind::Kp:
+      break;
+  }
+  return runner.kp(t.ndf, t.size, false);
+}
+
+// Child of --cold-start: prepares (builds) everything the set needs at once, then bakes it;
+// prints the times. The parent measures the whole process (start, platform, builds, bake).
+int bakeChild(const std::string& device, bool all, int buildThreads) {
+  auto t0 = std::chrono::steady_clock::now();
+  DeviceEntry dev = selectDevice(device);
+  KernelRunner runner(dev.device);
+  if (buildThreads > 0) runner.setBuildThreads(buildThreads);
+  std::vector<BenchTable> set = bakeSet(all);
+  std::vector<KernelRunner::TableNeed> needs;
+  for (const BenchTable& t : set) needs.push_back({t.kind, t.ndf, t.gaf});
+  double tInit = seconds(t0);
+  runner.prepareAll(needs);
+  double tPrep = seconds(t0) - tInit;
+  for (const BenchTable& t : set) {
+    KernelTable k = bakeOne(runner, t);
+    for (float v : k.planes[0])
+      if (!std::isfinite(v)) return 70;
+  }
+  double tAll = seconds(t0);
+  std::printf("init %.3f prepare %.3f bake %.3f\n", tInit, tPrep, tAll - tInit - tPrep);
+  return 0;
+}
+
+// Runs this program as `--bake-child` with POCL_CACHE_DIR = cacheDir; returns its wall time and
+// fills `detail` with its report line.
+double timeChild(const std::string& cacheDir, const std::string& device, bool all, int buildThreads,
+                 std::string* detail) {
+  int fds[2];
+  if (pipe(fds) != 0) throw Error(kExitSoftware, "pipe failed");
+  auto t0 = std::chrono::steady_clock::now();
+  pid_t pid = fork();
+  if (pid == 0) {
+    dup2(fds[1], 1);
+    close(fds[0]);
+    setenv("POCL_CACHE_DIR", cacheDir.c_str(), 1);
+    std::string threads = std::to_string(buildThreads);
+    std::vector<const char*> args = {"brdfbake-bench", "--bake-child", all ? "all" : "default", "--build-threads",
+                                     threads.c_str()};
+    if (!device.empty()) {
+      args.push_back("--device");
+      args.push_back(device.c_str());
+    }
+    args.push_back(nullptr);
+    execv("/proc/self/exe", const_cast<char* const*>(args.data()));
+    _exit(127);
+  }
+  close(fds[1]);
+  std::string out;
+  char buf[256];
+  for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) > 0;) out.append(buf, static_cast<size_t>(n));
+  close(fds[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  double t = seconds(t0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw Error(kExitSoftware, "--bake-child failed (status " + std::to_string(status) + ")");
+  while (!out.empty() && out.back() == '\n') out.pop_back();
+  *detail = out;
+  return t;
+}
+
+// Best of `repeat` of f().
+template <class F>
+double best(int repeat, F f) {
+  double b = 1e30;
+  for (int r = 0; r < repeat; ++r) {
+    auto t0 = std::chrono::steady_clock::now();
+    f();
+    b = std::min(b, seconds(t0));
+  }
+  return b;
+}
+
+// albedo-avg against albedo (ggx + smith-correlated, size 32), best of `repeat`, interleaved.
+void avgVsAlbedo(KernelRunner& runner, int repeat, double* tAvg, double* tAlb) {
+  runner.prepareAll({{TableKind::Albedo, 0, 10}, {TableKind::AlbedoAvg, 0, 10}});
+  *tAvg = *tAlb = 1e30;
+  for (int r = 0; r < repeat; ++r) {
+    *tAvg = std::min(*tAvg, best(1, [&] { runner.albedoAvg(0, 10, 32, false); }));
+    *tAlb = std::min(*tAlb, best(1, [&] { runner.hemisphere(0, 10, 32, 32, false); }));
+  }
+}
+
+int coldStart(const std::string& device, int samples, int repeat, int buildThreads, bool skipAll) {
+  // the baseline, in this process
+  double tm = best(repeat, [&] { karisSplitSumMC(128, samples, 2); });
+  char tmpl[] = "/tmp/brdfbake-bench-cacheXXXXXX";
+  std::printf("build + bake in a child process (brdfbake-bench --bake-child), POCL_CACHE_DIR fresh (cold) "
+              "then reused (warm); build threads: %s\n",
+              buildThreads > 0 ? std::to_string(buildThreads).c_str() : "all cores");
+  std::printf("baseline: Karis MC %d spp split-sum 128x128 (C++, 2 threads) %.4f s\n", samples, tm);
+  std::printf("%-34s %10s %10s   %s\n", "what", "seconds", "/ MC", "child: seconds in init, prepare (builds), bake");
+  for (bool all : {false, true}) {
+    if (all && skipAll) break;
+    if (!mkdtemp(tmpl)) throw Error(kExitCantCreat, "cannot create a temporary cache directory");
+    std::string dir = tmpl, detail;
+    for (const char* phase : {"cold", "warm"}) {
+      double t = timeChild(dir, device, all, buildThreads, &detail);
+      std::string name = std::string(all ? "all pairs (44 x 3 + 4 tables) " : "default set (4 tables) ") + phase;
+      std::printf("%-34s %10.3f %10.2f   %s\n", name.c_str(), t, t / tm, detail.c_str());
+    }
+    std::string rm = "rm -rf '" + dir + "'";
+    if (std::system(rm.c_str()) != 0) std::fprintf(stderr, "could not remove %s\n", dir.c_str());
+    std::snprintf(tmpl, sizeof tmpl, "%s", "/tmp/brdfbake-bench-cacheXXXXXX");
+  }
+  DeviceEntry dev = selectDevice(device);
+  KernelRunner runner(dev.device);
+  double tAvg, tAlb;
+  avgVsAlbedo(runner, std::max(repeat, 5), &tAvg, &tAlb);
+  std::printf("%-34s %10.4f %10.3f\n", "albedo-avg 32 (warm)", tAvg, tAvg / tm);
+  std::printf("%-34s %10.4f %10.3f\n", "albedo 32x32 (warm)", tAlb, tAlb / tm);
+  std::printf("time ratio albedo-avg/albedo: %.2f\n", tAvg / tAlb);
+  return 0;
+}
+
+// Every pair's albedo-avg (32 texel centres, and the node grid r = 0, 1/2, 1) against the reference.
+int albedoAvgCheck(KernelRunner& runner, int stride, int repeat) {
+  double tAvg, tAlb;
+  avgVsAlbedo(runner, std::max(repeat, 5), &tAvg, &tAlb);
+  std::printf("ggx + smith-correlated, size 32: albedo-avg %.4f s, albedo 32x32 %.4f s, ratio %.2f\n", tAvg, tAlb,
+              tAvg / tAlb);
+  const double allowance = 1e-6;  // host/bake: float arithmetic on the device
+  const int n = 32;
+  std::vector<int> rows;
+  for (int j = 0; j < n; ++j)
+    if (j % stride == 0 || j == 1 || j == 2 || j == n - 1) rows.push_back(j);
+  std::printf("albedo-avg, every pair: bound over all %d texel centres; errors at r =", n);
+  for (int j : rows) std::printf(" %d/64", 2 * j + 1);
+  std::printf(" and the node grid r = 0, 1/2, 1\n");
+  std::printf("%-12s %-20s %12s %12s %10s\n", "ndf", "gaf", "max error", "max bound", "over bound");
+  double all = 0, allBound = 0;
+  int over = 0;
+  for (int ndf = 0; ndf < static_cast<int>(ndfNames().size()); ++ndf)
+    for (int gaf = 0; gaf < static_cast<int>(gafNames().size()); ++gaf) {
+      KernelTable t = runner.albedoAvg(ndf, gaf, n, false), tn = runner.albedoAvg(ndf, gaf, 3, true);
+      struct Point {
+        double r, value, bound;
+      };
+      std::vector<Point> pts;
+      for (int j : rows) pts.push_back({(j + 0.5) / n, t.planes[0][j], t.err[j]});
+      for (int j = 0; j < 3; ++j) pts.push_back({j / 2.0, tn.planes[0][j], tn.err[j]});
+      std::vector<double> err(pts.size());
+      onTwoThreads(pts.size(), [&](size_t k) { err[k] = rel(pts[k].value, reference::albedoAvg(ndf, gaf, pts[k].r)); });
+      double worst = 0, bound = 0;
+      int bad = 0;
+      for (float b : t.err) bound = std::max(bound, static_cast<double>(b));
+      for (size_t k = 0; k < pts.size(); ++k) {
+        worst = std::max(worst, err[k]);
+        bound = std::max(bound, pts[k].bound);
+        if (err[k] > pts[k].bound + allowance) ++bad;
+      }
+      all = std::max(all, worst);
+      allBound = std::max(allBound, bound);
+      over += bad;
+      std::printf("%-12s %-20s %12.2e %12.2e %10d\n", ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), worst, bound,
+                  bad);
+      std::fflush(stdout);
+    }
+  std::printf("all pairs: largest error %.2e, largest kernel bound %.2e (+1e-6 allowance + storage in the file), "
+              "%d values over their bound\n", all, allBound, over);
+  return over == 0 && allBound + allowance + 1e-7 <= 1e-5 ? 0 : 1;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
   int n = 128, samples = 1024, stride = 1, repeat = 3;
   std::string device;
-  bool timesOnly = false, everyPair = false;
+  bool timesOnly = false, everyPair = false, avgCheck = false, cold = false, skipAll = false, strideSet = false;
+  int buildThreads = 0;
+  std::string child;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     auto next = [&]() -> std::string {
@@ -103,19 +316,27 @@ int main(int argc, char** argv) {
     };
     if (a == "--size") n = std::atoi(next().c_str());
     else if (a == "--samples") samples = std::atoi(next().c_str());
-    else if (a == "--stride") stride = std::atoi(next().c_str());
+    else if (a == "--stride") { stride = std::atoi(next().c_str()); strideSet = true; }
     else if (a == "--repeat") repeat = std::atoi(next().c_str());
     else if (a == "--device") device = next();
     else if (a == "--times-only") timesOnly = true;
     else if (a == "--all-pairs") everyPair = true;
+    else if (a == "--albedo-avg") avgCheck = true;
+    else if (a == "--cold-start") cold = true;
+    else if (a == "--skip-all") skipAll = true;
+    else if (a == "--build-threads") buildThreads = std::atoi(next().c_str());
+    else if (a == "--bake-child") child = next();
     else { std::fprintf(stderr, "unknown option %s\n", a.c_str()); return 64; }
   }
   if (n < 1 || samples < 1 || stride < 1 || repeat < 1) { std::fprintf(stderr, "arguments must be >= 1\n"); return 64; }
   const int ndf = 0, gaf = 10;  // ggx + smith-correlated
   try {
+    if (!child.empty()) return bakeChild(device, child == "all", buildThreads);
+    if (cold) return coldStart(device, samples, repeat, buildThreads, skipAll);
     DeviceEntry dev = selectDevice(device);
     KernelRunner runner(dev.device);
     if (everyPair) return allPairs(runner, n, stride);
+    if (avgCheck) return albedoAvgCheck(runner, strideSet ? stride : 8, repeat);
     runner.hemisphere(ndf, gaf, 1, 1, false);  // builds the program: not part of the timing
 
     double tq = 1e30, tm = 1e30;

@@ -1,11 +1,26 @@
-// OpenCL jobs: builds the per-pair specialised program (prelude + embedded sources) once and runs
-// the bake kernels, one texel per work-item.
+// OpenCL jobs: builds the per-pair specialised programs (prelude + embedded sources) and runs the
+// bake kernels, one texel (or quadrature node) per work-item.
+//
+// Cold start. Building a program and, on PoCL, generating each kernel's work-group function at its
+// first enqueue take most of a cold bake (tenths of a second each, per pair). So:
+//  - prepareAll() builds every program a bake needs at once, on up to hardware_concurrency threads.
+//    PoCL serialises builds within one cl_context (one LLVM context and its lock), not across
+//    contexts, so on a CPU device each thread builds into its own context and the tables of a
+//    program then run in the context that built it; other devices share one context.
+//  - On a CPU device every launch of a kernel uses one fixed local size, and prepare() enqueues
+//    each kernel once, empty, so that PoCL generates its one work-group function then (in
+//    parallel) and never again for another table size or shape.
+//  - k_p depends on the NDF alone: it runs in any prepared program of that NDF (its code is the
+//    same in all of them), so a bake builds no program for it alone.
 #pragma once
 #include <CL/opencl.hpp>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "common/models.h"
 
 namespace brdfbake {
 
@@ -21,25 +36,60 @@ struct KernelTable {
 class KernelRunner {
  public:
   explicit KernelRunner(const cl::Device& device);
+  ~KernelRunner();
 
-  // Builds the pair's program now (kernel compile time is then kept out of the timed runs).
-  void prepare(int ndf, int gaf) { program(ndf, gaf); }
+  // What one table needs compiled (kp: gaf is ignored).
+  struct TableNeed {
+    TableKind kind;
+    int ndf, gaf;
+  };
+
+  // Builds the pair's program now (its kernels compile at their first use), unless prepareAll()
+  // has run: then it does nothing (what the plan did not name is built at its first use).
+  void prepare(int ndf, int gaf);
+  // Compiles what one table needs (for kp: a program of that NDF, the pair's if none is built).
+  void prepare(TableKind kind, int ndf, int gaf);
+  // Builds and compiles what all the given tables need, concurrently (see above). Call it once,
+  // before the first table; later prepare() calls for the same tables are no-ops.
+  void prepareAll(const std::vector<TableNeed>& tables);
+  // Every table of each pair (and k_p of each pair's NDF).
+  void prepareAll(const std::vector<std::pair<int, int>>& pairs);
 
   // A, B, E over (mu, r), nx x ny.
   KernelTable hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid);
-  // E_avg over r.
+  // E_avg over r: E at the 31 nodes of kernels/integrate/hemisphere.h's rule for every r on the
+  // device (one work-item per node), the weighted sums and bounds here in double.
   KernelTable albedoAvg(int ndf, int gaf, int n, bool nodeGrid);
   // k_p over r.
   KernelTable kp(int ndf, int n, bool nodeGrid);
 
+  // Threads prepareAll uses (default: hardware_concurrency; 1 = in order on this thread).
+  void setBuildThreads(int n) { buildThreads_ = n; }
+
  private:
-  cl::Program& program(int ndf, int gaf);
-  KernelTable run1D(const char* kernel, int ndf, int gaf, int n, bool nodeGrid);
+  struct Slot;      // a context and its queue
+  struct Compiled;  // a built program, the slot it lives in, the kernels compiled so far
+  struct Work {     // one program to build and the kernels to compile in it
+    int ndf, gaf;
+    std::vector<std::string> kernels;
+  };
+
+  Compiled& compiled(int ndf, int gaf, const char* kernel);
+  Compiled* find(int ndf, int gaf, const char* kernel = nullptr);
+  Compiled* kpProgram(int ndf);
+  void build(Slot& slot, int slotIndex, const Work& w, Compiled* done);
+  void buildHere(int ndf, int gaf);
+  void compileKernel(Compiled& c, const std::string& kernel);
+  std::vector<Work> plan(const std::vector<TableNeed>& tables) const;
+  void run(Compiled& c, cl::Kernel& k, size_t gx, size_t gy);
 
   cl::Device device_;
-  cl::Context context_;
-  cl::CommandQueue queue_;
-  std::map<std::pair<int, int>, cl::Program> programs_;
+  bool cpu_ = false;
+  bool planned_ = false;  // prepareAll() has run
+  int buildThreads_ = 0;
+  std::vector<std::unique_ptr<Slot>> slots_;  // [0]: the main context
+  // per pair: its program, in one context, or in several with different kernels compiled
+  std::map<std::pair<int, int>, std::vector<std::unique_ptr<Compiled>>> programs_;
 };
 
 }  // namespace brdfbake
