@@ -49,7 +49,8 @@ std::string kernelSource(int ndf, int gaf) {
   src += "#define BRDF_LANE_PASS 1\n#undef real\n#define real lane_t\n";
   for (const char* f : pointwise) append(src, f);
   src += "#undef BRDF_LANE_PASS\n#undef real\n#define real float\n";
-  for (const char* f : {"kernels/integrate/quadrature.h", "kernels/integrate/hemisphere.h", "kernels/bake.cl"})
+  for (const char* f : {"kernels/integrate/quadrature.h", "kernels/integrate/hemisphere.h",
+                        "kernels/integrate/albedo_avg.h", "kernels/bake.cl"})
     append(src, f);
   return src;
 }
@@ -348,7 +349,7 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid) {
   k.setArg(5, nodeGrid ? 1 : 0);
   run(c, k, m, n);
   std::vector<float> ev = readBack(s.queue, e, count), errv = readBack(s.queue, err, count);
-  // The rule (kernels/integrate/hemisphere.h) in double: weights from the double tables, mu as
+  // The rule (kernels/integrate/albedo_avg.h) in double: weights from the double tables, mu as
   // the device evaluated it (the float node).
   KernelTable t;
   t.width = n;

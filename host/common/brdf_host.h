@@ -15,6 +15,7 @@ typedef double real;
 #include "integrate/integrand.h"
 #include "integrate/quadrature.h"
 #include "integrate/hemisphere.h"
+#include "integrate/albedo_avg.h"
 }  // namespace brdf64
 
 namespace brdf32 {
@@ -26,4 +27,5 @@ typedef float real;
 #include "integrate/integrand.h"
 #include "integrate/quadrature.h"
 #include "integrate/hemisphere.h"
+#include "integrate/albedo_avg.h"
 }  // namespace brdf32
