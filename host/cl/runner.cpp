@@ -334,6 +334,18 @@ KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool node
   return t;
 }
 
+namespace {
+// The arguments the kernels over r share: (values, bounds, n, r range [0, 1], grid).
+void setRArgs(cl::Kernel& k, const cl::Buffer& values, const cl::Buffer& bounds, int n, bool nodeGrid) {
+  k.setArg(0, values);
+  k.setArg(1, bounds);
+  k.setArg(2, n);
+  k.setArg(3, 0.0f);
+  k.setArg(4, 1.0f);
+  k.setArg(5, nodeGrid ? 1 : 0);
+}
+}  // namespace
+
 KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid) {
   Compiled& c = compiled(ndf, gaf, kAlbedoNodes);
   Slot& s = *slots_[c.slot];
@@ -341,12 +353,7 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid) {
   size_t count = static_cast<size_t>(m) * n;
   cl::Buffer e = outBuffer(s.context, count), err = outBuffer(s.context, count);
   cl::Kernel k(c.program, kAlbedoNodes);
-  k.setArg(0, e);
-  k.setArg(1, err);
-  k.setArg(2, n);
-  k.setArg(3, 0.0f);
-  k.setArg(4, 1.0f);
-  k.setArg(5, nodeGrid ? 1 : 0);
+  setRArgs(k, e, err, n, nodeGrid);
   run(c, k, m, n);
   std::vector<float> ev = readBack(s.queue, e, count), errv = readBack(s.queue, err, count);
   // The rule (kernels/integrate/albedo_avg.h) in double: weights from the double tables, mu as
@@ -379,12 +386,7 @@ KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid) {
   Slot& s = *slots_[c.slot];
   cl::Buffer v = outBuffer(s.context, n), err = outBuffer(s.context, n);
   cl::Kernel k(c.program, kKp);
-  k.setArg(0, v);
-  k.setArg(1, err);
-  k.setArg(2, n);
-  k.setArg(3, 0.0f);
-  k.setArg(4, 1.0f);
-  k.setArg(5, nodeGrid ? 1 : 0);
+  setRArgs(k, v, err, n, nodeGrid);
   run(c, k, n, 0);
   KernelTable t;
   t.width = n;
