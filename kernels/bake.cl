@@ -19,16 +19,19 @@ static inline float grid_coord(int i, int n, float lo, float hi, int node_grid) 
   return lo + (hi - lo) * t;
 }
 
-/* Split-sum moments and albedo over (mu, r): A, B, E = A + B and a bound on the texel's largest
- * error relative to max(1, |value|). */
+/* The albedo's two moments over (mu, r), split by the weight w(o.h) that `moments` names (ndf.h
+ * BrdfParams): A = int H (1 - w), B = int H w, E = A + B (the F = 1 albedo), and a bound on the
+ * texel's largest error relative to max(1, |value|). HEMI_SPLIT gives the split-sum pair;
+ * HEMI_FRESNEL with a Fresnel model and its parameters (fr_x, fr_y) gives that model's albedo in B. */
 kernel void bake_hemisphere(global float* out_a, global float* out_b, global float* out_e,
                             global float* out_err, int nx, int ny, float mu_lo, float mu_hi,
-                            float r_lo, float r_hi, int node_grid) {
+                            float r_lo, float r_hi, int node_grid, int moments, int fresnel,
+                            float fr_x, float fr_y) {
   int i = get_global_id(0), j = get_global_id(1);
   if (i >= nx || j >= ny) return;
   float mu = grid_coord(i, nx, mu_lo, mu_hi, node_grid);
   float r = grid_coord(j, ny, r_lo, r_hi, node_grid);
-  HemiResult h = hemisphere_texel(BRDF_NDF, BRDF_GAF, mu, r, BAKE_TARGET);
+  HemiResult h = hemisphere_texel_weighted(BRDF_NDF, BRDF_GAF, mu, r, BAKE_TARGET, moments, fresnel, fr_x, fr_y);
   int t = j * nx + i;
   out_a[t] = (float)h.a;
   out_b[t] = (float)h.b;
@@ -36,20 +39,26 @@ kernel void bake_hemisphere(global float* out_a, global float* out_b, global flo
   out_err[t] = hemi_rel_error(h);
 }
 
-/* Average albedo E_avg(r), first step: E at the rule's nodes, E(AVG_MU[i], r_j) and its bound
+/* Average albedo E_avg(r), first step: E (or a Fresnel model's albedo, see bake_hemisphere) at the rule's nodes, E(AVG_MU[i], r_j) and its bound
  * (absolute), one node per work-item, out[j * AVG_NODES + i]. The host forms each r's weighted
  * sums and bound (kernels/integrate/hemisphere.h, AVG_MU). A 2D range (AVG_NODES x n) fills a
  * device as the albedo table does, where one work-item per r ran its ~100 nodes in series. */
 kernel void bake_albedo_nodes(global float* out_e, global float* out_err, int n, float r_lo, float r_hi,
-                              int node_grid) {
+                              int node_grid, int moments, int fresnel, float fr_x, float fr_y) {
   int i = get_global_id(0), j = get_global_id(1);
   if (i >= AVG_NODES || j >= n) return;
   float r = grid_coord(j, n, r_lo, r_hi, node_grid);
   BrdfParams p = brdf_params(BRDF_NDF, BRDF_GAF, r);
+  p.moments = moments;
+  p.fresnel = fresnel;
+  p.fr_x = fr_x;
+  p.fr_y = fr_y;
   HemiResult h = hemisphere_moments_to(BRDF_NDF, BRDF_GAF, p, AVG_MU[i], avg_node_target(i));
   int t = j * AVG_NODES + i;
-  out_e[t] = (float)(h.a + h.b);
-  out_err[t] = (float)(h.err_a + h.err_b);
+  /* E (F = 1) for the split, else the weighted moment B (a Fresnel model's albedo) */
+  int split = moments == HEMI_SPLIT;
+  out_e[t] = (float)(split ? h.a + h.b : h.b);
+  out_err[t] = (float)(split ? h.err_a + h.err_b : h.err_b);
 }
 
 /* k_p of the NDF's raw shape over r. */

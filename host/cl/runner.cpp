@@ -81,6 +81,13 @@ KernelRunner::KernelRunner(const cl::Device& device) : device_(device) {
 KernelRunner::~KernelRunner() = default;
 
 namespace {
+// The weight arguments (moments, fresnel, fr_x, fr_y) from index `first` on.
+void setWeightArgs(cl::Kernel& k, int first, const HemiWeight& w) {
+  k.setArg(first, w.moments);
+  k.setArg(first + 1, w.fresnel);
+  k.setArg(first + 2, w.x);
+  k.setArg(first + 3, w.y);
+}
 // A kernel's arguments for a launch that does nothing (n = 0): PoCL compiles it at the first
 // enqueue, so an empty one moves that compile into prepare.
 void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) {
@@ -90,6 +97,7 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
     k.setArg(5, 0);
     for (int i = 6; i < 10; ++i) k.setArg(i, 0.0f);
     k.setArg(10, 0);
+    setWeightArgs(k, 11, {});
   } else {
     k.setArg(0, dummy);
     k.setArg(1, dummy);
@@ -97,6 +105,7 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
     k.setArg(3, 0.0f);
     k.setArg(4, 0.0f);
     k.setArg(5, 0);
+    if (name == kAlbedoNodes) setWeightArgs(k, 6, {});
   }
 }
 }  // namespace
@@ -307,7 +316,7 @@ void KernelRunner::run(Compiled& c, cl::Kernel& k, size_t gx, size_t gy) {
   }
 }
 
-KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid) {
+KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid, const HemiWeight& w) {
   Compiled& c = compiled(ndf, gaf, kHemisphere);
   Slot& s = *slots_[c.slot];
   size_t n = static_cast<size_t>(nx) * ny;
@@ -325,6 +334,7 @@ KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool node
   k.setArg(8, 0.0f);
   k.setArg(9, 1.0f);
   k.setArg(10, nodeGrid ? 1 : 0);
+  setWeightArgs(k, 11, w);
   run(c, k, nx, ny);
   KernelTable t;
   t.width = nx;
@@ -346,7 +356,7 @@ void setRArgs(cl::Kernel& k, const cl::Buffer& values, const cl::Buffer& bounds,
 }
 }  // namespace
 
-KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid) {
+KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w) {
   Compiled& c = compiled(ndf, gaf, kAlbedoNodes);
   Slot& s = *slots_[c.slot];
   const int m = AVG_NODES;
@@ -354,6 +364,7 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid) {
   cl::Buffer e = outBuffer(s.context, count), err = outBuffer(s.context, count);
   cl::Kernel k(c.program, kAlbedoNodes);
   setRArgs(k, e, err, n, nodeGrid);
+  setWeightArgs(k, 6, w);
   run(c, k, m, n);
   std::vector<float> ev = readBack(s.queue, e, count), errv = readBack(s.queue, err, count);
   // The rule (kernels/integrate/albedo_avg.h) in double: weights from the double tables, mu as

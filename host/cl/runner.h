@@ -27,6 +27,14 @@ namespace brdfbake {
 // The full device source for one NDF/GAF pair: a #define prelude, then the embedded files.
 std::string kernelSource(int ndf, int gaf);
 
+// What the albedo's two moments are (kernels/brdf/ndf.h BrdfParams): the split-sum pair by
+// default; HEMI_FRESNEL with a Fresnel model puts that model's albedo in the second.
+struct HemiWeight {
+  int moments = 0;  // HEMI_SPLIT, HEMI_FRESNEL, HEMI_F82C
+  int fresnel = 0;  // FRESNEL_*
+  float x = 0, y = 0;
+};
+
 struct KernelTable {
   int width = 0, height = 0;
   std::vector<std::vector<float>> planes;  // per kernel output, [y * width + x]
@@ -56,10 +64,11 @@ class KernelRunner {
   void prepareAll(const std::vector<std::pair<int, int>>& pairs);
 
   // A, B, E over (mu, r), nx x ny.
-  KernelTable hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid);
+  KernelTable hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid, const HemiWeight& w = {});
   // E_avg over r: E at the 31 nodes of kernels/integrate/hemisphere.h's rule for every r on the
   // device (one work-item per node), the weighted sums and bounds here in double.
-  KernelTable albedoAvg(int ndf, int gaf, int n, bool nodeGrid);
+  // With a Fresnel weight, the average of that model's albedo.
+  KernelTable albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w = {});
   // k_p over r.
   KernelTable kp(int ndf, int n, bool nodeGrid);
 

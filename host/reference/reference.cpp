@@ -5,6 +5,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
+#include <complex>
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -90,7 +91,14 @@ struct Model {
   double r, alpha;
   double k;                   // Schlick's k
   brdf64::BrdfParams dp;      // for D only (alpha, and 1/k_p of the gaussian)
+  double oc = -1;             // o.h where the weight has a kink (Fresnel's critical angle), or -1
 };
+
+// Where the weight has a kink: total internal reflection from o.h < sqrt(1 - eta^2), eta < 1.
+double weightKink(const Weight& w) {
+  bool tir = w.kind == Weight::Fresnel && (w.f.model == FRESNEL_DIELECTRIC || w.f.model == FRESNEL_SCHLICK_TIR);
+  return tir && w.f.x < 1 ? std::sqrt(1 - w.f.x * w.f.x) : -1;
+}
 
 // Schlick's k: Schlick 1994 with m = alpha (k = alpha sqrt(2/pi)); Karis 2013: alpha/2 for image
 // based lighting, (r + 1)^2/8 for analytic lights.
@@ -149,18 +157,17 @@ double gafOf(const Model& m, const dvec3& i, const dvec3& o, const dvec3& h) {
 // nowhere else). The integrators split there; the locations are found by root finding.
 int branchDifferences(const Model& m, const dvec3& i, const dvec3& o, const dvec3& h, double* d) {
   double ni = i.z, no = o.z, nh = h.z, oh = glm::dot(o, h);
-  if (m.gaf == GAF_NEUMANN) {
-    d[0] = ni - no;
-    return 1;
-  }
+  int n = 0;
+  if (m.gaf == GAF_NEUMANN) d[n++] = ni - no;
   if (m.gaf == GAF_COOK_TORRANCE) {
-    d[0] = 2 * nh * no - oh;
-    d[1] = 2 * nh * ni - oh;
-    d[2] = ni - no;
-    return 3;
+    d[n++] = 2 * nh * no - oh;
+    d[n++] = 2 * nh * ni - oh;
+    d[n++] = ni - no;
   }
-  return 0;
+  if (m.oc > 0) d[n++] = oh - m.oc;  // the weight's kink (Fresnel)
+  return n;
 }
+bool hasBranches(const Model& m) { return m.gaf == GAF_NEUMANN || m.gaf == GAF_COOK_TORRANCE || m.oc > 0; }
 
 // The half vector at (theta, phi), the view o = (s, 0, mu) and the mirror direction i.
 struct Geometry {
@@ -178,12 +185,12 @@ Geometry geometry(double mu, double s, double th, double phi) {
 // and refined by TOMS 748 where a difference changes sign between samples.
 template <class At>
 void branchRoots(const Model& m, At at, const std::vector<double>& xs, std::vector<double>& roots) {
-  if (m.gaf != GAF_NEUMANN && m.gaf != GAF_COOK_TORRANCE) return;
+  if (!hasBranches(m)) return;
   auto diffs = [&](double x, double* d) {
     Geometry g = at(x);
     return branchDifferences(m, g.i, g.o, g.h, d);
   };
-  double prev[3], cur[3];
+  double prev[4], cur[4];
   int nd = diffs(xs[0], prev);
   for (size_t j = 1; j < xs.size(); ++j) {
     diffs(xs[j], cur);
@@ -191,7 +198,7 @@ void branchRoots(const Model& m, At at, const std::vector<double>& xs, std::vect
       if ((prev[k] < 0) != (cur[k] < 0) && prev[k] != 0 && cur[k] != 0) {
         boost::uintmax_t iters = 200;
         auto f = [&](double x) {
-          double d[3];
+          double d[4];
           diffs(x, d);
           return d[k];
         };
@@ -210,8 +217,9 @@ double cosPhiLimit(double mu, double s, double th) {
   return -mu * std::cos(2 * th) / (s * std::sin(2 * th));
 }
 
-Moments albedoInside(int ndf, int gaf, double r, double mu) {
+Moments albedoInside(int ndf, int gaf, double r, double mu, const Weight& wt) {
   Model m = model(ndf, gaf, r);
+  m.oc = weightKink(wt);
   double s = std::sqrt((1 - mu) * (1 + mu));
   // E = int sin(th) dth 2 int_0^phimax dphi D (G/no) F (o.h), the h-space form of the albedo
   // (dw_i = 4 (o.h) dw_h, phi folded). E and B (F = (1 - o.h)^5) are integrated together.
@@ -228,7 +236,7 @@ Moments albedoInside(int ndf, int gaf, double r, double mu) {
       double oh = glm::dot(g.o, g.h);
       double G = gafOf(m, g.i, g.o, g.h);
       double H = G / mu * oh;
-      return Pair{H, H * std::pow(1 - oh, 5)};
+      return Pair{H, H * weightAt(wt, oh)};
     };
     double w = 2 * sn * D;
     if (phimax <= 0 || !(w > 0)) return Pair{};
@@ -312,7 +320,7 @@ double kp(int ndf, double r) {
 //   ashikhmin-premoze: mu^2/(2 mu - mu^2) = mu/(2 - mu); Schlick with k -> 0: 1, and
 //   schlick-ggx-direct, whose k = (r + 1)^2/8 -> 1/8: (mu/(mu (1 - k) + k))^2;
 //   smith, smith-correlated: Lambda -> 0 for every direction above the horizon, so 1.
-Moments mirrorAlbedo(int gaf, double mu) {
+Moments mirrorAlbedo(int gaf, double mu, const Weight& w) {
   double e = 1;
   switch (gaf) {
     case GAF_IMPLICIT: e = mu * mu; break;
@@ -327,29 +335,80 @@ Moments mirrorAlbedo(int gaf, double mu) {
   }
   if (mu <= 0 && gaf != GAF_NONE) e = 0;
   Moments m;
-  m.b = e * std::pow(1 - mu, 5);
+  m.b = e * weightAt(w, mu);  // o.h = mu at the mirror configuration
   m.a = e - m.b;
   return m;
 }
 
-Moments albedo(int ndf, int gaf, double r, double mu) {
+Moments albedo(int ndf, int gaf, double r, double mu, const Weight& w) {
   if (r <= 0 && mu <= 0) {
     // the corner: the limit along the mu = 0 edge, from inside (alpha ~ 1e-9, mu << alpha)
     const double rc = 3e-5;
-    return albedoInside(ndf, gaf, rc, 1e-9 * rc * rc);
+    return albedoInside(ndf, gaf, rc, 1e-9 * rc * rc, w);
   }
-  if (r <= 0) return mirrorAlbedo(gaf, mu);
-  if (mu <= 0) return albedoInside(ndf, gaf, r, 1e-9 * std::min(1.0, r * r));
-  return albedoInside(ndf, gaf, r, mu);
+  if (r <= 0) return mirrorAlbedo(gaf, mu, w);
+  if (mu <= 0) return albedoInside(ndf, gaf, r, 1e-9 * std::min(1.0, r * r), w);
+  return albedoInside(ndf, gaf, r, mu, w);
 }
 
-double albedoAvg(int ndf, int gaf, double r) {
+double albedoAvg(int ndf, int gaf, double r, const Weight& w) {
+  auto value = [&](const Moments& m) { return w.kind == Weight::Split ? m.e() : m.b; };
+  double oc = weightKink(w);
   if (r <= 0) {
-    auto f = [&](double mu) { return 2 * mu * mirrorAlbedo(gaf, mu).e(); };
-    return integrate(f, 0, 1, {});
+    auto f = [&](double mu) { return 2 * mu * value(mirrorAlbedo(gaf, mu, w)); };
+    return integrate(f, 0, 1, oc > 0 ? std::vector<double>{oc} : std::vector<double>{});
   }
-  auto f = [&](double mu) { return 2 * mu * albedoInside(ndf, gaf, r, mu).e(); };
+  auto f = [&](double mu) { return 2 * mu * value(albedoInside(ndf, gaf, r, mu, w)); };
   return integrate(f, 0, 1, lobeBreaks(r * r, 1));
+}
+
+// Fresnel from the complex amplitudes (Born and Wolf 1999, sec. 1.5 and 14.2): with the relative
+// index n = eta + i k and cos_t = sqrt(1 - (1 - c^2)/n^2) (principal root: the transmitted wave
+// decays), r_s = (c - n cos_t)/(c + n cos_t), r_p = (n c - cos_t)/(n c + cos_t),
+// F = (|r_s|^2 + |r_p|^2)/2. Total internal reflection (real eta < 1) comes out as |r| = 1.
+double complexFresnel(double eta, double k, double c) {
+  using C = std::complex<double>;
+  C n(eta, k);
+  C ct = std::sqrt(C(1.0) - C((1 - c) * (1 + c)) / (n * n));
+  C rs = (c - n * ct) / (c + n * ct), rp = (n * c - ct) / (n * c + ct);
+  return 0.5 * (std::norm(rs) + std::norm(rp));
+}
+
+double fresnel(const FresnelSpec& f, double c) {
+  c = std::min(std::fabs(c), 1.0);
+  auto schlick = [](double f0, double x) { return f0 + (1 - f0) * std::pow(1 - x, 5); };  // Schlick 1994
+  switch (f.model) {
+    case FRESNEL_SCHLICK: return schlick(f.x, c);
+    case FRESNEL_DIELECTRIC: return complexFresnel(f.x, 0, c);
+    case FRESNEL_CONDUCTOR: return complexFresnel(f.x, f.y, c);
+    case FRESNEL_SCHLICK_TIR: {  // Burley 2015: Schlick on the transmitted cosine where eta < 1
+      double f0 = std::pow((f.x - 1) / (f.x + 1), 2);
+      if (f.x >= 1) return schlick(f0, c);
+      double ct2 = 1 - (1 - c * c) / (f.x * f.x);
+      return ct2 < 0 ? 1.0 : schlick(f0, std::sqrt(ct2));
+    }
+    case FRESNEL_F82_TINT: {  // Hoffman 2019 / OpenPBR: F(1/7) = tint * Schlick(1/7)
+      const double mb = 1.0 / 7;
+      double b = schlick(f.x, mb) * (1 - f.y) / (mb * std::pow(1 - mb, 6));
+      return schlick(f.x, c) - b * c * std::pow(1 - c, 6);
+    }
+    default: return 1.0;
+  }
+}
+
+double weightAt(const Weight& w, double c) {
+  switch (w.kind) {
+    case Weight::Fresnel: return fresnel(w.f, c);
+    case Weight::F82C: return c * std::pow(1 - c, 6);
+    default: return std::pow(1 - c, 5);
+  }
+}
+
+double fresnelAvg(const FresnelSpec& f) {
+  Weight w{Weight::Fresnel, f};
+  double oc = weightKink(w);
+  auto g = [&](double mu) { return 2 * mu * fresnel(f, mu); };
+  return integrate(g, 0, 1, oc > 0 ? std::vector<double>{oc} : std::vector<double>{}, 40, 1e-15, 1e-14);
 }
 
 double weakFurnace(int ndf, double r, double mu) {

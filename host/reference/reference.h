@@ -17,6 +17,24 @@
 
 namespace brdfbake::reference {
 
+// A Fresnel model and its parameters (kernels/brdf/fresnel.h ids; x: F0 or eta, y: k or the
+// f82-tint's tint). The reference evaluates dielectric and conductor reflectance from the complex
+// Fresnel amplitudes (std::complex), not from the kernels' real closed forms.
+struct FresnelSpec {
+  int model = 0;  // FRESNEL_ONE
+  double x = 0, y = 0;
+};
+double fresnel(const FresnelSpec& f, double c);
+// F_avg = 2 int_0^1 F(mu) mu dmu, adaptively (split at the critical angle where eta < 1).
+double fresnelAvg(const FresnelSpec& f);
+
+// The weight w(o.h) that splits the albedo into Moments: b = int H w, a = int H (1 - w).
+struct Weight {
+  enum Kind { Split, Fresnel, F82C } kind = Split;  // (1 - o.h)^5, F(o.h), o.h (1 - o.h)^6
+  FresnelSpec f;
+};
+double weightAt(const Weight& w, double c);
+
 struct Moments {
   double a = 0, b = 0;  // split-sum A, B; E = a + b
   double e() const { return a + b; }
@@ -25,15 +43,16 @@ struct Moments {
 // k_p of the NDF's raw shape at perceptual roughness r (alpha = r^2).
 double kp(int ndf, double r);
 // Split-sum moments and directional albedo at (mu, r), limits included as above.
-Moments albedo(int ndf, int gaf, double r, double mu);
-// Average albedo E_avg(r) = 2 int_0^1 E(mu) mu dmu.
-double albedoAvg(int ndf, int gaf, double r);
+// With a weight: b is the albedo with that Fresnel (Weight::Fresnel), a + b the F = 1 albedo.
+Moments albedo(int ndf, int gaf, double r, double mu, const Weight& w = {});
+// Average albedo E_avg(r) = 2 int_0^1 E(mu) mu dmu; with a Fresnel weight, of that albedo (b).
+double albedoAvg(int ndf, int gaf, double r, const Weight& w = {});
 // Weak white furnace: int G1(o) max(0, o.h) D(h) dw_h, which is mu for a Smith G1 matching D.
 double weakFurnace(int ndf, double r, double mu);
 
 // The mirror limit (alpha -> 0 at mu > 0): D becomes a delta at h = n, i = o mirrored, and
 // E(mu, 0) = G at that configuration (hand-derived per GAF); A and B split it by (1 - mu)^5.
-Moments mirrorAlbedo(int gaf, double mu);
+Moments mirrorAlbedo(int gaf, double mu, const Weight& w = {});
 // The GAF G(i, o, h) for directions in the frame n = (0, 0, 1), chi+ included, in double.
 // (Public so tests can compare the kernel's grazing form G/(n.o) with it away from grazing.)
 double gaf(int ndf, int gaf, double r, const double i[3], const double o[3], const double h[3]);

@@ -5,6 +5,9 @@
 #define FRESNEL_SCHLICK 1
 #define FRESNEL_DIELECTRIC 2
 #define FRESNEL_SCHLICK_TIR 3
+#define FRESNEL_CONDUCTOR 4
+#define FRESNEL_F82_TINT 5
+#define FRESNEL_COUNT 6
 #endif
 
 /* (1 - c)^5, Schlick's weight, with two multiplications instead of pow. */
@@ -15,11 +18,11 @@ BRDF_FN real fresnel_schlick_weight(real c) {
 }
 
 /* Schlick 1994: F0 + (1 - F0)(1 - c)^5 */
-BRDF_FN real fresnel_schlick(real f0, real c) { return f0 + (RC(1.0) - f0) * fresnel_schlick_weight(c); }
+BRDF_FN real fresnel_schlick(param_t f0, real c) { return f0 + (RC(1.0) - f0) * fresnel_schlick_weight(c); }
 
 /* Exact unpolarised dielectric (Cook and Torrance 1982, with MODELS.md errata):
  * g^2 = eta^2 + c^2 - 1, F = 1/2 (g-c)^2/(g+c)^2 (1 + (c(g+c) - 1)^2/(c(g-c) + 1)^2); F = 1 when g^2 < 0. */
-BRDF_FN real fresnel_dielectric(real eta, real c) {
+BRDF_FN real fresnel_dielectric(param_t eta, real c) {
   c = fabs(c);
   real g2 = eta * eta + c * c - RC(1.0);
   real g = sqrt(fmax(g2, RC(0.0)));
@@ -31,10 +34,83 @@ BRDF_FN real fresnel_dielectric(real eta, real c) {
 
 /* Schlick on the transmitted angle where eta < 1 (Burley 2015, MODELS.md errata):
  * cos^2 t = 1 - (1 - c^2)/eta^2; F = 1 when that is negative. F0 = ((eta-1)/(eta+1))^2. */
-BRDF_FN real fresnel_schlick_tir(real eta, real c) {
-  real f0 = (eta - RC(1.0)) / (eta + RC(1.0));
+BRDF_FN real fresnel_schlick_tir(param_t eta, real c) {
+  param_t f0 = (eta - RC(1.0)) / (eta + RC(1.0));
   f0 *= f0;
   real ct2 = RC(1.0) - (RC(1.0) - c * c) / (eta * eta);
   real f = fresnel_schlick(f0, eta >= RC(1.0) ? c : sqrt(fmax(ct2, RC(0.0))));
   return (eta < RC(1.0) && ct2 < RC(0.0)) ? RC(1.0) : f;
 }
+
+/* Exact unpolarised reflectance of a conductor with complex relative IOR eta + i k (Born and Wolf
+ * 1999, sec. 14.2, in the real form of e.g. Lagarde 2013): with s2 = 1 - c^2,
+ *   a^2 + b^2 = sqrt((eta^2 - k^2 - s2)^2 + 4 eta^2 k^2),  a = sqrt((a^2 + b^2 + eta^2 - k^2 - s2)/2),
+ *   Rs = (a^2 + b^2 - 2 a c + c^2)/(a^2 + b^2 + 2 a c + c^2),
+ *   Rp = Rs (c^2 (a^2 + b^2) - 2 a c s2 + s2^2)/(c^2 (a^2 + b^2) + 2 a c s2 + s2^2),  F = (Rs + Rp)/2.
+ * k = 0 gives the dielectric (eta >= 1). At c = 0, Rs = Rp = 1. */
+BRDF_FN real fresnel_conductor(param_t eta, param_t k, real c) {
+  c = fmin(fabs(c), RC(1.0));
+  real s2 = (RC(1.0) - c) * (RC(1.0) + c);
+  param_t e2 = eta * eta, k2 = k * k;
+  real t = e2 - k2 - s2;
+  real ab2 = sqrt(t * t + RC(4.0) * e2 * k2);
+  real a = sqrt(fmax(RC(0.5) * (ab2 + t), RC(0.0)));
+  real c2 = c * c, ac = RC(2.0) * a * c;
+  real rs = (ab2 - ac + c2) / (ab2 + ac + c2);
+  real u = c2 * ab2 + s2 * s2, v = ac * s2;
+  real rp = rs * (u - v) / (u + v);
+  return RC(0.5) * (rs + rp);
+}
+
+#ifndef BRDF_LANE_PASS
+/* F82-tint (Hoffman 2019, "Fresnel equations considered harmful"; Kutz et al. 2021; OpenPBR 1.1):
+ * F = F_schlick(c) - b c (1 - c)^6 with b = F_schlick(1/7) (1 - tint)/((1/7)(1 - 1/7)^6), so that
+ * F(1/7) = tint F_schlick(1/7): the reflectance near 82 degrees is the tint times Schlick's. */
+#define F82_MU_BAR RC(0.142857142857142857143)
+BRDF_FN real fresnel_f82_b(real f0, real tint) {
+  real m = RC(1.0) - F82_MU_BAR;
+  real m2 = m * m, m6 = m2 * m2 * m2;
+  real fs = f0 + (RC(1.0) - f0) * m2 * m2 * m;
+  return fs * (RC(1.0) - tint) / (F82_MU_BAR * m6);
+}
+#endif
+
+/* c (1 - c)^6: the F82 correction's shape. */
+BRDF_FN real fresnel_f82_weight(real c) {
+  real m = RC(1.0) - c;
+  real m2 = m * m;
+  return c * m2 * m2 * m2;
+}
+
+/* F82-tint with b from fresnel_f82_b. */
+BRDF_FN real fresnel_f82_tint(param_t f0, param_t b, real c) {
+  return fresnel_schlick(f0, c) - b * fresnel_f82_weight(c);
+}
+
+/* Any model by id (a uniform branch: model, x and y are the same for every lane). x: F0 (schlick,
+ * f82-tint) or eta (dielectric, schlick-tir, conductor); y: k (conductor) or b (f82-tint). */
+BRDF_FN real fresnel_F(int model, param_t x, param_t y, real c) {
+  if (model == FRESNEL_SCHLICK) return fresnel_schlick(x, c);
+  if (model == FRESNEL_DIELECTRIC) return fresnel_dielectric(x, c);
+  if (model == FRESNEL_SCHLICK_TIR) return fresnel_schlick_tir(x, c);
+  if (model == FRESNEL_CONDUCTOR) return fresnel_conductor(x, y, c);
+  if (model == FRESNEL_F82_TINT) return fresnel_f82_tint(x, y, c);
+  return RC(1.0) + RC(0.0) * c;
+}
+
+#ifndef BRDF_LANE_PASS
+/* Where F has a kink: total internal reflection sets in at o.h = sqrt(1 - eta^2) for eta < 1
+ * (dielectric, schlick-tir); the integrators split there. -1: nowhere. */
+BRDF_FN real fresnel_kink(int moments, int model, real x) {
+  int tir = moments == HEMI_FRESNEL && (model == FRESNEL_DIELECTRIC || model == FRESNEL_SCHLICK_TIR) && x < RC(1.0);
+  return tir ? sqrt((RC(1.0) - x) * (RC(1.0) + x)) : RC(-1.0);
+}
+/* The scale of o.h on which a dielectric (or schlick-tir) of eta slightly above 1 falls from 1 at
+ * grazing to its F0: sqrt(eta^2 - 1). 0 where no such layer needs resolving (eta >= 1.5, or other
+ * weights). */
+BRDF_FN real fresnel_soft_scale(int moments, int model, real x) {
+  int soft = moments == HEMI_FRESNEL && (model == FRESNEL_DIELECTRIC || model == FRESNEL_SCHLICK_TIR) && x > RC(1.0) &&
+             x < RC(1.5);
+  return soft ? sqrt((x - RC(1.0)) * (x + RC(1.0))) : RC(0.0);
+}
+#endif

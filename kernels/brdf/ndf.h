@@ -24,7 +24,17 @@ typedef struct BrdfParams {
   real alpha;  /* r^2; every NDF parameter derives from it */
   real inv_kp; /* 1/k_p of the raw shape; needed by ndf_D only for the gaussian (numeric k_p) */
   real k;      /* Schlick's k for the schlick-* GAFs */
+  /* The weight w(o.h) that splits the albedo integrand into two moments, B = int H w and
+   * A = int H (1 - w) (kernels/integrate/integrand.h): Schlick's (1 - o.h)^5 (HEMI_SPLIT, the
+   * split-sum pair), a Fresnel model (HEMI_FRESNEL: B is that Fresnel's albedo), or the F82
+   * correction's shape (HEMI_F82C). */
+  int moments;      /* HEMI_SPLIT, HEMI_FRESNEL, HEMI_F82C */
+  int fresnel;      /* FRESNEL_* for HEMI_FRESNEL */
+  real fr_x, fr_y;  /* its parameters: F0 or eta; k (conductor) or b (f82-tint) */
 } BrdfParams;
+#define HEMI_SPLIT 0
+#define HEMI_FRESNEL 1
+#define HEMI_F82C 2
 
 /* Angle of h on the (u -> v = -log(1-u)) grid, u = the NDF's CDF over theta_h. */
 typedef struct BrdfAngle {

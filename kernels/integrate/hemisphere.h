@@ -36,14 +36,34 @@ typedef struct HemiResult {
 
 /* GK15 over phi in [lo, hi]: adds the Kronrod values to ka, kb and |K - G| to ea, eb.
  * All 15 nodes in one lane vector on the device (HEMI_GK_N = 16, the last of weight 0). */
+/* sq_lo / sq_hi: an end with a square-root singularity in the integrand (Fresnel's critical
+ * angle), made smooth by phi = lo + L y^2 (hi - L (1 - y)^2; the smoothstep for both). */
 BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo,
-                         real hi, real* ka, real* kb, real* ea, real* eb) {
-  real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo);
+                         real hi, int sq_lo, int sq_hi, real* ka, real* kb, real* ea, real* eb) {
+  real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo), len = hi - lo;
   real sa = RC(0.0), sb = RC(0.0), da = RC(0.0), db = RC(0.0);
   int k = 0;
   for (; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
     lane_t fa, fb;
-    hemi_node(ndf, gaf, p, mu, s, h, sn, cos(mid + hw * lane_load(GK15_XL, k)), &fa, &fb);
+    lane_t x = lane_load(GK15_XL, k);
+    if (sq_lo || sq_hi) {
+      lane_t y = RC(0.5) * (x + RC(1.0)), phi, jac;
+      if (sq_lo && sq_hi) {
+        phi = lo + len * y * y * (RC(3.0) - RC(2.0) * y);
+        jac = RC(3.0) * y * (RC(1.0) - y); /* (dphi/dy)/(2 hw) */
+      } else if (sq_lo) {
+        phi = lo + len * y * y;
+        jac = y;
+      } else {
+        phi = hi - len * (RC(1.0) - y) * (RC(1.0) - y);
+        jac = RC(1.0) - y;
+      }
+      hemi_node(ndf, gaf, p, mu, s, h, sn, cos(phi), &fa, &fb);
+      fa *= RC(2.0) * jac;
+      fb *= RC(2.0) * jac;
+    } else {
+      hemi_node(ndf, gaf, p, mu, s, h, sn, cos(mid + hw * x), &fa, &fb);
+    }
     lane_t wk = lane_load(GK15_WKL, k), wd = lane_load(GK15_WDL, k);
     sa += lane_sum(wk * fa);
     sb += lane_sum(wk * fb);
@@ -98,8 +118,19 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   *ib = RC(0.0);
   *ea = RC(0.0);
   *eb = RC(0.0);
-  real kinks[3];
+  real kinks[4];
   int nk = gaf_kinks(gaf, mu, s, h.c, sn, kinks);
+  /* Fresnel's kink at o.h = oc (total internal reflection): cos phi = (oc - mu c)/(s sn); F has a
+   * square-root end there (panels beside it substitute) */
+  real oc = fresnel_kink(p.moments, p.fresnel, p.fr_x);
+  real fk = RC(-1.0);
+  if (oc > RC(0.0) && s * sn > RC(0.0)) {
+    real ck = (oc - mu * h.c) / (s * sn);
+    if (ck < RC(1.0) && ck > RC(-1.0)) {
+      fk = acos(ck);
+      kinks[nk++] = ck;
+    }
+  }
   if (full && nk == 0) {
     hemi_phi_trap(ndf, gaf, p, mu, s, h, sn, refine ? 2 * HEMI_TRAP_N : HEMI_TRAP_N, ia, ib, ea, eb);
     return;
@@ -118,7 +149,12 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
     }
   }
   if (!full) {
-    real layer = mu / (RC(2.0) * h.c * s * sn * fmax(sinmax, RC(1e-30)));
+    real den = s * sn * fmax(sinmax, RC(1e-30));
+    real layer = mu / (RC(2.0) * h.c * den);
+    /* Fresnel of eta slightly above 1 changes on the scale o.h ~ sqrt(eta^2 - 1), which the arc
+     * reaches near its horizon end (o.h = mu/(2c) there, 0 at mu = 0): grade from that scale too. */
+    real fs = fresnel_soft_scale(p.moments, p.fresnel, p.fr_x);
+    if (fs > RC(0.0)) layer = layer > RC(0.0) ? fmin(layer, fs / den) : fs / den;
     real grow = refine ? RC(0.5) * HEMI_PHI_GROW : HEMI_PHI_GROW;
     for (real d = layer; d < RC(0.5) * phimax && nb < 16; d *= grow) br[nb++] = phimax - d;
   }
@@ -127,12 +163,13 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   for (int k = 0; k <= nb; ++k) {
     real hi = k < nb ? br[k] : phimax;
     if (hi > lo) {
+      int sl = lo == fk, sh = hi == fk;
       if (refine) {
         real m = RC(0.5) * (lo + hi);
-        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, lo, m, ia, ib, ea, eb);
-        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, m, hi, ia, ib, ea, eb);
+        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, lo, m, sl, 0, ia, ib, ea, eb);
+        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, m, hi, 0, sh, ia, ib, ea, eb);
       } else {
-        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, lo, hi, ia, ib, ea, eb);
+        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, lo, hi, sl, sh, ia, ib, ea, eb);
       }
     }
     lo = hi;
@@ -246,7 +283,7 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, i
    * same widths counted from v1 (the integrand decays like e^-(v - v1) there too). A break that
    * would leave a panel ending within half its width of v1 or v2 is dropped: such a panel would see
    * the square-root end just outside itself, unsubstituted. Plus the GAF's kink crossings. */
-  real bp[16];
+  real bp[24];
   int nbp = 0;
   real prev = RC(0.0);
   for (int k = 0; k < HEMI_NBREAKS; ++k) {
@@ -268,6 +305,23 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, i
   real gt2[4];
   int ng = gaf_theta_breaks(gaf, mu, s, gt2);
   for (int k = 0; k < ng; ++k) bp[nbp++] = ndf_v_of_tan2(ndf, p, gt2[k]);
+  /* Fresnel's kink curve o.h = oc = cos(tk) meets the arc's ends where the phi integral changes
+   * form: at phi = 0 (o.h = cos(theta_h - theta_o)): theta_h = theta_o -+ tk; at phi = pi
+   * (o.h = cos(theta_h + theta_o)): theta_h = tk - theta_o; at the horizon end (n.i = 0, so
+   * o.h = mu/(2 c)): c = mu/(2 oc). */
+  real oc = fresnel_kink(p.moments, p.fresnel, p.fr_x);
+  real fv[4]; /* there the phi integral has a square-root end in theta: panels beside them substitute */
+  int nfv = 0;
+  if (oc > RC(0.0)) {
+    real to = atan2(s, mu), tk = acos(oc);
+    real cand[4] = {to - tk, to + tk, tk - to, mu < RC(2.0) * oc ? acos(mu / (RC(2.0) * oc)) : RC(-1.0)};
+    for (int k = 0; k < 4; ++k)
+      if (cand[k] > RC(0.0) && cand[k] < RC(0.5) * BRDF_PI) {
+        real t = tan(cand[k]);
+        fv[nfv] = ndf_v_of_tan2(ndf, p, t * t);
+        bp[nbp++] = fv[nfv++];
+      }
+  }
   sort_ascending(bp, nbp);
   real cur = RC(0.0);
   int ib = 0;
@@ -287,6 +341,10 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, i
     }
     int sq_lo = partial && cur == v1;
     int sq_hi = next == v2;
+    for (int k = 0; k < nfv; ++k) {
+      sq_lo |= cur == fv[k];
+      sq_hi |= next == fv[k];
+    }
     if (refine) {
       /* five pieces graded towards both ends, at 1/16, 1/4, 3/4, 15/16 of the panel: an end may
        * carry a square-root (v1, v2) or a 3/2-power singularity (a GAF kink entering the azimuth
@@ -343,6 +401,10 @@ BRDF_FN BrdfParams brdf_params(int ndf, int gaf, real r) {
   p.alpha = r * r;
   p.k = gaf_schlick_k(gaf, r, p.alpha);
   p.inv_kp = RC(0.0);
+  p.moments = HEMI_SPLIT;
+  p.fresnel = FRESNEL_ONE;
+  p.fr_x = RC(0.0);
+  p.fr_y = RC(0.0);
   if (ndf == NDF_GAUSSIAN && p.alpha > RC(0.0)) {
     real e;
     p.inv_kp = RC(1.0) / ndf_kp(ndf, p, &e);
@@ -391,4 +453,14 @@ BRDF_FN BrdfParams hemisphere_texel_params(int ndf, int gaf, real mu, real r) {
 }
 BRDF_FN HemiResult hemisphere_texel(int ndf, int gaf, real mu, real r, real target) {
   return hemisphere_moments_to(ndf, gaf, hemisphere_texel_params(ndf, gaf, mu, r), mu, target);
+}
+/* The same with another weight (BrdfParams: moments, fresnel, fr_x, fr_y). */
+BRDF_FN HemiResult hemisphere_texel_weighted(int ndf, int gaf, real mu, real r, real target, int moments,
+                                             int fresnel, real fr_x, real fr_y) {
+  BrdfParams p = hemisphere_texel_params(ndf, gaf, mu, r);
+  p.moments = moments;
+  p.fresnel = fresnel;
+  p.fr_x = fr_x;
+  p.fr_y = fr_y;
+  return hemisphere_moments_to(ndf, gaf, p, mu, target);
 }

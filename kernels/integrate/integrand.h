@@ -6,7 +6,8 @@
  * Only cos(phi) varies across lanes: the view and theta_h are param_t, so the view's Lambda is
  * computed once per call, not once per lane.
  */
-/* The integrand H split by Schlick's weight: fa = H (1 - (1-o.h)^5), fb = H (1-o.h)^5. */
+/* The integrand H split by the weight w(o.h) that p.moments names (ndf.h BrdfParams): fb = H w,
+ * fa = H (1 - w); Schlick's (1 - o.h)^5 for the split-sum pair. */
 BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, BrdfAngle h, param_t sn,
                        real cphi, real* fa, real* fb) {
   real oh = fmin(s * sn * cphi + mu * h.c, RC(1.0)); /* rounding can push it past 1 */
@@ -15,7 +16,10 @@ BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, Br
   real s2i = (RC(1.0) - ni) * (RC(1.0) + ni);
   param_t s2o = s * s;
   real H = gaf_G_over_no(gaf, ndf, p, ni, mu, h.c, oh, s2i, s2o) * oh / h.c;
-  real f5 = fresnel_schlick_weight(oh);
-  *fb = H * f5;
+  real w;
+  if (p.moments == HEMI_FRESNEL) w = fresnel_F(p.fresnel, p.fr_x, p.fr_y, oh);
+  else if (p.moments == HEMI_F82C) w = fresnel_f82_weight(oh);
+  else w = fresnel_schlick_weight(oh);
+  *fb = H * w;
   *fa = H - *fb;
 }
