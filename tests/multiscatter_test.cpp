@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <ostream>
 
 #include "cl/device.h"
 #include "cl/runner.h"
@@ -96,6 +97,8 @@ struct Pinned {
 const Pinned kPinned[] = {{kNdfGgx, kGafSmithCorrelated, 2.03e-2, 2.52e-2, 6.06e-2, 5.75e-3, 2.59e-3},
                           {kNdfBeckmann, kGafSmith, 3.39e-2, 2.76e-2, 1.64e-2, 5.10e-3, 2.27e-3},
                           {kNdfGgx, kGafSmith, 2.10e-2, 2.06e-2, 6.69e-2, 6.11e-3, 2.78e-3}};
+
+void PrintTo(const Pinned& p, std::ostream* os) { *os << pairName(p.ndf, p.gaf); }
 
 class MsPair : public ::testing::TestWithParam<Pinned> {};
 
