@@ -26,7 +26,7 @@ const float MS_FLOOR = 1e-6;
 const float MS_ZERO = 0.0;
 
 // Schlick's Fresnel averaged over the hemisphere, F_avg = 2 int_0^1 F(mu) mu dmu
-// = F0 + (1 - F0)/21 = (20 F0 + 1)/21 (Kulla and Conty 2017; Fdez-Aguera 2019 eq. 23).
+// = F0 + (1 - F0)/21 = (20 F0 + 1)/21 (Kulla and Conty 2017; Fdez-Aguera 2019).
 vec3 msFavgSchlick(vec3 f0) {
   float w = 1.0 / 21.0;
   return mix(f0, vec3(1.0), w);
@@ -45,8 +45,8 @@ float kullaContyLobe(float muO, float muI, float r) {
 }
 
 // The Fresnel factor of the compensation lobe: the energy of the bounces after the first, each
-// scaled by F_avg, F_avg^2 E_avg / (1 - F_avg (1 - E_avg)) (Kulla and Conty 2017, slide
-// "Multiple scattering - Fresnel"; it is 1 at F_avg = 1).
+// scaled by F_avg: the lobe is multiplied by F_avg^2 E_avg / (1 - F_avg (1 - E_avg)) (Kulla and
+// Conty 2017, the Fresnel term of their multiple-scattering lobe; it is 1 at F_avg = 1).
 vec3 kullaContyFresnel(vec3 fAvg, float r) {
   float eAvg = lookupEavg(r);
   float lost = 1.0 - eAvg;
@@ -63,7 +63,8 @@ vec3 kullaContyLobeF(float muO, float muI, float r, vec3 f0) {
 // From the split-sum pair alone: E_ss = A + B, FssEss = F0 A + B,
 // F_ms = FssEss F_avg / (1 - (1 - E_ss) F_avg), E_ms = 1 - E_ss;
 // the specular energy is FssEss (times prefiltered radiance) + F_ms E_ms (times irradiance).
-// (Fdez-Aguera 2019, section 3 and listing 1, with Schlick's F90 = 1.)
+// (Fdez-Aguera 2019, with Schlick's F90 = 1: the paper's roughness-dependent F_r variant is not
+// used, the splitsum table being baked with F90 = 1.)
 vec3 fdezAgueraSingle(float mu, float r, vec3 f0) {
   vec2 ab = lookupAB(mu, r);
   return f0 * ab.x + vec3(ab.y);

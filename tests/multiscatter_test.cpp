@@ -181,6 +181,21 @@ TEST_P(MsPair, FresnelCompensationsCompared) {
   }
 }
 
+// The figures of docs/multiple-scattering.md's table-size sweep (not run by default: ~15 s;
+// --gtest_also_run_disabled_tests --gtest_filter='*Sweep*').
+TEST_P(MsPair, DISABLED_TableSizeSweep) {
+  const Pinned& p = GetParam();
+  const Baked& b = baked(p.ndf, p.gaf);
+  for (int n : {32, 64, 128, 256})
+    for (bool node : {false, true}) {
+      MsTables t = bakeTables(p.ndf, p.gaf, n, node);
+      Worst all = kullaContyFurnace(b, t, kMinMu, kMinR), rough = kullaContyFurnace(b, t, kMinMu, 25);
+      std::printf("%s %3d x %3d %s: max |albedo - 1| r >= 0.05: %.2e (mu=%.2f r=%.2f), r >= 0.25: %.2e\n",
+                  pairName(p.ndf, p.gaf).c_str(), n, n, node ? "node " : "texel", std::fabs(all.value), all.mu,
+                  all.r, std::fabs(rough.value));
+    }
+}
+
 // Sensitivity: the other pair's average albedo in place of this one's breaks the furnace.
 TEST(Multiscatter, WrongAverageAlbedoTableFails) {
   const Baked& ggx = baked(kNdfGgx, kGafSmithCorrelated);
