@@ -14,7 +14,9 @@
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "common/material.h"
 #include "common/models.h"
+#include "reference/reference.h"
 #include "version.h"
 
 namespace brdfbake {
@@ -40,6 +42,12 @@ namespace {
 std::string fmt(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
+std::string fmt9(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.9g", v);
   return b;
 }
 
@@ -94,25 +102,67 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   KernelTable kt;
   TableImage img;
   std::string fresnel = "one", channels, axes = "r";
+  const FresnelChoice& fc = job.fresnel;
+  // one run per colour channel of a Fresnel model's parameters; every run's bound counts
+  auto weight = [&](int c) {
+    auto [x, y] = fc.kernelParams(c);
+    return HemiWeight{HEMI_FRESNEL, fc.model, static_cast<float>(x), static_cast<float>(y)};
+  };
+  auto mergeErr = [](KernelTable& into, const KernelTable& more) {
+    for (size_t t = 0; t < into.err.size(); ++t) into.err[t] = std::max(into.err[t], more.err[t]);
+  };
+  std::string perChannel = fc.channels() == 3 ? "R,G,B" : "R=G=B";
   switch (job.kind) {
     case TableKind::SplitSum:
       kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid);
       img.channels = {"R", "G", "B"};
-      img.planes = {kt.planes[0], kt.planes[1], kt.planes[2]};
-      fresnel = "schlick";
-      channels = "R=A,G=B,B=A+B";
       axes = "mu,r";
+      if (fc.model == FRESNEL_F82_TINT) {
+        // C = int f_{F=1} o.h (1 - o.h)^6 (n.i) dw_i: the F82-tint albedo is F0 A + B - b C
+        KernelTable c = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid,
+                                          HemiWeight{HEMI_F82C, 0, 0, 0});
+        mergeErr(kt, c);
+        img.planes = {kt.planes[0], kt.planes[1], c.planes[1]};
+        fresnel = "f82-tint";
+        channels = "R=A,G=B,B=C (F82-tint albedo = F0 A + B - b C, b = F_schlick(1/7)(1-tint)/((1/7)(6/7)^6))";
+      } else {
+        img.planes = {kt.planes[0], kt.planes[1], kt.planes[2]};
+        fresnel = "schlick";
+        channels = "R=A,G=B,B=A+B";
+      }
       break;
     case TableKind::Albedo:
-      kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid);
-      img.planes = {kt.planes[2]};
-      channels = "R=G=B=E";
       axes = "mu,r";
+      if (fc.isOne()) {
+        kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid);
+        img.planes = {kt.planes[2]};
+        channels = "R=G=B=E";
+        break;
+      }
+      for (int c = 0; c < fc.channels(); ++c) {
+        KernelTable t = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, weight(c));
+        img.planes.push_back(t.planes[1]);
+        if (c == 0) kt = t;
+        else mergeErr(kt, t);
+      }
+      fresnel = fc.describe();
+      channels = perChannel + "=E_F (the albedo with Fresnel " + fresnelNames()[fc.model] + ")";
       break;
     case TableKind::AlbedoAvg:
-      kt = runner.albedoAvg(job.ndf, job.gaf, job.width, job.nodeGrid);
-      img.planes = {kt.planes[0]};
-      channels = "R=G=B=E_avg";
+      if (fc.isOne()) {
+        kt = runner.albedoAvg(job.ndf, job.gaf, job.width, job.nodeGrid);
+        img.planes = {kt.planes[0]};
+        channels = "R=G=B=E_avg";
+        break;
+      }
+      for (int c = 0; c < fc.channels(); ++c) {
+        KernelTable t = runner.albedoAvg(job.ndf, job.gaf, job.width, job.nodeGrid, weight(c));
+        img.planes.push_back(t.planes[0]);
+        if (c == 0) kt = t;
+        else mergeErr(kt, t);
+      }
+      fresnel = fc.describe();
+      channels = perChannel + "=E_F,avg (2 int E_F(mu) mu dmu with Fresnel " + fresnelNames()[fc.model] + ")";
       break;
     case TableKind::Kp:
       kt = runner.kp(job.ndf, job.width, job.nodeGrid);
@@ -126,6 +176,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
     img.channels = {"R", "G", "B"};
     img.planes = {img.planes[0], img.planes[0], img.planes[0]};
   }
+  if (img.channels.empty()) img.channels = {"R", "G", "B"};  // one plane per colour channel
   *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   img.width = job.width;
   img.height = job.height;
@@ -147,7 +198,17 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   img.strings["brdf.table"] = tableName(job.kind);
   img.strings["brdf.ndf"] = ndfNames()[job.ndf];
   img.strings["brdf.gaf"] = gafNames()[job.gaf];
-  img.strings["brdf.fresnel"] = fresnel;
+  img.strings["brdf.fresnel"] = job.kind == TableKind::SplitSum || fc.isOne() ? fresnel : fresnelNames()[fc.model];
+  if (job.kind != TableKind::SplitSum && job.kind != TableKind::Kp && !fc.isOne()) {
+    for (const auto& [name, value] : fc.parameters()) img.strings["brdf.fresnel." + name] = value;
+    // F_avg = 2 int F mu dmu, which Kulla-Conty's Fresnel term needs (host, adaptive, double)
+    std::string avg;
+    for (int c = 0; c < fc.channels(); ++c) {
+      auto [x, y] = fc.modelParams(c);
+      avg += (c ? "," : "") + fmt9(reference::fresnelAvg({fc.model, x, y}));
+    }
+    img.strings["brdf.fresnel.avg"] = avg;
+  }
   img.strings["brdf.axes"] = axes;
   img.strings["brdf.grid"] = job.nodeGrid ? "node" : "texel-center";
   img.strings["brdf.roughness"] = roughnessMapping(job.ndf);

@@ -41,6 +41,15 @@ std::string usageText() {
          "                    (default: the first CPU device, e.g. PoCL)\n"
          "  --cache-dir DIR   PoCL's kernel cache (default: $POCL_CACHE_DIR, else ~/.cache/pocl)\n"
          "\n"
+         "Fresnel (albedo and albedo-avg tables; splitsum takes schlick, its default, or f82-tint, which\n"
+         "adds the F82 channel; kp none). A parameter takes one value or three (R,G,B: an RGB table):\n"
+         "  --fresnel MODEL   " + joinNames(fresnelNames()) + "\n"
+         "                    (default one: F = 1; with --fresnel the default tables are albedo, albedo-avg)\n"
+         "  --f0 V            reflectance at normal incidence, [0, 1] (schlick, f82-tint; default 0.04)\n"
+         "  --eta V           relative IOR, (0, 100] (dielectric, schlick-tir: default 1.5; conductor)\n"
+         "  --k V             extinction coefficient, [0, 100] (conductor)\n"
+         "  --f82 V           tint of Schlick's reflectance at mu = 1/7, [0, 1] (f82-tint; default 1)\n"
+         "\n"
          "Models, formulas and table conventions: docs/MODELS.md in the source tree.\n"
          "Exit codes: 0 ok, 64 usage, 66 unreadable input, 69 no OpenCL device, 70 internal error,\n"
          "73 cannot create output, 74 write error (e.g. disk full), 128+N interrupted by signal N.\n";
@@ -169,6 +178,15 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       once(opt, "--cache-dir");
       req.cacheDir = value();
       if (req.cacheDir.empty()) throw Error(kExitUsage, "--cache-dir: empty directory name");
+    } else if (opt == "--fresnel") {
+      once(opt, "--fresnel");
+      req.fresnel.model = fresnelId(value());
+      req.fresnelGiven = true;
+    } else if (opt == "--f0" || opt == "--eta" || opt == "--k" || opt == "--f82") {
+      once(opt, opt);
+      std::vector<double>& slot = opt == "--f0" ? req.fresnel.f0 : opt == "--eta" ? req.fresnel.eta
+                                  : opt == "--k"  ? req.fresnel.k  : req.fresnel.f82;
+      slot = parseValues(opt, value());
     } else if (opt == "--help" || opt == "-h") {
       cmd.kind = Command::Kind::Help;
       return cmd;
@@ -179,7 +197,17 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   BakeRequest def = defaultRequest();
   if (req.ndfs.empty()) req.ndfs = def.ndfs;
   if (req.gafs.empty()) req.gafs = def.gafs;
-  if (req.tables.empty()) req.tables = def.tables;
+  req.tablesGiven = !req.tables.empty();
+  if (!req.tables.empty()) {
+  } else if (req.fresnelGiven) {
+    req.tables = {TableKind::Albedo, TableKind::AlbedoAvg};  // the tables a Fresnel model enters
+  } else {
+    req.tables = def.tables;
+  }
+  if (!req.fresnelGiven && (!req.fresnel.f0.empty() || !req.fresnel.eta.empty() || !req.fresnel.k.empty() ||
+                            !req.fresnel.f82.empty()))
+    throw Error(kExitUsage, "--f0, --eta, --k and --f82 need --fresnel MODEL (" + joinNames(fresnelNames()) + ")");
+  validateFresnel(req.fresnel);
   if (req.nodeGrid && req.size && *req.size < 2)
     throw Error(kExitUsage, "--size must be at least 2 on the node grid, got " + std::to_string(*req.size));
   cmd.bake = req;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "common/material.h"
 #include "common/models.h"
 
 namespace brdfbake {
@@ -18,6 +19,9 @@ struct BakeRequest {
   bool nodeGrid = false;             // samples at i/(n-1) instead of texel centres (i+0.5)/n
   std::string device;                // substring of the device (or platform) name; "" = first CPU
   std::string cacheDir;              // PoCL kernel cache (POCL_CACHE_DIR); "" = PoCL's default
+  FresnelChoice fresnel;             // --fresnel and its parameters (validated)
+  bool fresnelGiven = false;
+  bool tablesGiven = false;          // --table given (else the defaults, which depend on --fresnel)
 };
 
 struct Command {

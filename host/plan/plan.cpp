@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "common/brdf_host.h"
 #include "common/errors.h"
 
 namespace brdfbake {
@@ -9,7 +10,10 @@ namespace brdfbake {
 std::string fileName(const TableJob& job) {
   const std::string& t = tableName(job.kind);
   if (job.kind == TableKind::Kp) return t + "_" + ndfNames()[job.ndf] + ".exr";
-  return t + "_" + ndfNames()[job.ndf] + "_" + gafNames()[job.gaf] + ".exr";
+  // a Fresnel other than the table's own default (F = 1; splitsum: Schlick's split) is named
+  bool plain = job.fresnel.isOne() || (job.kind == TableKind::SplitSum && job.fresnel.model == FRESNEL_SCHLICK);
+  return t + "_" + ndfNames()[job.ndf] + "_" + gafNames()[job.gaf] +
+         (plain ? "" : "_" + fresnelNames()[job.fresnel.model]) + ".exr";
 }
 
 Plan makePlan(const BakeRequest& req) {
@@ -17,6 +21,17 @@ Plan makePlan(const BakeRequest& req) {
   plan.outDir = req.outDir;
   plan.device = req.device;
   const int gafNone = 0;
+  if (req.fresnelGiven) {
+    // where the chosen Fresnel makes no sense
+    const std::string f = "--fresnel " + fresnelNames()[req.fresnel.model];
+    for (TableKind kind : req.tables) {
+      if (kind == TableKind::Kp)
+        throw Error(kExitUsage, f + ": --table kp is the NDF's normalisation, which has no Fresnel; bake it without --fresnel");
+      if (kind == TableKind::SplitSum && req.fresnel.model != FRESNEL_SCHLICK && req.fresnel.model != FRESNEL_F82_TINT)
+        throw Error(kExitUsage, f + ": --table splitsum is Schlick's split (F0 A + B); it takes --fresnel schlick or "
+                                    "f82-tint (a third channel); bake --table albedo for this model");
+    }
+  }
   for (int ndf : req.ndfs) {
     for (TableKind kind : req.tables) {
       int n = req.size ? *req.size : defaultSize(kind);
@@ -29,7 +44,7 @@ Plan makePlan(const BakeRequest& req) {
         if (twoD && req.nodeGrid && gaf == gafNone)
           throw Error(kExitUsage, "--grid node: gaf 'none' (G = 1) has infinite albedo at mu = 0, the grid's first "
                                   "column; use --grid texel-center for " + tableName(kind));
-        TableJob job{kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, req.half, ""};
+        TableJob job{kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, req.half, "", req.fresnel};
         job.path = req.outDir + "/" + fileName(job);
         plan.jobs.push_back(job);
       }

@@ -18,6 +18,7 @@ struct TableJob {
   bool nodeGrid;
   bool half;
   std::string path;  // output file
+  FresnelChoice fresnel;  // albedo, albedo-avg: the model in B (one: F = 1); splitsum: schlick or f82-tint
 };
 
 struct Plan {

@@ -1,0 +1,40 @@
+// A material's Fresnel (and, with the whole-materials work, its diffuse) choice as the command
+// line and the tables' metadata spell it: the model, its parameters as given (one value, or three
+// for an RGB table), validated once here.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace brdfbake {
+
+const std::vector<std::string>& fresnelNames();  // index = FRESNEL_* id
+int fresnelId(const std::string& name, const std::string& field = "--fresnel");
+
+struct FresnelChoice {
+  int model = 0;                        // FRESNEL_ONE
+  std::vector<double> f0, eta, k, f82;  // as given: empty, one value, or three (R, G, B)
+
+  bool isOne() const { return model == 0; }
+  // 3 when any parameter has three values (an RGB table), else 1.
+  int channels() const;
+  // The model's parameters (x, y) for channel c, as reference::FresnelSpec takes them: F0 or eta;
+  // k (conductor) or the tint (f82-tint).
+  std::pair<double, double> modelParams(int c) const;
+  // The kernel's parameters (fr_x, fr_y) for channel c: the same, but the F82 model's b for y.
+  std::pair<double, double> kernelParams(int c) const;
+  // "dielectric eta=1.5", "conductor eta=0.2,0.92,1.1 k=3.9,2.45,2.14", "one".
+  std::string describe() const;
+  // The parameters as metadata: {"f0", "0.04"}, ...
+  std::vector<std::pair<std::string, std::string>> parameters() const;
+};
+
+// Fills the model's defaults (schlick F0 0.04; dielectric and schlick-tir eta 1.5; f82-tint F0
+// 0.04, tint 1) and checks every parameter: its range, that the model takes it, that a conductor
+// has eta and k. Throws Error(kExitUsage) naming the flag and its valid range.
+void validateFresnel(FresnelChoice& f);
+
+// "0.2,0.92,1.1" -> {0.2, 0.92, 1.1}: one or three finite numbers, else Error(kExitUsage).
+std::vector<double> parseValues(const std::string& flag, const std::string& text);
+
+}  // namespace brdfbake
