@@ -101,6 +101,7 @@ TEST(Diffuse, HostEstimatorMatchesClosedForms) {
     EXPECT_LE(rel(reference::diffuseAlbedo(DIFFUSE_BURLEY, r, 0.0), exact), 1e-9) << "reference burley r " << r;
   }
   EXPECT_NEAR(reference::diffuseAlbedoClosedForm(DIFFUSE_BURLEY, 1.0, 0.0), 785.0 / 504.0, 1e-15);
+  EXPECT_NEAR(reference::diffuseAlbedoClosedForm(DIFFUSE_BURLEY, 0.0, 0.0), 41.0 / 84.0, 1e-15);
 }
 
 // mu = 0 is the limit from inside for every model whose albedo is finite there.
