@@ -104,6 +104,29 @@ TEST(Diffuse, HostEstimatorMatchesClosedForms) {
   EXPECT_NEAR(reference::diffuseAlbedoClosedForm(DIFFUSE_BURLEY, 0.0, 0.0), 41.0 / 84.0, 1e-15);
 }
 
+// Every model against the adaptive reference at the edges: mu = 0, 1e-6, sigma = pi/2, r = 1 (host,
+// double and float; the float path is the device's code in one lane).
+TEST(Diffuse, HostEstimatorMatchesReferenceAtTheEdges) {
+  for (int model = 0; model < DIFFUSE_COUNT; ++model)
+    for (double p : {0.0, 0.04, 0.5, 1.0, kPi / 2}) {
+      if (p > paramHi(model)) continue;
+      for (double mu : kMus) {
+        if (infiniteAt(model, p, mu)) continue;
+        double want = reference::diffuseAlbedo(model, p, mu);
+        double err;
+        double got = brdf64::diffuse_albedo(model, p, mu, &err);
+        EXPECT_LE(rel(got, want), 1e-9) << diffuseName(model) << " p " << p << " mu " << mu;
+        EXPECT_LE(err / std::max(1.0, std::fabs(got)), 1e-8) << diffuseName(model) << " p " << p << " mu " << mu;
+        float pf = float(p), muf = float(mu), errf;
+        float gotf = brdf32::diffuse_albedo(model, pf, muf, &errf);
+        double wantf = reference::diffuseAlbedo(model, pf, muf);
+        EXPECT_TRUE(std::isfinite(gotf) && std::isfinite(errf)) << diffuseName(model) << " p " << p << " mu " << mu;
+        EXPECT_LE(rel(gotf, wantf), errf / std::max(1.0, std::fabs(double(gotf))) + kAllowance)
+            << "float " << diffuseName(model) << " p " << p << " mu " << mu;
+      }
+    }
+}
+
 // mu = 0 is the limit from inside for every model whose albedo is finite there.
 TEST(Diffuse, GrazingIsTheLimitFromInside) {
   for (int model = 0; model < DIFFUSE_COUNT; ++model) {
