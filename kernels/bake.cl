@@ -72,3 +72,20 @@ kernel void bake_kp(global float* out, global float* out_err, int n, float r_lo,
   out[j] = v;
   out_err[j] = err / fmax(1.0f, fabs(v));
 }
+
+/* Directional albedo of a diffuse model (kernels/brdf/diffuse.h, DIFFUSE_*) over (mu, parameter):
+ * the second axis is the model's parameter (shirley: F0, oren-nayar: sigma in radians, burley: r;
+ * lambert ignores it). out_err: the bound relative to max(1, |E|). The same code in every pair's
+ * program (it does not use the prelude's models). */
+kernel void bake_diffuse_albedo(global float* out_e, global float* out_err, int nx, int ny, float mu_lo,
+                                float mu_hi, float p_lo, float p_hi, int node_grid, int model) {
+  int i = get_global_id(0), j = get_global_id(1);
+  if (i >= nx || j >= ny) return;
+  float mu = grid_coord(i, nx, mu_lo, mu_hi, node_grid);
+  float p = grid_coord(j, ny, p_lo, p_hi, node_grid);
+  float err = 0.0f;
+  float e = diffuse_albedo(model, p, mu, &err);
+  int t = j * nx + i;
+  out_e[t] = e;
+  out_err[t] = err / fmax(1.0f, fabs(e));
+}

@@ -43,14 +43,15 @@ std::string kernelSource(int ndf, int gaf) {
   std::string src = "/* brdfbake prelude: " + ndfNames()[ndf] + " + " + gafNames()[gaf] + " */\n";
   src += "#define BRDF_NDF " + std::to_string(ndf) + "\n#define BRDF_GAF " + std::to_string(gaf) + "\n";
   const char* pointwise[] = {"kernels/brdf/ndf.h", "kernels/brdf/gaf.h", "kernels/brdf/fresnel.h",
-                             "kernels/integrate/integrand.h"};
+                             "kernels/brdf/diffuse.h", "kernels/integrate/integrand.h"};
   append(src, "kernels/brdf/compat.h");
   for (const char* f : pointwise) append(src, f);
   src += "#define BRDF_LANE_PASS 1\n#undef real\n#define real lane_t\n";
   for (const char* f : pointwise) append(src, f);
   src += "#undef BRDF_LANE_PASS\n#undef real\n#define real float\n";
   for (const char* f : {"kernels/integrate/quadrature.h", "kernels/integrate/hemisphere.h",
-                        "kernels/integrate/albedo_avg.h", "kernels/bake.cl"})
+                        "kernels/integrate/albedo_avg.h", "kernels/integrate/diffuse_albedo.h",
+                        "kernels/bake.cl"})
     append(src, f);
   return src;
 }
@@ -403,6 +404,39 @@ KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid) {
   t.width = n;
   t.height = 1;
   t.planes = {readBack(s.queue, v, n)};
+  t.err = readBack(s.queue, err, n);
+  return t;
+}
+
+// The diffuse kernel has its own arguments: it is created here and launched by run() (the fixed
+// local size on a CPU device), not pre-compiled by compileKernel()/emptyArgs().
+KernelTable KernelRunner::diffuseAlbedo(int model, int nx, int ny, float pLo, float pHi, bool nodeGrid) {
+  static const char* const kDiffuse = "bake_diffuse_albedo";
+  Compiled* pc = programs_.empty() ? nullptr : find(programs_.begin()->first.first, programs_.begin()->first.second);
+  if (!pc) {
+    buildHere(NDF_GGX, GAF_SMITH_CORRELATED);
+    pc = find(NDF_GGX, GAF_SMITH_CORRELATED);
+  }
+  Compiled& c = *pc;
+  Slot& s = *slots_[c.slot];
+  size_t n = static_cast<size_t>(nx) * ny;
+  cl::Buffer e = outBuffer(s.context, n), err = outBuffer(s.context, n);
+  cl::Kernel k(c.program, kDiffuse);
+  k.setArg(0, e);
+  k.setArg(1, err);
+  k.setArg(2, nx);
+  k.setArg(3, ny);
+  k.setArg(4, 0.0f);
+  k.setArg(5, 1.0f);
+  k.setArg(6, pLo);
+  k.setArg(7, pHi);
+  k.setArg(8, nodeGrid ? 1 : 0);
+  k.setArg(9, model);
+  run(c, k, nx, ny);
+  KernelTable t;
+  t.width = nx;
+  t.height = ny;
+  t.planes = {readBack(s.queue, e, n)};
   t.err = readBack(s.queue, err, n);
   return t;
 }

@@ -74,6 +74,10 @@ class KernelRunner {
 
   // Threads prepareAll uses (default: hardware_concurrency; 1 = in order on this thread).
   void setBuildThreads(int n) { buildThreads_ = n; }
+  // Directional albedo E(mu) of diffuse model `model` (kernels/brdf/diffuse.h, DIFFUSE_*) over
+  // mu in [0, 1] (x, nx) and its parameter in [pLo, pHi] (y, ny); planes {E}, err relative to
+  // max(1, |E|). Runs in any built program (the kernel is in all), else builds ggx + smith-correlated.
+  KernelTable diffuseAlbedo(int model, int nx, int ny, float pLo, float pHi, bool nodeGrid);
 
  private:
   struct Slot;      // a context and its queue

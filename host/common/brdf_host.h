@@ -12,10 +12,12 @@ typedef double real;
 #include "brdf/ndf.h"
 #include "brdf/gaf.h"
 #include "brdf/fresnel.h"
+#include "brdf/diffuse.h"
 #include "integrate/integrand.h"
 #include "integrate/quadrature.h"
 #include "integrate/hemisphere.h"
 #include "integrate/albedo_avg.h"
+#include "integrate/diffuse_albedo.h"
 }  // namespace brdf64
 
 namespace brdf32 {
@@ -24,8 +26,10 @@ typedef float real;
 #include "brdf/ndf.h"
 #include "brdf/gaf.h"
 #include "brdf/fresnel.h"
+#include "brdf/diffuse.h"
 #include "integrate/integrand.h"
 #include "integrate/quadrature.h"
 #include "integrate/hemisphere.h"
 #include "integrate/albedo_avg.h"
+#include "integrate/diffuse_albedo.h"
 }  // namespace brdf32
