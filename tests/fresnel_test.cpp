@@ -168,10 +168,12 @@ TEST(Fresnel, F82SplitSumMatchesDirectAlbedo) {
 }
 
 // The average of a Fresnel albedo (albedo-avg with --fresnel) against the reference's own average
-// (adaptive in mu over its adaptive albedo), at the 4 texel centres of r.
+// (adaptive in mu over its adaptive albedo), at the 4 texel centres of r. Smooth Fresnels only:
+// with a critical angle the reference's adaptive average takes minutes (E_F(mu) is not smooth
+// there); the albedo it averages is checked texel by texel above.
 TEST(Fresnel, AverageAlbedoMatchesReference) {
   const int ndf = NDF_GGX, gaf = GAF_SMITH_CORRELATED, n = 4;
-  for (const Case& c : {kCases[1], kCases[4], kCases[8]}) {
+  for (const Case& c : {kCases[1], kCases[7], kCases[8]}) {
     KernelTable t = runner().albedoAvg(ndf, gaf, n, false, weightOf(c));
     reference::Weight w{reference::Weight::Fresnel, {c.model, c.x, c.y}};
     for (int j = 0; j < n; ++j) {

@@ -65,6 +65,17 @@ std::string hemisphereMethod() {
          fmt(kFloatArithmeticAllowance) + " float allowance + storage rounding";
 }
 
+std::string diffuseMethod() {
+  return "theta_i in GK15 panels (" + std::to_string(DIFFUSE_PANELS) +
+         " each side of theta_o), phi by GK15 on [0,pi/2] and [pi/2,pi] where f_d depends on it; error |K15-G7| + " +
+         fmt(kFloatArithmeticAllowance) + " float allowance + storage rounding";
+}
+
+std::string modelsOf(const TableJob& job) {
+  if (job.ndf < 0) return diffuseNames()[job.diffuse];
+  return ndfNames()[job.ndf] + "+" + gafNames()[job.gaf];
+}
+
 std::string methodText(TableKind kind) {
   switch (kind) {
     case TableKind::AlbedoAvg:
@@ -97,7 +108,7 @@ double storageError(const std::vector<float>& v, bool half) {
 }  // namespace
 
 TableImage computeTable(KernelRunner& runner, const TableJob& job, double* seconds) {
-  runner.prepare(job.kind, job.ndf, job.gaf);
+  if (job.ndf >= 0) runner.prepare(job.kind, job.ndf, job.gaf);
   auto t0 = std::chrono::steady_clock::now();
   KernelTable kt;
   TableImage img;
@@ -125,6 +136,13 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
         img.planes = {kt.planes[0], kt.planes[1], c.planes[1]};
         fresnel = "f82-tint";
         channels = "R=A,G=B,B=C (F82-tint albedo = F0 A + B - b C, b = F_schlick(1/7)(1-tint)/((1/7)(6/7)^6))";
+      } else if (job.diffuse >= 0) {
+        // the diffuse albedo over (mu, r) in B, as HDRP's pre-integrated FGD table keeps it
+        KernelTable d = runner.diffuseAlbedo(job.diffuse, job.width, job.height, 0.0f, 1.0f, job.nodeGrid);
+        mergeErr(kt, d);
+        img.planes = {kt.planes[0], kt.planes[1], d.planes[0]};
+        fresnel = "schlick";
+        channels = "R=A,G=B,B=E_d (" + diffuseNames()[job.diffuse] + " diffuse albedo at roughness r)";
       } else {
         img.planes = {kt.planes[0], kt.planes[1], kt.planes[2]};
         fresnel = "schlick";
@@ -133,6 +151,15 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       break;
     case TableKind::Albedo:
       axes = "mu,r";
+      if (job.diffuse >= 0) {
+        DiffuseAxis ax = diffuseAxis(job.diffuse);
+        kt = runner.diffuseAlbedo(job.diffuse, job.width, job.height, static_cast<float>(ax.lo),
+                                  static_cast<float>(ax.hi), job.nodeGrid);
+        img.planes = {kt.planes[0]};
+        channels = "R=G=B=E_d (" + diffuseNames()[job.diffuse] + " diffuse albedo, rho = 1)";
+        axes = "mu," + ax.name;
+        break;
+      }
       if (fc.isOne()) {
         kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid);
         img.planes = {kt.planes[2]};
@@ -185,8 +212,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   for (size_t c = 0; c < img.planes.size(); ++c)
     for (size_t t = 0; t < img.planes[c].size(); ++t)
       if (!std::isfinite(img.planes[c][t]) || !std::isfinite(kt.err[t]))
-        throw Error(kExitSoftware, "internal error: " + tableName(job.kind) + " " + ndfNames()[job.ndf] + "+" +
-                                       gafNames()[job.gaf] + " texel (" + std::to_string(t % job.width) + ", " +
+        throw Error(kExitSoftware, "internal error: " + tableName(job.kind) + " " + modelsOf(job) + " texel (" + std::to_string(t % job.width) + ", " +
                                        std::to_string(t / job.width) + ") is not finite; nothing was written");
   double quad = 0;
   for (float e : kt.err) quad = std::max(quad, static_cast<double>(e));
@@ -196,8 +222,11 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
 
   img.strings["brdf.schema"] = "brdfbake/1";
   img.strings["brdf.table"] = tableName(job.kind);
-  img.strings["brdf.ndf"] = ndfNames()[job.ndf];
-  img.strings["brdf.gaf"] = gafNames()[job.gaf];
+  if (job.ndf >= 0) {
+    img.strings["brdf.ndf"] = ndfNames()[job.ndf];
+    img.strings["brdf.gaf"] = gafNames()[job.gaf];
+    }
+  if (job.diffuse >= 0) img.strings["brdf.diffuse"] = diffuseNames()[job.diffuse];
   img.strings["brdf.fresnel"] = job.kind == TableKind::SplitSum || fc.isOne() ? fresnel : fresnelNames()[fc.model];
   if (job.kind != TableKind::SplitSum && job.kind != TableKind::Kp && !fc.isOne()) {
     for (const auto& [name, value] : fc.parameters()) img.strings["brdf.fresnel." + name] = value;
@@ -211,11 +240,16 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   }
   img.strings["brdf.axes"] = axes;
   img.strings["brdf.grid"] = job.nodeGrid ? "node" : "texel-center";
-  img.strings["brdf.roughness"] = roughnessMapping(job.ndf);
   img.strings["brdf.channels"] = channels;
   img.strings["brdf.method"] = methodText(job.kind);
   img.strings["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
-  img.v2f["brdf.r.range"] = {0.0f, 1.0f};
+  if (job.kind == TableKind::Albedo && job.diffuse >= 0) {
+    DiffuseAxis ax = diffuseAxis(job.diffuse);
+    img.v2f["brdf." + ax.name + ".range"] = {static_cast<float>(ax.lo), static_cast<float>(ax.hi)};
+    img.strings["brdf.method"] = diffuseMethod();
+  } else {
+    img.v2f["brdf.r.range"] = {0.0f, 1.0f};
+  }
   if (axes == "mu,r") img.v2f["brdf.mu.range"] = {0.0f, 1.0f};
   img.floats["brdf.error"] = static_cast<float>(bound);
   return img;
@@ -230,7 +264,8 @@ std::vector<TableReport> runPlan(const Plan& plan) {
   KernelRunner runner(dev.device);
   // every program (and kernel) the plan needs, built at once on parallel contexts
   std::vector<KernelRunner::TableNeed> needs;
-  for (const TableJob& j : plan.jobs) needs.push_back({j.kind, j.ndf, j.gaf});
+  for (const TableJob& j : plan.jobs)
+    if (j.ndf >= 0) needs.push_back({j.kind, j.ndf, j.gaf});
   runner.prepareAll(needs);
   std::vector<TableImage> images;
   std::vector<TableReport> reports;
@@ -239,8 +274,8 @@ std::vector<TableReport> runPlan(const Plan& plan) {
     images.push_back(computeTable(runner, job, &r.seconds));
     r.path = job.path;
     r.table = tableName(job.kind);
-    r.ndf = ndfNames()[job.ndf];
-    r.gaf = gafNames()[job.gaf];
+    r.ndf = job.ndf >= 0 ? ndfNames()[job.ndf] : "";
+    r.gaf = job.gaf >= 0 ? gafNames()[job.gaf] : "";
     r.width = job.width;
     r.height = job.height;
     r.errorBound = images.back().floats["brdf.error"];
@@ -299,6 +334,14 @@ std::string energyWarnings(const TableImage& t) {
     if (mx > 1 + tol) {
       char b[64];
       std::snprintf(b, sizeof b, "%.4g", mx);
+      if (!str("brdf.diffuse").empty() && table == "albedo") {
+        std::string d = str("brdf.diffuse");
+        std::string why = d == "burley" ? " (a known property of Burley's model: rough surfaces at grazing angles)"
+                          : d == "oren-nayar" ? " (a property of the qualitative model's A and B: E(0) = A + B/2 > 1 for small sigma)"
+                                              : " (an erratum of the source documents, kept on purpose)";
+        return "warning: " + name + " exceeds 1 (max " + b + "): the " + d + " diffuse model does not conserve energy" +
+               why + "; see docs/MODELS.md, \"Diffuse models\"\n";
+      }
       return "warning: " + name + " exceeds 1 (max " + b + "): a single-scattering albedo cannot; " + str("brdf.ndf") +
              " with " + str("brdf.gaf") +
              (str("brdf.gaf") == "none" ? " (G = 1, albedo ~ 1/mu at grazing)"

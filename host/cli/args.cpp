@@ -50,6 +50,11 @@ std::string usageText() {
          "  --k V             extinction coefficient, [0, 100] (conductor)\n"
          "  --f82 V           tint of Schlick's reflectance at mu = 1/7, [0, 1] (f82-tint; default 1)\n"
          "\n"
+         "Diffuse (--table albedo: the model's albedo over (mu, its parameter): F0 in [0,1] for the Shirley\n"
+         "forms, sigma in [0, pi/2] for Oren-Nayar, r in [0,1] for Burley; --table splitsum: burley's\n"
+         "albedo in channel B, as HDRP's FGD table; the default table is albedo):\n"
+         "  --diffuse MODEL   " + joinNames(diffuseNames()) + "\n"
+         "\n"
          "Models, formulas and table conventions: docs/MODELS.md in the source tree.\n"
          "Exit codes: 0 ok, 64 usage, 66 unreadable input, 69 no OpenCL device, 70 internal error,\n"
          "73 cannot create output, 74 write error (e.g. disk full), 128+N interrupted by signal N.\n";
@@ -182,6 +187,9 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       once(opt, "--fresnel");
       req.fresnel.model = fresnelId(value());
       req.fresnelGiven = true;
+    } else if (opt == "--diffuse") {
+      once(opt, "--diffuse");
+      req.diffuse = diffuseId(value());
     } else if (opt == "--f0" || opt == "--eta" || opt == "--k" || opt == "--f82") {
       once(opt, opt);
       std::vector<double>& slot = opt == "--f0" ? req.fresnel.f0 : opt == "--eta" ? req.fresnel.eta
@@ -199,6 +207,8 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   if (req.gafs.empty()) req.gafs = def.gafs;
   req.tablesGiven = !req.tables.empty();
   if (!req.tables.empty()) {
+  } else if (req.diffuse >= 0) {
+    req.tables = {TableKind::Albedo};  // the diffuse model's albedo
   } else if (req.fresnelGiven) {
     req.tables = {TableKind::Albedo, TableKind::AlbedoAvg};  // the tables a Fresnel model enters
   } else {

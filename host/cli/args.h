@@ -21,6 +21,7 @@ struct BakeRequest {
   std::string cacheDir;              // PoCL kernel cache (POCL_CACHE_DIR); "" = PoCL's default
   FresnelChoice fresnel;             // --fresnel and its parameters (validated)
   bool fresnelGiven = false;
+  int diffuse = -1;                  // --diffuse: DIFFUSE_* id, or -1
   bool tablesGiven = false;          // --table given (else the defaults, which depend on --fresnel)
 };
 

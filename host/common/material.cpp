@@ -22,6 +22,29 @@ int fresnelId(const std::string& name, const std::string& field) {
   throw Error(kExitUsage, field + ": unknown Fresnel model '" + name + "'; valid: " + joinNames(fresnelNames()));
 }
 
+const std::vector<std::string>& diffuseNames() {
+  static const std::vector<std::string> n = {"lambert",   "shirley",           "ashikhmin-shirley",     "oren-nayar",
+                                             "burley",    "shirley-as-printed", "oren-nayar-as-printed"};
+  return n;
+}
+
+int diffuseId(const std::string& name, const std::string& field) {
+  for (size_t i = 0; i < diffuseNames().size(); ++i)
+    if (diffuseNames()[i] == name) return static_cast<int>(i);
+  throw Error(kExitUsage, field + ": unknown diffuse model '" + name + "'; valid: " + joinNames(diffuseNames()));
+}
+
+DiffuseAxis diffuseAxis(int model) {
+  switch (model) {
+    case DIFFUSE_SHIRLEY:
+    case DIFFUSE_ASHIKHMIN_SHIRLEY:
+    case DIFFUSE_SHIRLEY_AS_PRINTED: return {"f0", 0, 1};
+    case DIFFUSE_OREN_NAYAR:
+    case DIFFUSE_OREN_NAYAR_AS_PRINTED: return {"sigma", 0, 1.5707963267948966};
+    default: return {"r", 0, 1};
+  }
+}
+
 std::vector<double> parseValues(const std::string& flag, const std::string& text) {
   std::vector<double> out;
   size_t start = 0;

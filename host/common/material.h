@@ -34,6 +34,18 @@ struct FresnelChoice {
 // has eta and k. Throws Error(kExitUsage) naming the flag and its valid range.
 void validateFresnel(FresnelChoice& f);
 
+const std::vector<std::string>& diffuseNames();  // index = DIFFUSE_* id
+int diffuseId(const std::string& name, const std::string& field = "--diffuse");
+
+// The parameter a diffuse model's albedo table runs over (its second axis): F0 for the Shirley
+// forms (the specular's reflectance at normal incidence), sigma in radians for Oren-Nayar,
+// roughness r for Burley (and for Lambert, which has none: a constant table).
+struct DiffuseAxis {
+  std::string name;  // "f0", "sigma", "r"
+  double lo, hi;
+};
+DiffuseAxis diffuseAxis(int model);
+
 // "0.2,0.92,1.1" -> {0.2, 0.92, 1.1}: one or three finite numbers, else Error(kExitUsage).
 std::vector<double> parseValues(const std::string& flag, const std::string& text);
 

@@ -9,6 +9,9 @@ namespace brdfbake {
 
 std::string fileName(const TableJob& job) {
   const std::string& t = tableName(job.kind);
+  if (job.kind == TableKind::Albedo && job.diffuse >= 0) return t + "_" + diffuseNames()[job.diffuse] + ".exr";
+  if (job.kind == TableKind::SplitSum && job.diffuse >= 0)
+    return t + "_" + ndfNames()[job.ndf] + "_" + gafNames()[job.gaf] + "_" + diffuseNames()[job.diffuse] + ".exr";
   if (job.kind == TableKind::Kp) return t + "_" + ndfNames()[job.ndf] + ".exr";
   // a Fresnel other than the table's own default (F = 1; splitsum: Schlick's split) is named
   bool plain = job.fresnel.isOne() || (job.kind == TableKind::SplitSum && job.fresnel.model == FRESNEL_SCHLICK);
@@ -32,8 +35,30 @@ Plan makePlan(const BakeRequest& req) {
                                     "f82-tint (a third channel); bake --table albedo for this model");
     }
   }
+  if (req.diffuse >= 0) {
+    const std::string d = "--diffuse " + diffuseNames()[req.diffuse];
+    for (TableKind kind : req.tables) {
+      if (kind == TableKind::AlbedoAvg || kind == TableKind::Kp)
+        throw Error(kExitUsage, d + ": --table " + tableName(kind) + " has no diffuse form; a diffuse model bakes "
+                                    "--table albedo (its albedo) or splitsum (burley in channel B)");
+      if (kind == TableKind::SplitSum && req.diffuse != DIFFUSE_BURLEY)
+        throw Error(kExitUsage, d + ": --table splitsum takes --diffuse burley only (its parameter is the table's "
+                                    "roughness r); bake --table albedo for this model");
+      if (kind == TableKind::Albedo && req.fresnelGiven)
+        throw Error(kExitUsage, d + ": --table albedo bakes the diffuse model's albedo, --fresnel the specular's; "
+                                    "bake them in two runs (or check the whole material with brdfbake energy)");
+    }
+    if (std::find(req.tables.begin(), req.tables.end(), TableKind::Albedo) != req.tables.end()) {
+      int n = req.size ? *req.size : defaultSize(TableKind::Albedo);
+      if (req.nodeGrid && n < 2) throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
+      TableJob job{TableKind::Albedo, -1, -1, n, n, req.nodeGrid, req.half, "", {}, req.diffuse};
+      job.path = req.outDir + "/" + fileName(job);
+      plan.jobs.push_back(job);
+    }
+  }
   for (int ndf : req.ndfs) {
     for (TableKind kind : req.tables) {
+      if (req.diffuse >= 0 && kind == TableKind::Albedo) continue;  // baked once above
       int n = req.size ? *req.size : defaultSize(kind);
       if (req.nodeGrid && n < 2)
         throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
@@ -44,7 +69,8 @@ Plan makePlan(const BakeRequest& req) {
         if (twoD && req.nodeGrid && gaf == gafNone)
           throw Error(kExitUsage, "--grid node: gaf 'none' (G = 1) has infinite albedo at mu = 0, the grid's first "
                                   "column; use --grid texel-center for " + tableName(kind));
-        TableJob job{kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, req.half, "", req.fresnel};
+        TableJob job{kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, req.half, "", req.fresnel,
+                     kind == TableKind::SplitSum ? req.diffuse : -1};
         job.path = req.outDir + "/" + fileName(job);
         plan.jobs.push_back(job);
       }

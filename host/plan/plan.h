@@ -19,6 +19,7 @@ struct TableJob {
   bool half;
   std::string path;  // output file
   FresnelChoice fresnel;  // albedo, albedo-avg: the model in B (one: F = 1); splitsum: schlick or f82-tint
+  int diffuse = -1;       // albedo: a diffuse model's albedo (ndf, gaf unused); splitsum: burley in B
 };
 
 struct Plan {
