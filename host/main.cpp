@@ -13,6 +13,7 @@
 #include "common/errors.h"
 #include "exr/table_file.h"
 #include "plan/plan.h"
+#include "report/energy.h"
 #include "version.h"
 
 int main(int argc, char** argv) {
@@ -33,6 +34,14 @@ int main(int argc, char** argv) {
         std::cout << describeTableExr(cmd.file);
         std::cout << energyWarnings(readTableExr(cmd.file));
         return kExitOk;
+      case Command::Kind::Energy: {
+        if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);
+        std::vector<EnergyResult> res = checkEnergy(cmd.bake);
+        std::cout << formatEnergy(res);
+        for (const auto& r : res)
+          if (r.violates) return 1;  // a build gates on this
+        return kExitOk;
+      }
       case Command::Kind::Bake: {
         // before the first OpenCL call: PoCL reads its cache location when the platform starts
         if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdlib>
 
+#include "common/brdf_host.h"
 #include "common/errors.h"
 
 namespace brdfbake {
@@ -25,6 +26,8 @@ std::string usageText() {
          "  brdfbake bake [options]       the same, spelled out\n"
          "  brdfbake devices              list OpenCL platforms and devices\n"
          "  brdfbake info FILE.exr        print a table's metadata and value range\n"
+         "  brdfbake energy [options]     does a whole material conserve energy? worst total albedo over\n"
+         "                                (mu, r, parameter); exit 0 if it conserves, 1 if it does not\n"
          "  brdfbake --help | --version\n"
          "\n"
          "bake options (--opt VALUE or --opt=VALUE; --ndf, --gaf, --table may be repeated or comma-separated,\n"
@@ -132,8 +135,11 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   BakeRequest req;
   if (first == "bake") {
     i = 1;
+  } else if (first == "energy") {
+    i = 1;
+    cmd.kind = Command::Kind::Energy;
   } else if (first.rfind("-", 0) != 0) {
-    throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, devices, info (see --help)");
+    throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, energy, devices, info (see --help)");
   }
   // `brdfbake [options]` is `brdfbake bake [options]`: every bake option works at the top level.
   std::vector<std::string> seen;  // scalar options given so far: each at most once
@@ -187,6 +193,17 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       once(opt, "--fresnel");
       req.fresnel.model = fresnelId(value());
       req.fresnelGiven = true;
+    } else if (opt == "--sigma" && cmd.kind == Command::Kind::Energy) {
+      once(opt, opt);
+      std::vector<double> v = parseValues(opt, value());
+      if (v.size() != 1 || v[0] < 0 || v[0] > 1.5707963267948966)
+        throw Error(kExitUsage, "--sigma must be one angle in [0, 1.5708] (radians, 0..pi/2)");
+      req.sigma = v[0];
+    } else if (opt == "--coupling" && cmd.kind == Command::Kind::Energy) {
+      once(opt, opt);
+      req.coupling = value();
+      if (req.coupling != "sum" && req.coupling != "albedo-scaling")
+        throw Error(kExitUsage, "--coupling must be sum or albedo-scaling, got '" + req.coupling + "'");
     } else if (opt == "--diffuse") {
       once(opt, "--diffuse");
       req.diffuse = diffuseId(value());
@@ -205,6 +222,14 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   BakeRequest def = defaultRequest();
   if (req.ndfs.empty()) req.ndfs = def.ndfs;
   if (req.gafs.empty()) req.gafs = def.gafs;
+  if (cmd.kind == Command::Kind::Energy) {
+    // energy writes nothing: the table options do not apply
+    for (const char* o : {"--table", "--grid", "--half", "--output"})
+      if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()))
+        throw Error(kExitUsage, std::string(o) + ": not an energy option (energy writes no tables)");
+    if (req.sigma && req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
+      throw Error(kExitUsage, "--sigma: only --diffuse oren-nayar and oren-nayar-as-printed take it");
+  }
   req.tablesGiven = !req.tables.empty();
   if (!req.tables.empty()) {
   } else if (req.diffuse >= 0) {

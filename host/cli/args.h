@@ -22,11 +22,13 @@ struct BakeRequest {
   FresnelChoice fresnel;             // --fresnel and its parameters (validated)
   bool fresnelGiven = false;
   int diffuse = -1;                  // --diffuse: DIFFUSE_* id, or -1
+  std::optional<double> sigma;       // energy: --sigma for oren-nayar (else swept)
+  std::string coupling = "sum";      // energy: --coupling sum | albedo-scaling
   bool tablesGiven = false;          // --table given (else the defaults, which depend on --fresnel)
 };
 
 struct Command {
-  enum class Kind { Bake, Devices, Info, Help, Version } kind = Kind::Bake;
+  enum class Kind { Bake, Energy, Devices, Info, Help, Version } kind = Kind::Bake;
   BakeRequest bake;
   std::string file;  // for Info
 };

@@ -1,0 +1,159 @@
+#include "report/energy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "cl/device.h"
+#include "cl/runner.h"
+#include "common/brdf_host.h"
+#include "common/errors.h"
+#include "common/material.h"
+#include "common/models.h"
+
+namespace brdfbake {
+
+namespace {
+
+// The kernels' float arithmetic, as in the bake (host/bake/bake.cpp): once per lobe.
+constexpr double kAllowance = 1e-6;
+constexpr size_t kWorstShown = 5;
+
+std::string fmtG(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
+// Node i of n on [lo, hi] (the checks include the grid's edges).
+double node(int i, int n, double lo, double hi) { return n > 1 ? lo + (hi - lo) * i / (n - 1.0) : lo; }
+
+// Shirley's diffuse forms take the specular's reflectance at normal incidence: the Fresnel's own.
+double normalReflectance(const FresnelChoice& f, int c) {
+  auto [x, y] = f.modelParams(c);
+  switch (f.model) {
+    case FRESNEL_SCHLICK:
+    case FRESNEL_F82_TINT: return x;
+    case FRESNEL_DIELECTRIC:
+    case FRESNEL_SCHLICK_TIR: return (x - 1) * (x - 1) / ((x + 1) * (x + 1));
+    case FRESNEL_CONDUCTOR: return ((x - 1) * (x - 1) + y * y) / ((x + 1) * (x + 1) + y * y);
+    default: return 1;  // F = 1: everything is reflected specularly
+  }
+}
+
+}  // namespace
+
+std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
+  const int n = req.size ? *req.size : 33;
+  if (n < 2) throw Error(kExitUsage, "--size must be at least 2 for energy (grid nodes per axis), got " + std::to_string(n));
+  DeviceEntry dev = selectDevice(req.device);
+  KernelRunner runner(dev.device);
+  const FresnelChoice& fc = req.fresnel;
+  const int d = req.diffuse;
+  const bool shirley = d == DIFFUSE_SHIRLEY || d == DIFFUSE_ASHIKHMIN_SHIRLEY || d == DIFFUSE_SHIRLEY_AS_PRINTED;
+  const bool orenNayar = d == DIFFUSE_OREN_NAYAR || d == DIFFUSE_OREN_NAYAR_AS_PRINTED;
+  std::vector<EnergyResult> out;
+  for (int ndf : req.ndfs)
+    for (int gaf : req.gafs) {
+      if (gaf == GAF_NONE)
+        throw Error(kExitUsage, "--gaf none: G = 1 has infinite albedo at mu = 0, the grid's edge; energy needs a GAF");
+      EnergyResult res;
+      res.material = ndfNames()[ndf] + "+" + gafNames()[gaf] + ", fresnel " + fc.describe() + ", diffuse " +
+                     (d >= 0 ? diffuseNames()[d] : std::string("none")) +
+                     (orenNayar && req.sigma ? " sigma=" + fmtG(*req.sigma) : "") + ", coupling " +
+                     req.coupling;
+      std::vector<EnergyPoint> pts;
+      for (int c = 0; c < fc.channels(); ++c) {
+        // the specular lobe's albedo with its Fresnel over (mu, r), node grid
+        KernelTable spec;
+        if (fc.isOne()) {
+          spec = runner.hemisphere(ndf, gaf, n, n, true);
+          spec.planes[1] = spec.planes[2];
+        } else {
+          auto [x, y] = fc.kernelParams(c);
+          spec = runner.hemisphere(ndf, gaf, n, n, true,
+                                   HemiWeight{HEMI_FRESNEL, fc.model, static_cast<float>(x), static_cast<float>(y)});
+        }
+        // the diffuse lobe's albedo over (mu, its parameter): burley follows r, oren-nayar sigma
+        // (swept unless --sigma), the Shirley forms the Fresnel's F0 (swept when F = 1)
+        KernelTable dif;
+        int np = 1;
+        double plo = 0, phi = 0;
+        if (d >= 0) {
+          if (d == DIFFUSE_BURLEY || d == DIFFUSE_LAMBERT) {
+            np = n, plo = 0, phi = 1;
+          } else if (orenNayar) {
+            if (req.sigma) plo = phi = *req.sigma;
+            else np = n, plo = 0, phi = diffuseAxis(d).hi, res.paramName = "sigma";
+          } else if (shirley) {
+            if (!fc.isOne()) plo = phi = normalReflectance(fc, c);
+            else np = n, plo = 0, phi = 1, res.paramName = "F0";
+          }
+          dif = runner.diffuseAlbedo(d, n, np, static_cast<float>(plo), static_cast<float>(phi), true);
+        }
+        bool followsR = d == DIFFUSE_BURLEY || d == DIFFUSE_LAMBERT;
+        for (int j = 0; j < n; ++j)
+          for (int i = 0; i < n; ++i) {
+            size_t k = static_cast<size_t>(j) * n + i;
+            double es = spec.planes[1][k], bs = spec.err[k] * std::max(1.0, std::fabs(es)) + kAllowance;
+            int q0 = followsR ? j : 0, q1 = followsR ? j + 1 : np;
+            for (int q = d >= 0 ? q0 : 0; q < (d >= 0 ? q1 : 1); ++q) {
+              double ed = 0, bd = 0;
+              if (d >= 0) {
+                size_t kd = static_cast<size_t>(q) * n + i;
+                ed = dif.planes[0][kd];
+                bd = dif.err[kd] * std::max(1.0, std::fabs(ed)) + kAllowance;
+              }
+              // sum: the lobes add (each diffuse model's paper; Shirley's carries its 1 - F0);
+              // albedo-scaling: the diffuse lobe gets what the specular left, (1 - E_spec) f_d
+              double w = req.coupling == "albedo-scaling" ? 1 - es : 1;
+              double total = es + w * ed;
+              double bound = bs * (1 + (req.coupling == "albedo-scaling" ? std::fabs(ed) : 0)) + std::fabs(w) * bd;
+              double param = res.paramName.empty() ? NAN : node(q, np, plo, phi);
+              pts.push_back({node(i, n, 0, 1), node(j, n, 0, 1), param, c, es, w * ed, total, bound});
+            }
+          }
+      }
+      std::sort(pts.begin(), pts.end(), [](const EnergyPoint& a, const EnergyPoint& b) {
+        return a.total - a.bound > b.total - b.bound || (a.total - a.bound == b.total - b.bound && a.total > b.total);
+      });
+      for (const EnergyPoint& p : pts) {
+        if (!std::isfinite(p.total)) throw Error(kExitSoftware, "internal error: a non-finite albedo in energy");
+        if (p.total > 1 + p.bound) res.violates = true;
+      }
+      res.channels = fc.channels();
+      pts.resize(std::min(pts.size(), kWorstShown));
+      res.worst = pts;
+      out.push_back(res);
+    }
+  return out;
+}
+
+std::string formatEnergy(const std::vector<EnergyResult>& results) {
+  std::string s;
+  char line[512];
+  for (const EnergyResult& r : results) {
+    const EnergyPoint& w = r.worst.front();
+    if (r.violates)
+      std::snprintf(line, sizeof line,
+                    "VIOLATES: %s: total albedo %.6g at mu=%.4g r=%.4g exceeds 1 by %.3g (bound %.2g)\n",
+                    r.material.c_str(), w.total, w.mu, w.r, w.total - 1, w.bound);
+    else
+      std::snprintf(line, sizeof line, "conserves: %s: largest total albedo %.6g at mu=%.4g r=%.4g (bound %.2g)\n",
+                    r.material.c_str(), w.total, w.mu, w.r, w.bound);
+    s += line;
+    std::snprintf(line, sizeof line, "  %6s  %6s  %8s  %7s  %10s  %10s  %10s  %9s\n", "mu", "r",
+                  r.paramName.empty() ? "" : r.paramName.c_str(), "channel", "E_spec", "diffuse", "total", "bound");
+    s += line;
+    for (const EnergyPoint& p : r.worst) {
+      char param[32] = "";
+      if (!std::isnan(p.param)) std::snprintf(param, sizeof param, "%.4g", p.param);
+      std::snprintf(line, sizeof line, "  %6.4g  %6.4g  %8s  %7s  %10.6g  %10.6g  %10.6g  %9.2g\n", p.mu, p.r, param,
+                    r.channels == 1 ? "-" : std::string(1, "RGB"[p.channel]).c_str(), p.spec, p.diffuse, p.total, p.bound);
+      s += line;
+    }
+  }
+  return s;
+}
+
+}  // namespace brdfbake

@@ -1,0 +1,31 @@
+// brdfbake energy: does a whole material (specular lobe with its Fresnel, plus a diffuse lobe,
+// coupled) conserve energy? The worst total directional albedo over a (mu, r, parameter) grid,
+// where it occurs, and a verdict a build can gate on.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cli/args.h"
+
+namespace brdfbake {
+
+struct EnergyPoint {
+  double mu, r, param;  // param: the diffuse model's swept parameter (sigma, F0), or NaN
+  int channel;          // colour channel of the Fresnel parameters (0 for one value)
+  double spec, diffuse, total, bound;
+};
+
+struct EnergyResult {
+  std::string material;            // "ggx+smith-correlated, fresnel dielectric eta=1.5, diffuse lambert, coupling sum"
+  bool violates = false;           // worst total exceeds 1 by more than its bound
+  std::vector<EnergyPoint> worst;  // the largest totals, worst first
+  std::string paramName;           // of EnergyPoint::param ("" when none is swept)
+  int channels = 1;                // colour channels of the Fresnel parameters
+};
+
+// One result per NDF/GAF pair of the request (size = grid nodes per axis, default 33).
+std::vector<EnergyResult> checkEnergy(const BakeRequest& req);
+// The verdict lines and the table of worst points.
+std::string formatEnergy(const std::vector<EnergyResult>& results);
+
+}  // namespace brdfbake
