@@ -13,6 +13,7 @@
 #include "cl/device.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"
+#include "common/material.h"
 #include "common/models.h"
 #include "reference/reference.h"
 
@@ -80,6 +81,32 @@ TEST(Fresnel, ClosedForms) {
   // Schlick's F_avg = (20 F0 + 1)/21
   for (double f0 : {0.0, 0.04, 0.5, 1.0})
     EXPECT_NEAR(reference::fresnelAvg({FRESNEL_SCHLICK, f0, 0}), (20 * f0 + 1) / 21, 1e-13) << f0;
+}
+
+// F_avg as the baker computes it (closed forms, or adaptive on the kernels' formulas) against the
+// reference's adaptive average of the complex amplitudes.
+TEST(Fresnel, AverageFresnelClosedFormsAndQuadrature) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int t = 0; t < 25; ++t) {
+    double f0 = u(rng), tint = u(rng), eta = 0.1 + 3 * u(rng), k = 10 * u(rng);
+    const Case cs[] = {{"schlick", FRESNEL_SCHLICK, f0, 0},     {"f82-tint", FRESNEL_F82_TINT, f0, tint},
+                       {"dielectric", FRESNEL_DIELECTRIC, eta, 0}, {"schlick-tir", FRESNEL_SCHLICK_TIR, eta, 0},
+                       {"conductor", FRESNEL_CONDUCTOR, eta, k}};
+    for (const Case& c : cs) {
+      FresnelChoice f;
+      f.model = c.model;
+      if (c.model == FRESNEL_SCHLICK || c.model == FRESNEL_F82_TINT) f.f0 = {c.x};
+      if (c.model == FRESNEL_F82_TINT) f.f82 = {c.y};
+      if (c.model != FRESNEL_SCHLICK && c.model != FRESNEL_F82_TINT) f.eta = {c.x};
+      if (c.model == FRESNEL_CONDUCTOR) f.k = {c.y};
+      double want = reference::fresnelAvg({c.model, c.x, c.y});
+      ASSERT_NEAR(fresnelAverage(f, 0), want, 1e-10) << c.name << " x " << c.x << " y " << c.y;
+    }
+  }
+  // the limits: eta -> 1 reflects nothing, eta -> 0 (total internal reflection everywhere) all
+  EXPECT_NEAR(fresnelAverage(FRESNEL_DIELECTRIC, 1.0, 0), 0.0, 1e-15);
+  EXPECT_NEAR(fresnelAverage(FRESNEL_DIELECTRIC, 1e-4, 0), 1.0, 1e-6);
 }
 
 // The kernels' real forms against the complex amplitudes, at random angles.

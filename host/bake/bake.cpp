@@ -16,7 +16,6 @@
 #include "common/errors.h"
 #include "common/material.h"
 #include "common/models.h"
-#include "reference/reference.h"
 #include "version.h"
 
 namespace brdfbake {
@@ -230,12 +229,9 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   img.strings["brdf.fresnel"] = job.kind == TableKind::SplitSum || fc.isOne() ? fresnel : fresnelNames()[fc.model];
   if (job.kind != TableKind::SplitSum && job.kind != TableKind::Kp && !fc.isOne()) {
     for (const auto& [name, value] : fc.parameters()) img.strings["brdf.fresnel." + name] = value;
-    // F_avg = 2 int F mu dmu, which Kulla-Conty's Fresnel term needs (host, adaptive, double)
+    // F_avg = 2 int F mu dmu, which Kulla-Conty's Fresnel term needs (host, double)
     std::string avg;
-    for (int c = 0; c < fc.channels(); ++c) {
-      auto [x, y] = fc.modelParams(c);
-      avg += (c ? "," : "") + fmt9(reference::fresnelAvg({fc.model, x, y}));
-    }
+    for (int c = 0; c < fc.channels(); ++c) avg += (c ? "," : "") + fmt9(fresnelAverage(fc, c));
     img.strings["brdf.fresnel.avg"] = avg;
   }
   img.strings["brdf.axes"] = axes;

@@ -1,5 +1,6 @@
 #include "common/material.h"
 
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -123,6 +124,43 @@ std::string FresnelChoice::describe() const {
   std::string s = fresnelNames()[model];
   for (const auto& [name, value] : parameters()) s += " " + name + "=" + value;
   return s;
+}
+
+double fresnelAverage(int model, double x, double y, double* err, std::string* how) {
+  auto closed = [&](double v) {
+    if (err) *err = 0;
+    if (how) *how = "closed form";
+    return v;
+  };
+  auto schlickAvg = [](double f0) { return (20 * f0 + 1) / 21; };  // 2 int (F0 + (1-F0)(1-mu)^5) mu dmu
+  switch (model) {
+    case FRESNEL_ONE: return closed(1);
+    case FRESNEL_SCHLICK: return closed(schlickAvg(x));
+    // 2 int mu (1 - mu)^6 mu dmu = 2 B(3, 7) = 1/126
+    case FRESNEL_F82_TINT: return closed(schlickAvg(x) - y / 126);
+    case FRESNEL_SCHLICK_TIR: {
+      double f0 = (x - 1) * (x - 1) / ((x + 1) * (x + 1));
+      if (x >= 1) return closed(schlickAvg(f0));
+      // F = 1 below mu_c = sqrt(1 - eta^2); above, mu dmu = eta^2 ct dct maps [mu_c, 1] to ct in [0, 1]
+      return closed((1 - x * x) + x * x * schlickAvg(f0));
+    }
+    default: break;
+  }
+  // dielectric, conductor: F from kernels/brdf/fresnel.h in double, split at the critical angle
+  auto f = [&](double mu) { return 2 * mu * brdf64::fresnel_F(model, x, y, mu); };
+  double oc = model == FRESNEL_DIELECTRIC && x < 1 ? std::sqrt((1 - x) * (1 + x)) : 0;
+  using GK = boost::math::quadrature::gauss_kronrod<double, 31>;
+  double e1 = 0, e2 = 0;
+  double v = oc * oc;  // F = 1 on [0, oc]
+  v += GK::integrate(f, oc, 1.0, 20, 1e-14, &e2);
+  if (err) *err = e1 + e2;
+  if (how) *how = "GK31 adaptive";
+  return v;
+}
+
+double fresnelAverage(const FresnelChoice& f, int c, double* err, std::string* how) {
+  auto [x, y] = f.kernelParams(c);
+  return fresnelAverage(f.model, x, y, err, how);
 }
 
 void validateFresnel(FresnelChoice& f) {

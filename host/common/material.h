@@ -29,6 +29,14 @@ struct FresnelChoice {
   std::vector<std::pair<std::string, std::string>> parameters() const;
 };
 
+// F_avg = 2 int_0^1 F(mu) mu dmu of channel c (Kulla and Conty 2017), in double: closed forms for
+// one (1), schlick ((20 F0 + 1)/21), f82-tint ((20 F0 + 1)/21 - b/126) and schlick-tir
+// (eta < 1: (1 - eta^2) + eta^2 (20 F0 + 1)/21); adaptive Gauss-Kronrod otherwise (dielectric,
+// conductor), split at the critical angle. *err (optional): the bound (0 for closed forms);
+// *how (optional): "closed form" or "GK31 adaptive".
+double fresnelAverage(int model, double x, double y, double* err = nullptr, std::string* how = nullptr);
+double fresnelAverage(const FresnelChoice& f, int c, double* err = nullptr, std::string* how = nullptr);
+
 // Fills the model's defaults (schlick F0 0.04; dielectric and schlick-tir eta 1.5; f82-tint F0
 // 0.04, tint 1) and checks every parameter: its range, that the model takes it, that a conductor
 // has eta and k. Throws Error(kExitUsage) naming the flag and its valid range.

@@ -122,6 +122,7 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
         if (p.total > 1 + p.bound) res.violates = true;
       }
       res.channels = fc.channels();
+      for (int c = 0; c < fc.channels(); ++c) res.fresnelAvg.push_back(fresnelAverage(fc, c, nullptr, &res.fresnelAvgHow));
       pts.resize(std::min(pts.size(), kWorstShown));
       res.worst = pts;
       out.push_back(res);
@@ -142,6 +143,9 @@ std::string formatEnergy(const std::vector<EnergyResult>& results) {
       std::snprintf(line, sizeof line, "conserves: %s: largest total albedo %.6g at mu=%.4g r=%.4g (bound %.2g)\n",
                     r.material.c_str(), w.total, w.mu, w.r, w.bound);
     s += line;
+    s += "  F_avg (2 int F mu dmu, " + r.fresnelAvgHow + "):";
+    for (double f : r.fresnelAvg) s += " " + fmtG(f);
+    s += "\n";
     std::snprintf(line, sizeof line, "  %6s  %6s  %8s  %7s  %10s  %10s  %10s  %9s\n", "mu", "r",
                   r.paramName.empty() ? "" : r.paramName.c_str(), "channel", "E_spec", "diffuse", "total", "bound");
     s += line;

@@ -21,6 +21,8 @@ struct EnergyResult {
   std::vector<EnergyPoint> worst;  // the largest totals, worst first
   std::string paramName;           // of EnergyPoint::param ("" when none is swept)
   int channels = 1;                // colour channels of the Fresnel parameters
+  std::vector<double> fresnelAvg;  // F_avg per channel
+  std::string fresnelAvgHow;       // "closed form" or the quadrature
 };
 
 // One result per NDF/GAF pair of the request (size = grid nodes per axis, default 33).
