@@ -406,6 +406,24 @@ TEST(CliMaterials, F82SplitSumHasAThirdChannelAndDiffuseSplitSumHoldsBurley) {
   EXPECT_NEAR(b.planes[2][15], (1 - std::pow(1 - 31.0 / 32, 5) / 2) * (41.0 / 42), 0.005);
 }
 
+TEST(CliMaterials, FresnelAverageTableOverEta) {
+  fs::path d = freshDir("favg");
+  CmdResult r = run("--table fresnel-avg --fresnel dielectric --grid node --size 16 -o " + (d / "o").string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  brdfbake::TableImage t = brdfbake::readTableExr((d / "o/fresnel-avg_dielectric.exr").string());
+  EXPECT_EQ(t.strings["brdf.axes"], "eta");
+  EXPECT_EQ(t.v2f["brdf.eta.range"], std::make_pair(0.25f, 4.0f));
+  EXPECT_EQ(t.strings.count("brdf.fresnel.eta"), 0u) << "the table runs over eta";
+  for (int i = 0; i < 16; ++i) {
+    double eta = 0.25 + 3.75 * i / 15;
+    EXPECT_NEAR(t.planes[0][i], brdfbake::reference::fresnelAvg({FRESNEL_DIELECTRIC, eta, 0}), 2e-7) << "eta " << eta;
+  }
+  EXPECT_NEAR(t.planes[0][3], 0.0, 1e-7) << "eta = 1: no interface, no reflection";
+  r = run("--table fresnel-avg --fresnel schlick -o " + (d / "s").string());
+  EXPECT_EQ(r.code, 64);
+  EXPECT_NE(r.out.find("--table fresnel-avg runs over eta"), std::string::npos) << r.out;
+}
+
 TEST(CliMaterials, DiffuseAlbedoTables) {
   fs::path d = freshDir("diffuse");
   CmdResult r = run("--diffuse lambert --size 8 -o " + (d / "l").string());

@@ -27,6 +27,8 @@ namespace {
 // errors stay under 3e-7 (tests/accuracy_test.cpp, every pair; brdfbake-bench: 2.3e-7 on the
 // default table); the allowance keeps a 3x margin, and those tests check bound + allowance.
 constexpr double kFloatArithmeticAllowance = 1e-6;
+// The eta axis of fresnel-avg tables: both sides of an interface, glass (1.5) and its inverse.
+constexpr double kEtaLo = 0.25, kEtaHi = 4.0;
 
 }  // namespace
 }  // namespace brdfbake
@@ -195,6 +197,22 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       img.planes = {kt.planes[0]};
       channels = "R=G=B=k_p";
       break;
+    case TableKind::FresnelAvg: {
+      // F_avg(eta) on the host in double (1D, cheap): fresnelAverage, closed form or GK31
+      kt.planes = {std::vector<float>(job.width)};
+      kt.err.assign(job.width, 0.0f);
+      for (int i = 0; i < job.width; ++i) {
+        double t = job.nodeGrid ? i / (job.width - 1.0) : (i + 0.5) / job.width;
+        double eta = kEtaLo + (kEtaHi - kEtaLo) * t, e = 0;
+        kt.planes[0][i] = static_cast<float>(fresnelAverage(fc.model, eta, 0, &e));
+        kt.err[i] = static_cast<float>(e);
+      }
+      img.planes = {kt.planes[0]};
+      channels = "R=G=B=F_avg (2 int F(mu) mu dmu)";
+      axes = "eta";
+      fresnel = fresnelNames()[fc.model];
+      break;
+    }
   }
   // One-value tables repeat it in R, G and B: a lone R channel reads back as zeros through
   // FreeImage, and three.js's EXRLoader takes only R, G, B, A and Y; R, G, B reads everywhere.
@@ -227,7 +245,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
     }
   if (job.diffuse >= 0) img.strings["brdf.diffuse"] = diffuseNames()[job.diffuse];
   img.strings["brdf.fresnel"] = job.kind == TableKind::SplitSum || fc.isOne() ? fresnel : fresnelNames()[fc.model];
-  if (job.kind != TableKind::SplitSum && job.kind != TableKind::Kp && !fc.isOne()) {
+  if ((job.kind == TableKind::Albedo || job.kind == TableKind::AlbedoAvg) && !fc.isOne()) {
     for (const auto& [name, value] : fc.parameters()) img.strings["brdf.fresnel." + name] = value;
     // F_avg = 2 int F mu dmu, which Kulla-Conty's Fresnel term needs (host, double)
     std::string avg;
@@ -239,7 +257,13 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   img.strings["brdf.channels"] = channels;
   img.strings["brdf.method"] = methodText(job.kind);
   img.strings["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
-  if (job.kind == TableKind::Albedo && job.diffuse >= 0) {
+  if (job.kind == TableKind::FresnelAvg) {
+    img.v2f["brdf.eta.range"] = {static_cast<float>(kEtaLo), static_cast<float>(kEtaHi)};
+    img.strings["brdf.method"] = fc.model == FRESNEL_SCHLICK_TIR
+                                     ? "closed form: (20 F0 + 1)/21, and (1 - eta^2) + eta^2 (20 F0 + 1)/21 for eta < 1"
+                                     : "adaptive Gauss-Kronrod 31 in double on [sqrt(1-eta^2) or 0, 1], F = 1 below "
+                                       "the critical angle; error: its estimate + storage rounding";
+  } else if (job.kind == TableKind::Albedo && job.diffuse >= 0) {
     DiffuseAxis ax = diffuseAxis(job.diffuse);
     img.v2f["brdf." + ax.name + ".range"] = {static_cast<float>(ax.lo), static_cast<float>(ax.hi)};
     img.strings["brdf.method"] = diffuseMethod();

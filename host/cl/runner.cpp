@@ -197,6 +197,8 @@ void KernelRunner::prepare(TableKind kind, int ndf, int gaf) {
       if (Compiled* c = kpProgram(ndf)) compileKernel(*c, kKp);
       else compiled(ndf, GAF_NONE, kKp);
       break;
+    case TableKind::FresnelAvg:  // computed on the host
+      break;
   }
 }
 

@@ -10,7 +10,9 @@
 
 namespace brdfbake {
 
-int defaultSize(TableKind kind) { return kind == TableKind::SplitSum ? 128 : 32; }
+int defaultSize(TableKind kind) {
+  return kind == TableKind::SplitSum || kind == TableKind::FresnelAvg ? 128 : 32;
+}
 
 BakeRequest defaultRequest() {
   BakeRequest r;
@@ -35,7 +37,9 @@ std::string usageText() {
          "  --ndf NAME        " + joinNames(ndfNames()) + " (default ggx)\n"
          "  --gaf NAME        " + joinNames(gafNames()) + "\n"
          "                    (default smith-correlated)\n"
-         "  --table KIND      " + joinNames(tableNames()) + " (default: all four)\n"
+         "  --table KIND      " + joinNames(tableNames()) + "\n"
+         "                    (default: the first four; fresnel-avg: F_avg over eta, with --fresnel\n"
+         "                    dielectric or schlick-tir)\n"
          "  --size N          texels per axis, 1..8192 (default 128 for splitsum, 32 otherwise)\n"
          "  --grid G          texel-center (default: value at (i+0.5)/n) or node (at i/(n-1), n >= 2)\n"
          "  --half            store HALF channels instead of FLOAT\n"

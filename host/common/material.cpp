@@ -147,13 +147,17 @@ double fresnelAverage(int model, double x, double y, double* err, std::string* h
     default: break;
   }
   // dielectric, conductor: F from kernels/brdf/fresnel.h in double, split at the critical angle
-  auto f = [&](double mu) { return 2 * mu * brdf64::fresnel_F(model, x, y, mu); };
+  // mu = oc + (1 - oc) t^2: F has a square-root end at the critical angle oc (eta < 1), and for eta
+  // near 1 changes on the scale mu ~ sqrt(eta^2 - 1) next to 0; the substitution smooths both
   double oc = model == FRESNEL_DIELECTRIC && x < 1 ? std::sqrt((1 - x) * (1 + x)) : 0;
+  auto f = [&](double t) {
+    double mu = oc + (1 - oc) * t * t;
+    return 2 * mu * brdf64::fresnel_F(model, x, y, mu) * 2 * (1 - oc) * t;
+  };
   using GK = boost::math::quadrature::gauss_kronrod<double, 31>;
-  double e1 = 0, e2 = 0;
-  double v = oc * oc;  // F = 1 on [0, oc]
-  v += GK::integrate(f, oc, 1.0, 20, 1e-14, &e2);
-  if (err) *err = e1 + e2;
+  double e = 0;
+  double v = oc * oc + GK::integrate(f, 0.0, 1.0, 15, 1e-13, &e);  // F = 1 on [0, oc]
+  if (err) *err = e;
   if (how) *how = "GK31 adaptive";
   return v;
 }

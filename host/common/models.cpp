@@ -18,7 +18,7 @@ const std::vector<std::string>& gafNames() {
 }
 
 const std::vector<std::string>& tableNames() {
-  static const std::vector<std::string> n = {"splitsum", "albedo", "albedo-avg", "kp"};
+  static const std::vector<std::string> n = {"splitsum", "albedo", "albedo-avg", "kp", "fresnel-avg"};
   return n;
 }
 

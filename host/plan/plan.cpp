@@ -9,6 +9,7 @@ namespace brdfbake {
 
 std::string fileName(const TableJob& job) {
   const std::string& t = tableName(job.kind);
+  if (job.kind == TableKind::FresnelAvg) return t + "_" + fresnelNames()[job.fresnel.model] + ".exr";
   if (job.kind == TableKind::Albedo && job.diffuse >= 0) return t + "_" + diffuseNames()[job.diffuse] + ".exr";
   if (job.kind == TableKind::SplitSum && job.diffuse >= 0)
     return t + "_" + ndfNames()[job.ndf] + "_" + gafNames()[job.gaf] + "_" + diffuseNames()[job.diffuse] + ".exr";
@@ -35,6 +36,17 @@ Plan makePlan(const BakeRequest& req) {
                                     "f82-tint (a third channel); bake --table albedo for this model");
     }
   }
+  if (std::find(req.tables.begin(), req.tables.end(), TableKind::FresnelAvg) != req.tables.end()) {
+    if (req.fresnel.model != FRESNEL_DIELECTRIC && req.fresnel.model != FRESNEL_SCHLICK_TIR)
+      throw Error(kExitUsage, "--table fresnel-avg runs over eta: it takes --fresnel dielectric or schlick-tir (for "
+                              "other models brdfbake energy prints F_avg, and every Fresnel table records it as "
+                              "brdf.fresnel.avg)");
+    int n = req.size ? *req.size : defaultSize(TableKind::FresnelAvg);
+    if (n < 2) throw Error(kExitUsage, "--size must be at least 2 for fresnel-avg, got " + std::to_string(n));
+    TableJob job{TableKind::FresnelAvg, -1, -1, n, 1, req.nodeGrid, req.half, "", req.fresnel, -1};
+    job.path = req.outDir + "/" + fileName(job);
+    plan.jobs.push_back(job);
+  }
   if (req.diffuse >= 0) {
     const std::string d = "--diffuse " + diffuseNames()[req.diffuse];
     for (TableKind kind : req.tables) {
@@ -59,6 +71,7 @@ Plan makePlan(const BakeRequest& req) {
   for (int ndf : req.ndfs) {
     for (TableKind kind : req.tables) {
       if (req.diffuse >= 0 && kind == TableKind::Albedo) continue;  // baked once above
+      if (kind == TableKind::FresnelAvg) continue;                      // likewise
       int n = req.size ? *req.size : defaultSize(kind);
       if (req.nodeGrid && n < 2)
         throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
