@@ -14,6 +14,7 @@
 #include "exr/table_file.h"
 #include "plan/plan.h"
 #include "report/energy.h"
+#include "report/verify.h"
 #include "version.h"
 
 int main(int argc, char** argv) {
@@ -41,6 +42,18 @@ int main(int argc, char** argv) {
         for (const auto& r : res)
           if (r.violates) return 1;  // a build gates on this
         return kExitOk;
+      }
+      case Command::Kind::Verify: {
+        if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);
+        std::string pageLine;
+        std::vector<VerifyResult> res = runVerify(cmd.bake, &pageLine);
+        bool ok = true;
+        for (const auto& r : res) {
+          std::cout << r.summary();
+          ok = ok && r.pass();
+        }
+        std::cout << pageLine;
+        return ok ? kExitOk : 1;
       }
       case Command::Kind::Bake: {
         // before the first OpenCL call: PoCL reads its cache location when the platform starts

@@ -243,7 +243,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
     img.strings["brdf.ndf"] = ndfNames()[job.ndf];
     img.strings["brdf.gaf"] = gafNames()[job.gaf];
     img.strings["brdf.roughness"] = roughnessMapping(job.ndf);
-    }
+  }
   if (job.diffuse >= 0) img.strings["brdf.diffuse"] = diffuseNames()[job.diffuse];
   img.strings["brdf.fresnel"] = job.kind == TableKind::SplitSum || fc.isOne() ? fresnel : fresnelNames()[fc.model];
   if ((job.kind == TableKind::Albedo || job.kind == TableKind::AlbedoAvg) && !fc.isOne()) {

@@ -320,6 +320,11 @@ void KernelRunner::run(Compiled& c, cl::Kernel& k, size_t gx, size_t gy) {
 }
 
 KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid, const HemiWeight& w) {
+  return hemisphereRange(ndf, gaf, nx, ny, 0.0f, 1.0f, 0.0f, 1.0f, nodeGrid, w);
+}
+
+KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, float muLo, float muHi, float rLo,
+                                          float rHi, bool nodeGrid, const HemiWeight& w) {
   Compiled& c = compiled(ndf, gaf, kHemisphere);
   Slot& s = *slots_[c.slot];
   size_t n = static_cast<size_t>(nx) * ny;
@@ -332,10 +337,10 @@ KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool node
   k.setArg(3, err);
   k.setArg(4, nx);
   k.setArg(5, ny);
-  k.setArg(6, 0.0f);
-  k.setArg(7, 1.0f);
-  k.setArg(8, 0.0f);
-  k.setArg(9, 1.0f);
+  k.setArg(6, muLo);
+  k.setArg(7, muHi);
+  k.setArg(8, rLo);
+  k.setArg(9, rHi);
   k.setArg(10, nodeGrid ? 1 : 0);
   setWeightArgs(k, 11, w);
   run(c, k, nx, ny);

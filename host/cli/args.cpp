@@ -28,6 +28,8 @@ std::string usageText() {
          "  brdfbake bake [options]       the same, spelled out\n"
          "  brdfbake devices              list OpenCL platforms and devices\n"
          "  brdfbake info FILE.exr        print a table's metadata and value range\n"
+         "  brdfbake verify [options]     white and weak furnace, normalisation, reciprocity, energy loss of\n"
+         "                                --ndf x --gaf pairs; page with plots in DIR/verify (exit 1: a check failed)\n"
          "  brdfbake energy [options]     does a whole material conserve energy? worst total albedo over\n"
          "                                (mu, r, parameter); exit 0 if it conserves, 1 if it does not\n"
          "  brdfbake --help | --version\n"
@@ -142,8 +144,11 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   } else if (first == "energy") {
     i = 1;
     cmd.kind = Command::Kind::Energy;
+  } else if (first == "verify") {
+    i = 1;
+    cmd.kind = Command::Kind::Verify;
   } else if (first.rfind("-", 0) != 0) {
-    throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, energy, devices, info (see --help)");
+    throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, energy, verify, devices, info (see --help)");
   }
   // `brdfbake [options]` is `brdfbake bake [options]`: every bake option works at the top level.
   std::vector<std::string> seen;  // scalar options given so far: each at most once
@@ -233,6 +238,13 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         throw Error(kExitUsage, std::string(o) + ": not an energy option (energy writes no tables)");
     if (req.sigma && req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
       throw Error(kExitUsage, "--sigma: only --diffuse oren-nayar and oren-nayar-as-printed take it");
+  }
+  if (cmd.kind == Command::Kind::Verify) {
+    // verify checks model pairs: it writes a report page (under -o), no tables
+    for (const char* o : {"--table", "--grid", "--half", "--fresnel", "--diffuse"})
+      if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()) ||
+          (std::string(o) == "--diffuse" && req.diffuse >= 0))
+        throw Error(kExitUsage, std::string(o) + ": not a verify option (verify checks NDF/GAF pairs: --ndf, --gaf, --size, -o)");
   }
   req.tablesGiven = !req.tables.empty();
   if (!req.tables.empty()) {

@@ -301,6 +301,18 @@ double gaf(int ndf, int g, double r, const double i[3], const double o[3], const
   return gafOf(model(ndf, g, r), dvec3(i[0], i[1], i[2]), dvec3(o[0], o[1], o[2]), dvec3(h[0], h[1], h[2]));
 }
 
+double normalisation(int ndf, double r, double invKp) {
+  brdf64::BrdfParams p{};
+  p.r = r;
+  p.alpha = r * r;
+  p.inv_kp = invKp;
+  auto f = [&](double th) {
+    double s = std::sin(th), c = std::cos(th);
+    return 2 * kPi * brdf64::ndf_D(ndf, p, c, s * s) * c * s;
+  };
+  return integrate(f, 0, kPi / 2, lobeBreaks(p.alpha, kPi / 2));
+}
+
 double kp(int ndf, double r) {
   brdf64::BrdfParams p{};
   p.r = r;

@@ -42,6 +42,9 @@ struct Moments {
 
 // k_p of the NDF's raw shape at perceptual roughness r (alpha = r^2).
 double kp(int ndf, double r);
+// int D(h) (n.h) dw_h of the normalised NDF with the given 1/k_p (used by the gaussian only; the
+// kernels' own, from brdf_params), adaptively: 1 for a correctly normalised D.
+double normalisation(int ndf, double r, double invKp);
 // Split-sum moments and directional albedo at (mu, r), limits included as above.
 // With a weight: b is the albedo with that Fresnel (Weight::Fresnel), a + b the F = 1 albedo.
 Moments albedo(int ndf, int gaf, double r, double mu, const Weight& w = {});
