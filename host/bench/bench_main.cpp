@@ -4,7 +4,7 @@
 // measured against the host reference (adaptive Gauss-Kronrod in double).
 //
 // usage: brdfbake-bench [--size N] [--samples S] [--stride K] [--repeat R] [--device TEXT] [--times-only]
-//                       [--all-pairs] [--albedo-avg] [--cold-start [--build-threads N] [--skip-all]]
+//                       [--all-pairs] [--albedo-avg] [--cold-start [--build-threads N] [--skip-all]] [--materials]
 //   --stride K: reference on every K-th texel per axis plus the first/last rows and columns
 //               (default 1: every texel; the reference takes a few seconds for all 16384).
 //   --times-only: skip the errors; times and ratio only.
@@ -20,6 +20,11 @@
 //               the albedo-avg/albedo table time ratio. ~1 minute on 2 cores.
 //               --build-threads N: threads for the program builds (default: all cores; 1 shows
 //               the serial cost). --skip-all: only the default set.
+//   --materials: 32x32 dielectric albedo (ggx + smith-correlated, eta 1.5 and 1/1.5) and diffuse
+//               albedo (burley, oren-nayar) tables, kernel vs an S-sample Monte Carlo estimator of
+//               the same quantity: times, errors against the reference (dielectric on every
+//               --stride-th texel, default 4, plus edges; diffuse on all), kernel bounds.
+//               host/bench/materials_bench.cpp. ~2 minutes.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -32,6 +37,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench/bench_util.h"
 #include "bench/karis_mc.h"
 #include "cl/device.h"
 #include "cl/runner.h"
@@ -41,29 +47,13 @@
 #include "reference/reference.h"
 
 using namespace brdfbake;
+using namespace brdfbake::bench;
+
+namespace brdfbake {
+int materialsBench(KernelRunner& runner, int samples, int repeat, int stride);  // materials_bench.cpp
+}
 
 namespace {
-double rel(double got, double want) { return std::fabs(got - want) / std::max(1.0, std::fabs(want)); }
-
-// The texels whose errors are measured: every stride-th per axis, plus the table's edges.
-std::vector<std::pair<int, int>> sampledTexels(int n, int stride) {
-  std::vector<std::pair<int, int>> texels;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      if ((i % stride == 0 && j % stride == 0) || i == 0 || j == 0 || i == n - 1 || j == n - 1) texels.push_back({i, j});
-  return texels;
-}
-
-// f(k) for every k in [0, count), on 2 threads (the reference is the slow part).
-template <class F>
-void onTwoThreads(size_t count, F f) {
-  std::thread th([&] {
-    for (size_t k = 1; k < count; k += 2) f(k);
-  });
-  for (size_t k = 0; k < count; k += 2) f(k);
-  th.join();
-}
-
 // Every pair's n x n texel-centre split-sum table against the reference on the sampled texels.
 // Returns 0 if every error is within its bound.
 int allPairs(KernelRunner& runner, int n, int stride) {
@@ -98,10 +88,6 @@ int allPairs(KernelRunner& runner, int n, int stride) {
     }
   std::printf("all pairs: largest error %.2e, %d texels over their bound\n", all, over);
   return over == 0 ? 0 : 1;
-}
-
-double seconds(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // The tables of a bake: the default set (ggx + smith-correlated: split-sum 128, albedo 32,
@@ -199,18 +185,6 @@ double timeChild(const std::string& cacheDir, const std::string& device, bool al
   return t;
 }
 
-// Best of `repeat` of f().
-template <class F>
-double best(int repeat, F f) {
-  double b = 1e30;
-  for (int r = 0; r < repeat; ++r) {
-    auto t0 = std::chrono::steady_clock::now();
-    f();
-    b = std::min(b, seconds(t0));
-  }
-  return b;
-}
-
 // albedo-avg against albedo (ggx + smith-correlated, size 32), best of `repeat`, interleaved.
 void avgVsAlbedo(KernelRunner& runner, int repeat, double* tAvg, double* tAlb) {
   runner.prepareAll({{TableKind::Albedo, 0, 10}, {TableKind::AlbedoAvg, 0, 10}});
@@ -306,6 +280,7 @@ int main(int argc, char** argv) {
   int n = 128, samples = 1024, stride = 1, repeat = 3;
   std::string device;
   bool timesOnly = false, everyPair = false, avgCheck = false, cold = false, skipAll = false, strideSet = false;
+  bool materials = false;
   int buildThreads = 0;
   std::string child;
   for (int i = 1; i < argc; ++i) {
@@ -323,6 +298,7 @@ int main(int argc, char** argv) {
     else if (a == "--all-pairs") everyPair = true;
     else if (a == "--albedo-avg") avgCheck = true;
     else if (a == "--cold-start") cold = true;
+    else if (a == "--materials") materials = true;
     else if (a == "--skip-all") skipAll = true;
     else if (a == "--build-threads") buildThreads = std::atoi(next().c_str());
     else if (a == "--bake-child") child = next();
@@ -337,6 +313,7 @@ int main(int argc, char** argv) {
     KernelRunner runner(dev.device);
     if (everyPair) return allPairs(runner, n, stride);
     if (avgCheck) return albedoAvgCheck(runner, strideSet ? stride : 8, repeat);
+    if (materials) return materialsBench(runner, samples, repeat, strideSet ? stride : 4);
     runner.hemisphere(ndf, gaf, 1, 1, false);  // builds the program: not part of the timing
 
     double tq = 1e30, tm = 1e30;
