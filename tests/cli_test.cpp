@@ -509,3 +509,56 @@ TEST(CliMaterials, BadMaterialInputNamesTheFlagAndWritesNothing) {
 }
 
 }  // namespace
+
+namespace {
+
+// --- evidence: verify ----------------------------------------------------------------------------
+
+TEST(CliEvidence, VerifyPassesTheDefaultPairAndWritesItsPage) {
+  fs::path d = freshDir("verify");
+  CmdResult r = run("verify --size 9 -o " + d.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("pass  ggx+smith-correlated: white furnace ok; weak furnace ok; k_p normalisation ok; "
+                       "reciprocity ok"),
+            std::string::npos)
+      << r.out;
+  for (const char* f : {"index.html", "verify.csv", "furnace_ggx_smith-correlated.svg", "loss_ggx_smith-correlated.svg"}) {
+    ASSERT_TRUE(fs::exists(d / "verify" / f)) << f;
+    EXPECT_GT(fs::file_size(d / "verify" / f), 200u) << f;
+  }
+  std::string html = bytes(d / "verify/index.html");
+  EXPECT_NE(html.find("<img src=\"furnace_ggx_smith-correlated.svg\""), std::string::npos);
+  EXPECT_NE(bytes(d / "verify/furnace_ggx_smith-correlated.svg").find("<svg"), std::string::npos);
+  EXPECT_EQ(countFiles(d), 8u) << "the page, its CSV, two data files, scripts and plots; no temporaries";
+}
+
+TEST(CliEvidence, VerifyFlagsBrokenModels) {
+  fs::path d = freshDir("verifybad");
+  CmdResult r = run("verify --ndf blinn-phong,ggx --gaf smith,none --size 9 -o " + d.string());
+  EXPECT_EQ(r.code, 1) << r.out;
+  // blinn-phong borrowing Beckmann's Lambda: the albedo exceeds 1, the weak furnace is off by 0.71
+  EXPECT_NE(r.out.find("FAIL  blinn-phong+smith: white furnace FAILS (max E = 1.3445"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("weak furnace FAILS (max |W(mu)/mu - 1| = 0.7076"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("FAIL  ggx+none: white furnace FAILS"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("pass  ggx+smith:"), std::string::npos) << r.out;
+}
+
+TEST(CliEvidence, WithoutGnuplotTheDataStillLandsAndTheLineSaysHow) {
+  fs::path d = freshDir("verifynoplot");
+  CmdResult r = run("verify --size 5 -o " + d.string(), "", "BRDFBAKE_GNUPLOT=/nonexistent/gnuplot");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("plots not drawn: gnuplot not found; apt-get install gnuplot-nox"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(d / "verify/furnace_ggx_smith-correlated.dat"));
+  EXPECT_TRUE(fs::exists(d / "verify/furnace_ggx_smith-correlated.gp"));
+  EXPECT_FALSE(fs::exists(d / "verify/furnace_ggx_smith-correlated.svg"));
+}
+
+TEST(CliEvidence, VerifyRejectsTableOptions) {
+  CmdResult r = run("verify --table albedo");
+  EXPECT_EQ(r.code, 64) << r.out;
+  EXPECT_NE(r.out.find("--table: not a verify option"), std::string::npos) << r.out;
+  r = run("verify --size 1");
+  EXPECT_EQ(r.code, 64) << r.out;
+}
+
+}  // namespace

@@ -119,6 +119,7 @@ KernelTable bakeOne(KernelRunner& runner, const BenchTable& t) {
     case TableKind::AlbedoAvg:
       return runner.albedoAvg(t.ndf, t.gaf, t.size, false);
     case TableKind::Kp:
+    case TableKind::FresnelAvg:  // not in the bench's sets (host-side, no kernel)
       break;
   }
   return runner.kp(t.ndf, t.size, false);

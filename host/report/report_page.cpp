@@ -35,6 +35,12 @@ void writeFile(const fs::path& p, const std::string& text) {
   if (!f) throw Error(kExitIoErr, "cannot write " + p.string());
 }
 
+// The gnuplot to run: $BRDFBAKE_GNUPLOT when set (a path), else gnuplot on PATH.
+std::string gnuplotProgram() {
+  const char* env = std::getenv("BRDFBAKE_GNUPLOT");
+  return env && *env ? env : "gnuplot";
+}
+
 // gnuplot on `script` inside `dir`; true when it ran and exited 0.
 bool runGnuplot(const fs::path& dir, const std::string& script) {
   pid_t pid = fork();
@@ -43,7 +49,8 @@ bool runGnuplot(const fs::path& dir, const std::string& script) {
     if (chdir(dir.c_str()) != 0) _exit(127);
     FILE* devnull = std::fopen("/dev/null", "w");
     if (devnull) dup2(fileno(devnull), STDERR_FILENO);
-    execlp("gnuplot", "gnuplot", script.c_str(), static_cast<char*>(nullptr));
+    std::string prog = gnuplotProgram();
+    execlp(prog.c_str(), prog.c_str(), script.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
   int status = 0;
@@ -54,6 +61,8 @@ bool runGnuplot(const fs::path& dir, const std::string& script) {
 }  // namespace
 
 bool ReportPage::gnuplotAvailable() {
+  std::string prog = gnuplotProgram();
+  if (prog.find('/') != std::string::npos) return access(prog.c_str(), X_OK) == 0;
   const char* path = std::getenv("PATH");
   if (!path) return false;
   std::string p = path;
@@ -61,7 +70,7 @@ bool ReportPage::gnuplotAvailable() {
   while (start <= p.size()) {
     size_t colon = p.find(':', start);
     std::string d = p.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
-    if (!d.empty() && access((d + "/gnuplot").c_str(), X_OK) == 0) return true;
+    if (!d.empty() && access((d + "/" + prog).c_str(), X_OK) == 0) return true;
     if (colon == std::string::npos) break;
     start = colon + 1;
   }

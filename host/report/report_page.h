@@ -26,6 +26,7 @@ class ReportPage {
   // Returns a line for the terminal: where the page is, or how to get the plots.
   std::string write(const std::string& dir) const;
 
+  // gnuplot ($BRDFBAKE_GNUPLOT, else on PATH) can be run.
   static bool gnuplotAvailable();
 
  private:
