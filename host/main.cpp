@@ -14,6 +14,7 @@
 #include "exr/table_file.h"
 #include "plan/plan.h"
 #include "report/energy.h"
+#include "report/stress.h"
 #include "report/verify.h"
 #include "version.h"
 
@@ -54,6 +55,15 @@ int main(int argc, char** argv) {
         }
         std::cout << pageLine;
         return ok ? kExitOk : 1;
+      }
+      case Command::Kind::Stress: {
+        if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);
+        std::string pageLine;
+        std::vector<StressPoint> pts = runStress(cmd.bake, &pageLine);
+        std::cout << formatStress(pts) << pageLine;
+        for (const auto& p : pts)
+          if (!p.pass()) return 1;
+        return kExitOk;
       }
       case Command::Kind::Bake: {
         // before the first OpenCL call: PoCL reads its cache location when the platform starts

@@ -553,6 +553,24 @@ TEST(CliEvidence, WithoutGnuplotTheDataStillLandsAndTheLineSaysHow) {
   EXPECT_FALSE(fs::exists(d / "verify/furnace_ggx_smith-correlated.svg"));
 }
 
+// stress is clean on the shipped models: every point finite, within its bound, limits met.
+TEST(CliEvidence, StressIsCleanAndWritesItsPage) {
+  fs::path d = freshDir("stress");
+  CmdResult r = run("stress -o " + d.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("all 53 points pass: finite, within their bounds, limits met"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("blinn-phong exponent 1e+12"), std::string::npos);
+  EXPECT_NE(r.out.find("dielectric eta 1.0001"), std::string::npos);
+  EXPECT_NE(r.out.find("oren-nayar sigma 1.571"), std::string::npos);
+  for (const char* f : {"index.html", "stress.csv", "stress.svg"}) {
+    ASSERT_TRUE(fs::exists(d / "stress" / f)) << f;
+    EXPECT_GT(fs::file_size(d / "stress" / f), 200u) << f;
+  }
+  r = run("stress --ndf ggx");
+  EXPECT_EQ(r.code, 64) << r.out;
+  EXPECT_NE(r.out.find("not stress options"), std::string::npos) << r.out;
+}
+
 TEST(CliEvidence, VerifyRejectsTableOptions) {
   CmdResult r = run("verify --table albedo");
   EXPECT_EQ(r.code, 64) << r.out;

@@ -354,24 +354,26 @@ KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, floa
 
 namespace {
 // The arguments the kernels over r share: (values, bounds, n, r range [0, 1], grid).
-void setRArgs(cl::Kernel& k, const cl::Buffer& values, const cl::Buffer& bounds, int n, bool nodeGrid) {
+void setRArgs(cl::Kernel& k, const cl::Buffer& values, const cl::Buffer& bounds, int n, bool nodeGrid, float rLo,
+              float rHi) {
   k.setArg(0, values);
   k.setArg(1, bounds);
   k.setArg(2, n);
-  k.setArg(3, 0.0f);
-  k.setArg(4, 1.0f);
+  k.setArg(3, rLo);
+  k.setArg(4, rHi);
   k.setArg(5, nodeGrid ? 1 : 0);
 }
 }  // namespace
 
-KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w) {
+KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w, float rLo,
+                                    float rHi) {
   Compiled& c = compiled(ndf, gaf, kAlbedoNodes);
   Slot& s = *slots_[c.slot];
   const int m = AVG_NODES;
   size_t count = static_cast<size_t>(m) * n;
   cl::Buffer e = outBuffer(s.context, count), err = outBuffer(s.context, count);
   cl::Kernel k(c.program, kAlbedoNodes);
-  setRArgs(k, e, err, n, nodeGrid);
+  setRArgs(k, e, err, n, nodeGrid, rLo, rHi);
   setWeightArgs(k, 6, w);
   run(c, k, m, n);
   std::vector<float> ev = readBack(s.queue, e, count), errv = readBack(s.queue, err, count);
@@ -398,14 +400,14 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
   return t;
 }
 
-KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid) {
+KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid, float rLo, float rHi) {
   Compiled* pc = kpProgram(ndf);
   Compiled& c = pc ? *pc : compiled(ndf, GAF_NONE, kKp);
   compileKernel(c, kKp);
   Slot& s = *slots_[c.slot];
   cl::Buffer v = outBuffer(s.context, n), err = outBuffer(s.context, n);
   cl::Kernel k(c.program, kKp);
-  setRArgs(k, v, err, n, nodeGrid);
+  setRArgs(k, v, err, n, nodeGrid, rLo, rHi);
   run(c, k, n, 0);
   KernelTable t;
   t.width = n;
@@ -417,7 +419,8 @@ KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid) {
 
 // The diffuse kernel has its own arguments: it is created here and launched by run() (the fixed
 // local size on a CPU device), not pre-compiled by compileKernel()/emptyArgs().
-KernelTable KernelRunner::diffuseAlbedo(int model, int nx, int ny, float pLo, float pHi, bool nodeGrid) {
+KernelTable KernelRunner::diffuseAlbedo(int model, int nx, int ny, float pLo, float pHi, bool nodeGrid, float muLo,
+                                        float muHi) {
   static const char* const kDiffuse = "bake_diffuse_albedo";
   Compiled* pc = programs_.empty() ? nullptr : find(programs_.begin()->first.first, programs_.begin()->first.second);
   if (!pc) {
@@ -433,8 +436,8 @@ KernelTable KernelRunner::diffuseAlbedo(int model, int nx, int ny, float pLo, fl
   k.setArg(1, err);
   k.setArg(2, nx);
   k.setArg(3, ny);
-  k.setArg(4, 0.0f);
-  k.setArg(5, 1.0f);
+  k.setArg(4, muLo);
+  k.setArg(5, muHi);
   k.setArg(6, pLo);
   k.setArg(7, pHi);
   k.setArg(8, nodeGrid ? 1 : 0);

@@ -71,16 +71,18 @@ class KernelRunner {
   // E_avg over r: E at the 31 nodes of kernels/integrate/hemisphere.h's rule for every r on the
   // device (one work-item per node), the weighted sums and bounds here in double.
   // With a Fresnel weight, the average of that model's albedo.
-  KernelTable albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w = {});
+  KernelTable albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w = {}, float rLo = 0.0f,
+                        float rHi = 1.0f);
   // k_p over r.
-  KernelTable kp(int ndf, int n, bool nodeGrid);
+  KernelTable kp(int ndf, int n, bool nodeGrid, float rLo = 0.0f, float rHi = 1.0f);
 
   // Threads prepareAll uses (default: hardware_concurrency; 1 = in order on this thread).
   void setBuildThreads(int n) { buildThreads_ = n; }
   // Directional albedo E(mu) of diffuse model `model` (kernels/brdf/diffuse.h, DIFFUSE_*) over
   // mu in [0, 1] (x, nx) and its parameter in [pLo, pHi] (y, ny); planes {E}, err relative to
   // max(1, |E|). Runs in any built program (the kernel is in all), else builds ggx + smith-correlated.
-  KernelTable diffuseAlbedo(int model, int nx, int ny, float pLo, float pHi, bool nodeGrid);
+  KernelTable diffuseAlbedo(int model, int nx, int ny, float pLo, float pHi, bool nodeGrid, float muLo = 0.0f,
+                            float muHi = 1.0f);
 
  private:
   struct Slot;      // a context and its queue

@@ -30,6 +30,8 @@ std::string usageText() {
          "  brdfbake info FILE.exr        print a table's metadata and value range\n"
          "  brdfbake verify [options]     white and weak furnace, normalisation, reciprocity, energy loss of\n"
          "                                --ndf x --gaf pairs; page with plots in DIR/verify (exit 1: a check failed)\n"
+         "  brdfbake stress [-o DIR]      every table kind through the stiff and extreme cases, against the\n"
+         "                                reference; page in DIR/stress (exit 1: NaN/Inf, missed limit, over bound)\n"
          "  brdfbake energy [options]     does a whole material conserve energy? worst total albedo over\n"
          "                                (mu, r, parameter); exit 0 if it conserves, 1 if it does not\n"
          "  brdfbake --help | --version\n"
@@ -147,8 +149,11 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   } else if (first == "verify") {
     i = 1;
     cmd.kind = Command::Kind::Verify;
+  } else if (first == "stress") {
+    i = 1;
+    cmd.kind = Command::Kind::Stress;
   } else if (first.rfind("-", 0) != 0) {
-    throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, energy, verify, devices, info (see --help)");
+    throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, energy, verify, stress, devices, info (see --help)");
   }
   // `brdfbake [options]` is `brdfbake bake [options]`: every bake option works at the top level.
   std::vector<std::string> seen;  // scalar options given so far: each at most once
@@ -229,6 +234,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     }
   }
   BakeRequest def = defaultRequest();
+  const bool modelsGiven = !req.ndfs.empty() || !req.gafs.empty() || req.diffuse >= 0;
   if (req.ndfs.empty()) req.ndfs = def.ndfs;
   if (req.gafs.empty()) req.gafs = def.gafs;
   if (cmd.kind == Command::Kind::Energy) {
@@ -238,6 +244,14 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         throw Error(kExitUsage, std::string(o) + ": not an energy option (energy writes no tables)");
     if (req.sigma && req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
       throw Error(kExitUsage, "--sigma: only --diffuse oren-nayar and oren-nayar-as-printed take it");
+  }
+  if (cmd.kind == Command::Kind::Stress) {
+    // stress runs its own fixed sweep of stiff cases: it takes only where to write and what device
+    for (const char* o : {"--table", "--grid", "--half", "--fresnel", "--size"})
+      if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()))
+        throw Error(kExitUsage, std::string(o) + ": not a stress option (stress sweeps fixed stiff cases: -o, --device)");
+    if (modelsGiven)
+      throw Error(kExitUsage, "--ndf/--gaf/--diffuse: not stress options (stress sweeps fixed stiff cases: -o, --device)");
   }
   if (cmd.kind == Command::Kind::Verify) {
     // verify checks model pairs: it writes a report page (under -o), no tables

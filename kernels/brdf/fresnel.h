@@ -26,7 +26,7 @@ BRDF_FN real fresnel_dielectric(param_t eta, real c) {
   c = fabs(c);
   real g2 = eta * eta + c * c - RC(1.0);
   real g = sqrt(fmax(g2, RC(0.0)));
-  real a = (g - c) / (g + c);
+  real a = (g - c) / fmax(g + c, RC(1e-30)); /* eta = 1 at c = 0: 0, the limit of F = 0 */
   real b = (c * (g + c) - RC(1.0)) / (c * (g - c) + RC(1.0));
   real f = RC(0.5) * a * a * (RC(1.0) + b * b);
   return g2 < RC(0.0) ? RC(1.0) : f;

@@ -1,0 +1,212 @@
+#include "report/stress.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+#include "cl/device.h"
+#include "cl/runner.h"
+#include "common/brdf_host.h"
+#include "common/errors.h"
+#include "common/models.h"
+#include "reference/diffuse_reference.h"
+#include "reference/reference.h"
+#include "report/report_page.h"
+
+namespace brdfbake {
+
+namespace {
+
+constexpr double kAllowance = 1e-6;  // the kernels' float arithmetic (host/bake)
+// The reference approaches mu = 0 and the corner from inside (reference.h): it agrees with the
+// kernels' limits there to ~1e-7 (tests/accuracy_test.cpp); elsewhere to its 1e-9.
+constexpr double kLimitSlack = 1e-7;
+constexpr double kPi = 3.14159265358979323846;
+
+std::string g(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v);
+  return b;
+}
+std::string g6(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
+double rel(double a, double b) { return std::fabs(a - b) / std::max(1.0, std::fabs(b)); }
+
+// r from a Blinn-Phong exponent (e = 2/alpha^2 - 2) or a gaussian c (c = 1/alpha), alpha = r^2.
+double rOfExponent(double e) { return std::sqrt(std::sqrt(2 / (e + 2))); }
+double rOfGaussianC(double c) { return std::sqrt(1 / c); }
+
+struct Runner {
+  KernelRunner& k;
+  std::vector<StressPoint>& out;
+
+  // One point of a kernel result against the reference, with an optional limit (|value - limit| <= tol).
+  void add(const std::string& sweep, const std::string& label, double v, double relBound, double ref, double slack,
+           const std::string& limitText = "", double limit = NAN, double tol = 0) {
+    StressPoint p;
+    p.sweep = sweep;
+    p.label = label;
+    p.value = v;
+    p.reference = ref;
+    p.finite = std::isfinite(v) && std::isfinite(relBound);
+    p.error = rel(v, ref);
+    p.bound = relBound + kAllowance;
+    p.withinBound = p.finite && p.error <= p.bound + slack;
+    if (!limitText.empty()) {
+      p.limit = limitText;
+      p.limitMet = p.finite && std::fabs(v - limit) <= tol;
+    }
+    out.push_back(p);
+    std::fprintf(stderr, "stress: %zu %s, %s\n", out.size(), sweep.c_str(), label.c_str());
+  }
+
+  // E (or a Fresnel albedo) at one (mu, r).
+  void specular(const std::string& sweep, int ndf, int gaf, double mu, double r, const reference::Weight& w,
+                const std::string& limitText = "", double limit = NAN, double tol = 0) {
+    HemiWeight hw;
+    if (w.kind == reference::Weight::Fresnel)
+      hw = HemiWeight{HEMI_FRESNEL, w.f.model, static_cast<float>(w.f.x), static_cast<float>(w.f.y)};
+    float fm = static_cast<float>(mu), fr = static_cast<float>(r);
+    KernelTable t = k.hemisphereRange(ndf, gaf, 1, 1, fm, fm, fr, fr, true, hw);
+    bool fres = w.kind == reference::Weight::Fresnel;
+    double v = fres ? t.planes[1][0] : t.planes[2][0];
+    reference::Moments m = reference::albedo(ndf, gaf, fr, fm, w);
+    add(sweep, ndfNames()[ndf] + "+" + gafNames()[gaf] + " mu=" + g(fm) + " r=" + g(fr), v, t.err[0],
+        fres ? m.b : m.e(), fm == 0 || fr == 0 ? kLimitSlack : 3e-9, limitText, limit, tol);
+  }
+};
+
+}  // namespace
+
+std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine) {
+  DeviceEntry dev = selectDevice(req.device);
+  KernelRunner kr(dev.device);
+  std::vector<StressPoint> pts;
+  Runner run{kr, pts};
+  const reference::Weight one{};
+  const int ggx = NDF_GGX, sc = GAF_SMITH_CORRELATED;
+
+  // alpha -> 0 and exactly 0: with Smith, E -> 1 (the mirror reflects everything), A + B = E
+  for (double r : {0.1, 0.03, 0.01, 0.0})
+    for (int ndf : {NDF_GGX, NDF_BECKMANN})
+      run.specular("alpha -> 0, albedo", ndf, sc, 0.5, r, one, "E -> 1 (mirror)", 1.0, r == 0 ? 1e-7 : r > 0.05 ? 0.05 : 1e-3);
+  // Blinn-Phong exponents to 1e9 and beyond: the lobe is a mirror, E -> 1
+  for (double e : {1e3, 1e6, 1e9, 1e12})
+    run.specular("blinn-phong exponent " + g(e), NDF_BLINN_PHONG, sc, 0.5, rOfExponent(e), one, "E -> 1 (mirror)", 1.0,
+                 e >= 1e6 ? 1e-3 : 0.05);
+  // gaussian c to 1e3
+  for (double c : {10.0, 100.0, 1000.0})
+    run.specular("gaussian c " + g(c), NDF_GAUSSIAN, sc, 0.5, rOfGaussianC(c), one, "E -> 1 (mirror)", 1.0,
+                 c >= 1000 ? 2e-3 : 0.2);
+  // mu down to 1e-6 and exactly 0: continuous into the grazing limit (E(0, r) = 1 for ggx + smith-correlated)
+  // (E changes on the scale mu ~ alpha: the limit is met once mu << alpha)
+  for (double mu : {1e-3, 1e-6, 0.0})
+    for (double r : {0.5, 0.05}) {
+      if (mu > 1e-4 * r * r) run.specular("mu -> 0, albedo", ggx, sc, mu, r, one);
+      else run.specular("mu -> 0, albedo", ggx, sc, mu, r, one, "E(0, r) = 1 (weak furnace ratio)", 1.0, mu == 0 ? 1e-5 : 1e-3);
+    }
+  run.specular("corner", ggx, sc, 0.0, 0.0, one, "lim E(0, r -> 0) = 1", 1.0, 1e-5);
+  // eta near 1: the dielectric reflects almost nothing (F0 = ((eta-1)/(eta+1))^2), exactly nothing at 1
+  for (double eta : {1.01, 1.0001, 1.0}) {
+    reference::Weight w{reference::Weight::Fresnel, {FRESNEL_DIELECTRIC, eta, 0}};
+    run.specular("dielectric eta " + g6(eta), ggx, sc, 0.5, 0.5, w, "E_F -> 0 as eta -> 1", 0.0, eta > 1.001 ? 1e-3 : 1e-6);
+    run.specular("dielectric eta " + g6(eta), ggx, sc, 0.0, 0.5, w);
+  }
+  // eta below 1 across the critical angle: total internal reflection
+  for (double eta : {0.95, 1 / 1.5, 0.3}) {
+    reference::Weight w{reference::Weight::Fresnel, {FRESNEL_DIELECTRIC, eta, 0}};
+    for (double mu : {0.0, 0.25, 1.0}) run.specular("dielectric eta " + g(eta) + " (TIR)", ggx, sc, mu, 0.5, w);
+  }
+  // conductors with large k: F -> 1, so E_F -> E
+  for (double kk : {10.0, 50.0, 100.0}) {
+    reference::Weight w{reference::Weight::Fresnel, {FRESNEL_CONDUCTOR, 1.5, kk}};
+    double e = reference::albedo(ggx, sc, 0.5, 0.5).e();
+    run.specular("conductor k " + g(kk), ggx, sc, 0.5, 0.5, w, "E_F -> E as k -> inf", e, 6 * 1.5 / (kk * kk));
+  }
+  // Oren-Nayar sigma to pi/2, mu to 0: E(0) = A + B/2
+  for (double sigma : {1.0, kPi / 2})
+    for (double mu : {0.5, 1e-6, 0.0}) {
+      float fs = static_cast<float>(sigma), fm = static_cast<float>(mu);
+      KernelTable t = kr.diffuseAlbedo(DIFFUSE_OREN_NAYAR, 1, 1, fs, fs, true, fm, fm);
+      double s2 = double(fs) * fs, A = 1 - 0.5 * s2 / (s2 + 0.33), B = 0.45 * s2 / (s2 + 0.09);
+      run.add("oren-nayar sigma " + g(sigma), "mu=" + g(fm), t.planes[0][0], t.err[0],
+              reference::diffuseAlbedo(DIFFUSE_OREN_NAYAR, fs, fm), 3e-9, mu == 0 ? "E(0) = A + B/2" : "",
+              A + B / 2, 1e-5);
+    }
+  // Burley at r = 1, grazing: 785/504
+  {
+    KernelTable t = kr.diffuseAlbedo(DIFFUSE_BURLEY, 1, 1, 1.0f, 1.0f, true, 0.0f, 0.0f);
+    run.add("burley r 1", "mu=0", t.planes[0][0], t.err[0], reference::diffuseAlbedo(DIFFUSE_BURLEY, 1.0, 0.0), 3e-9,
+            "E(0) = 785/504", 785.0 / 504, 1e-5);
+  }
+  // k_p at small alpha: pi alpha^2 (ggx, beckmann), 2 pi/(e+2) (blinn-phong); 0 at r = 0
+  for (int ndf : {NDF_GGX, NDF_BLINN_PHONG})
+    for (double r : {0.01, 0.0}) {
+      float fr = static_cast<float>(r);
+      KernelTable t = kr.kp(ndf, 1, true, fr, fr);
+      double a = double(fr) * fr, closed = ndf == NDF_GGX ? kPi * a * a : (a > 0 ? kPi * a * a : 0);
+      run.add("k_p small alpha", ndfNames()[ndf] + " r=" + g(fr), t.planes[0][0], t.err[0], reference::kp(ndf, fr),
+              3e-9, "k_p = pi alpha^2", closed, 1e-6 * std::max(1e-12, closed) + 1e-15);
+    }
+  // average albedo at r -> 0: 1 for smith-correlated
+  for (double r : {0.01, 0.0}) {
+    float fr = static_cast<float>(r);
+    KernelTable t = kr.albedoAvg(ggx, sc, 1, true, {}, fr, fr);
+    run.add("albedo-avg r -> 0", "ggx+smith-correlated r=" + g(fr), t.planes[0][0], t.err[0],
+            reference::albedoAvg(ggx, sc, fr), 1e-7, "E_avg -> 1", 1.0, r == 0 ? 1e-6 : 1e-3);
+  }
+
+  // the page: the table, the data, a plot of error and bound per point
+  ReportPage page("brdfbake stress");
+  page.paragraph("Each point: the kernel's value, its error against the independent reference (relative to "
+                 "max(1, |value|)), the claimed bound (+ 1e-6 float allowance), and the expected limit.");
+  page.preformatted(formatStress(pts));
+  std::string dat = "# index error bound pass\n";
+  for (size_t i = 0; i < pts.size(); ++i)
+    dat += std::to_string(i + 1) + " " + g(std::max(pts[i].error, 1e-17)) + " " + g(pts[i].bound) + " " +
+           (pts[i].pass() ? "1" : "0") + "\n";
+  page.data("stress.dat", dat);
+  std::string csv = "sweep,point,value,reference,error,bound,finite,within_bound,limit,limit_met\n";
+  for (const auto& p : pts)
+    csv += "\"" + p.sweep + "\",\"" + p.label + "\"," + g(p.value) + "," + g(p.reference) + "," + g(p.error) + "," +
+           g(p.bound) + "," + (p.finite ? "1" : "0") + "," + (p.withinBound ? "1" : "0") + ",\"" + p.limit + "\"," +
+           (p.limitMet ? "1" : "0") + "\n";
+  page.data("stress.csv", csv);
+  page.plot("stress",
+            "set title 'stress: error against the reference, and the claimed bound, per point'\n"
+            "set logscale y\nset format y '10^{%L}'\nset xlabel 'point (see the table)'\nset ylabel 'relative error'\n"
+            "set key left top\nset grid\n"
+            "plot 'stress.dat' using 1:3 with steps lw 2 title 'bound + allowance', "
+            "'' using 1:2 with points pt 7 title 'error', '' using 1:($4 < 1 ? $2 : 1/0) with points pt 6 ps 2 "
+            "lc rgb 'red' title 'fails'",
+            "Errors below the steps are within their claim.");
+  *pageLine = page.write(req.outDir + "/stress");
+  return pts;
+}
+
+std::string formatStress(const std::vector<StressPoint>& pts) {
+  std::string s;
+  char line[512];
+  std::snprintf(line, sizeof line, "%3s  %-34s  %-38s  %12s  %9s  %9s  %s\n", "#", "sweep", "point", "value", "error",
+                "bound", "limit");
+  s += line;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const StressPoint& p = pts[i];
+    std::string lim = p.limit.empty() ? "" : p.limit + (p.limitMet ? " (met)" : " (MISSED)");
+    std::snprintf(line, sizeof line, "%3zu  %-34s  %-38s  %12.9g  %9.2e  %9.2e  %s%s%s\n", i + 1, p.sweep.c_str(),
+                  p.label.c_str(), p.value, p.error, p.bound, p.finite ? "" : "NOT FINITE ",
+                  p.withinBound ? "" : "OVER BOUND ", lim.c_str());
+    s += line;
+  }
+  size_t bad = 0;
+  for (const auto& p : pts) bad += !p.pass();
+  s += bad ? std::to_string(bad) + " of " + std::to_string(pts.size()) + " points FAIL\n"
+           : "all " + std::to_string(pts.size()) + " points pass: finite, within their bounds, limits met\n";
+  return s;
+}
+
+}  // namespace brdfbake
