@@ -13,6 +13,7 @@
 #include "common/errors.h"
 #include "exr/table_file.h"
 #include "plan/plan.h"
+#include "report/convergence.h"
 #include "report/energy.h"
 #include "report/stress.h"
 #include "report/verify.h"
@@ -63,6 +64,13 @@ int main(int argc, char** argv) {
         std::cout << formatStress(pts) << pageLine;
         for (const auto& p : pts)
           if (!p.pass()) return 1;
+        return kExitOk;
+      }
+      case Command::Kind::Convergence: {
+        if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);
+        std::string pageLine;
+        ConvergenceResult res = runConvergence(cmd.bake, &pageLine);
+        std::cout << formatConvergence(res) << pageLine;
         return kExitOk;
       }
       case Command::Kind::Bake: {

@@ -26,12 +26,22 @@ static inline float grid_coord(int i, int n, float lo, float hi, int node_grid) 
 kernel void bake_hemisphere(global float* out_a, global float* out_b, global float* out_e,
                             global float* out_err, int nx, int ny, float mu_lo, float mu_hi,
                             float r_lo, float r_hi, int node_grid, int moments, int fresnel,
-                            float fr_x, float fr_y) {
+                            float fr_x, float fr_y, int level) {
   int i = get_global_id(0), j = get_global_id(1);
   if (i >= nx || j >= ny) return;
   float mu = grid_coord(i, nx, mu_lo, mu_hi, node_grid);
   float r = grid_coord(j, ny, r_lo, r_hi, node_grid);
-  HemiResult h = hemisphere_texel_weighted(BRDF_NDF, BRDF_GAF, mu, r, BAKE_TARGET, moments, fresnel, fr_x, fr_y);
+  HemiResult h;
+  if (level < 0) {
+    h = hemisphere_texel_weighted(BRDF_NDF, BRDF_GAF, mu, r, BAKE_TARGET, moments, fresnel, fr_x, fr_y);
+  } else { /* one budget everywhere (brdfbake convergence): level 0 default, 1 refined, more finer */
+    BrdfParams p = hemisphere_texel_params(BRDF_NDF, BRDF_GAF, mu, r);
+    p.moments = moments;
+    p.fresnel = fresnel;
+    p.fr_x = fr_x;
+    p.fr_y = fr_y;
+    h = hemisphere_moments(BRDF_NDF, BRDF_GAF, p, mu, level);
+  }
   int t = j * nx + i;
   out_a[t] = (float)h.a;
   out_b[t] = (float)h.b;

@@ -571,6 +571,32 @@ TEST(CliEvidence, StressIsCleanAndWritesItsPage) {
   EXPECT_NE(r.out.find("not stress options"), std::string::npos) << r.out;
 }
 
+// convergence: the quadrature reaches 1e-5 at its first rung, Monte Carlo does not at 65536
+// samples; the double quadrature agrees with the reference (two methods) far below 1e-7.
+TEST(CliEvidence, ConvergenceShowsEachMethodAgainstTheReference) {
+  fs::path d = freshDir("conv");
+  CmdResult r = run("convergence --size 4 -o " + d.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  for (const char* m : {"quadrature (device, float)  ", "quadrature (host, double)  ", "Monte Carlo (Hammersley, float)  "})
+    EXPECT_NE(r.out.find(m), std::string::npos) << m << "\n" << r.out;
+  std::string out = r.out.substr(r.out.find("time to 1e-7"));  // the summary rows
+  size_t q = out.find("\nquadrature (device, float)   ");
+  ASSERT_NE(q, std::string::npos) << out;
+  std::string row = out.substr(q + 1, out.find('\n', q + 1) - q - 1);
+  EXPECT_NE(row.find("<= "), std::string::npos) << "the default budget reaches 1e-3 and 1e-5 at once: " << row;
+  size_t m = out.find("\nMonte Carlo (Hammersley, float)   ");
+  ASSERT_NE(m, std::string::npos);
+  std::string mrow = out.substr(m + 1, out.find('\n', m + 1) - m - 1);
+  EXPECT_NE(mrow.find("not reached     not reached"), std::string::npos) << mrow;
+  EXPECT_TRUE(fs::exists(d / "convergence/convergence.svg"));
+  EXPECT_TRUE(fs::exists(d / "convergence/convergence.csv"));
+  r = run("convergence --ndf ggx,beckmann");
+  EXPECT_EQ(r.code, 64) << r.out;
+  EXPECT_NE(r.out.find("convergence measures one pair"), std::string::npos) << r.out;
+  r = run("convergence --size 0");
+  EXPECT_EQ(r.code, 64) << r.out;
+}
+
 TEST(CliEvidence, VerifyRejectsTableOptions) {
   CmdResult r = run("verify --table albedo");
   EXPECT_EQ(r.code, 64) << r.out;

@@ -99,6 +99,7 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
     for (int i = 6; i < 10; ++i) k.setArg(i, 0.0f);
     k.setArg(10, 0);
     setWeightArgs(k, 11, {});
+    k.setArg(15, -1);
   } else {
     k.setArg(0, dummy);
     k.setArg(1, dummy);
@@ -324,7 +325,7 @@ KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool node
 }
 
 KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, float muLo, float muHi, float rLo,
-                                          float rHi, bool nodeGrid, const HemiWeight& w) {
+                                          float rHi, bool nodeGrid, const HemiWeight& w, int level) {
   Compiled& c = compiled(ndf, gaf, kHemisphere);
   Slot& s = *slots_[c.slot];
   size_t n = static_cast<size_t>(nx) * ny;
@@ -343,6 +344,7 @@ KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, floa
   k.setArg(9, rHi);
   k.setArg(10, nodeGrid ? 1 : 0);
   setWeightArgs(k, 11, w);
+  k.setArg(15, level);
   run(c, k, nx, ny);
   KernelTable t;
   t.width = nx;

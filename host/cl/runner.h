@@ -66,8 +66,10 @@ class KernelRunner {
   // A, B, E over (mu, r), nx x ny.
   KernelTable hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid, const HemiWeight& w = {});
   // The same over mu in [muLo, muHi] and r in [rLo, rHi] (a 1 x 1 node grid evaluates one point).
+  // level >= 0: that budget at every texel (0 default, 1 refined, 2.. finer) instead of the bake's
+  // adaptive choice.
   KernelTable hemisphereRange(int ndf, int gaf, int nx, int ny, float muLo, float muHi, float rLo, float rHi,
-                              bool nodeGrid, const HemiWeight& w = {});
+                              bool nodeGrid, const HemiWeight& w = {}, int level = -1);
   // E_avg over r: E at the 31 nodes of kernels/integrate/hemisphere.h's rule for every r on the
   // device (one work-item per node), the weighted sums and bounds here in double.
   // With a Fresnel weight, the average of that model's albedo.

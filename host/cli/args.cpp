@@ -32,6 +32,8 @@ std::string usageText() {
          "                                --ndf x --gaf pairs; page with plots in DIR/verify (exit 1: a check failed)\n"
          "  brdfbake stress [-o DIR]      every table kind through the stiff and extreme cases, against the\n"
          "                                reference; page in DIR/stress (exit 1: NaN/Inf, missed limit, over bound)\n"
+         "  brdfbake convergence [opts]   error against run time of each method (quadrature on the device and\n"
+         "                                in double, Monte Carlo) for one pair's albedo; page in DIR/convergence\n"
          "  brdfbake energy [options]     does a whole material conserve energy? worst total albedo over\n"
          "                                (mu, r, parameter); exit 0 if it conserves, 1 if it does not\n"
          "  brdfbake --help | --version\n"
@@ -152,8 +154,11 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   } else if (first == "stress") {
     i = 1;
     cmd.kind = Command::Kind::Stress;
+  } else if (first == "convergence") {
+    i = 1;
+    cmd.kind = Command::Kind::Convergence;
   } else if (first.rfind("-", 0) != 0) {
-    throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, energy, verify, stress, devices, info (see --help)");
+    throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, energy, verify, stress, convergence, devices, info (see --help)");
   }
   // `brdfbake [options]` is `brdfbake bake [options]`: every bake option works at the top level.
   std::vector<std::string> seen;  // scalar options given so far: each at most once
@@ -252,6 +257,14 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         throw Error(kExitUsage, std::string(o) + ": not a stress option (stress sweeps fixed stiff cases: -o, --device)");
     if (modelsGiven)
       throw Error(kExitUsage, "--ndf/--gaf/--diffuse: not stress options (stress sweeps fixed stiff cases: -o, --device)");
+  }
+  if (cmd.kind == Command::Kind::Convergence) {
+    for (const char* o : {"--table", "--grid", "--half"})
+      if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()))
+        throw Error(kExitUsage, std::string(o) + ": not a convergence option (it measures the albedo table of one "
+                                                 "--ndf/--gaf/--fresnel; --size, -o)");
+    if (req.diffuse >= 0)
+      throw Error(kExitUsage, "--diffuse: convergence measures the specular estimators (the diffuse albedo has one budget)");
   }
   if (cmd.kind == Command::Kind::Verify) {
     // verify checks model pairs: it writes a report page (under -o), no tables

@@ -28,7 +28,7 @@ struct BakeRequest {
 };
 
 struct Command {
-  enum class Kind { Bake, Energy, Verify, Stress, Devices, Info, Help, Version } kind = Kind::Bake;
+  enum class Kind { Bake, Energy, Verify, Stress, Convergence, Devices, Info, Help, Version } kind = Kind::Bake;
   BakeRequest bake;
   std::string file;  // for Info
 };

@@ -131,7 +131,7 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
       kinks[nk++] = ck;
     }
   }
-  if (full && nk == 0) {
+  if (full && nk == 0 && refine <= 1) {
     hemi_phi_trap(ndf, gaf, p, mu, s, h, sn, refine ? 2 * HEMI_TRAP_N : HEMI_TRAP_N, ia, ib, ea, eb);
     return;
   }
@@ -164,12 +164,12 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
     real hi = k < nb ? br[k] : phimax;
     if (hi > lo) {
       int sl = lo == fk, sh = hi == fk;
-      if (refine) {
-        real m = RC(0.5) * (lo + hi);
-        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, lo, m, sl, 0, ia, ib, ea, eb);
-        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, m, hi, 0, sh, ia, ib, ea, eb);
-      } else {
-        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, lo, hi, sl, sh, ia, ib, ea, eb);
+      /* 2^refine equal pieces; the substitutions stay on the pieces that touch the kink */
+      int pieces = 1 << refine;
+      real w = (hi - lo) / (real)pieces;
+      for (int q = 0; q < pieces; ++q) {
+        real a = lo + w * (real)q, b = q + 1 < pieces ? lo + w * (real)(q + 1) : hi;
+        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, a, b, q == 0 && sl, q + 1 == pieces && sh, ia, ib, ea, eb);
       }
     }
     lo = hi;
@@ -253,7 +253,9 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
 }
 
 /* refine = 0: the default budget; 1: every outer panel cut in five graded pieces, 32 trapezoid
- * intervals, phi grading x2 instead of x4 and every phi panel halved. Callers refine the few texels whose bound is above
+ * intervals, phi grading x2 instead of x4 and every phi panel halved. Levels L >= 2 (the
+ * convergence report's ladder, not the bake): each of the five pieces cut in 2^(L-1), every phi
+ * panel in 2^L, and GK15 panels on whole circles too. Callers refine the few texels whose bound is above
  * their target (hemisphere_moments_to). */
 BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, int refine) {
   HemiResult res;
@@ -351,10 +353,15 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, i
        * range at a theta break), which halving resolves only algebraically. The first piece keeps
        * the v1 substitution, the last the v2 one. */
       real len = next - cur, lo = cur;
+      int sub = 1 << (refine - 1); /* levels above 1 (convergence ladders): each piece in 2^(refine-1) */
       for (int q = 0; q < 5; ++q) {
         real hi = q < 4 ? cur + len * HEMI_REFINE_CUTS[q] : next;
-        hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, lo, hi, partial, q == 0 && sq_lo, q == 4 && sq_hi, refine,
-                         &res);
+        real w = (hi - lo) / (real)sub;
+        for (int u = 0; u < sub; ++u) {
+          real a = lo + w * (real)u, b = u + 1 < sub ? lo + w * (real)(u + 1) : hi;
+          hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, a, b, partial, q == 0 && u == 0 && sq_lo,
+                           q == 4 && u + 1 == sub && sq_hi, refine, &res);
+        }
         lo = hi;
       }
     } else {
