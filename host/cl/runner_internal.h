@@ -1,0 +1,48 @@
+// Shared by host/cl/runner.cpp (building programs) and host/cl/runner_launch.cpp (running the
+// table kernels): the kernels' names, the fixed CPU local size, and the private structs.
+#pragma once
+#include <CL/opencl.hpp>
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "cl/runner.h"
+
+namespace brdfbake::runner_detail {
+
+inline const char* const kHemisphere = "bake_hemisphere";
+inline const char* const kAlbedoNodes = "bake_albedo_nodes";
+inline const char* const kKp = "bake_kp";
+
+// On a CPU device (PoCL) every launch uses these local sizes: PoCL generates one work-group
+// function per kernel and local size, a few tenths of a second each, so one size per kernel keeps
+// it to one. Small groups balance the uneven texel costs over the threads.
+constexpr size_t kLocalX = 8, kLocalY = 1;
+inline size_t roundUp(size_t n, size_t m) { return (n + m - 1) / m * m; }
+
+// The weight arguments (moments, fresnel, fr_x, fr_y) from index `first` on.
+inline void setWeightArgs(cl::Kernel& k, int first, const HemiWeight& w) {
+  k.setArg(first, w.moments);
+  k.setArg(first + 1, w.fresnel);
+  k.setArg(first + 2, w.x);
+  k.setArg(first + 3, w.y);
+}
+
+}  // namespace brdfbake::runner_detail
+
+namespace brdfbake {
+
+struct KernelRunner::Slot {
+  cl::Context context;
+  cl::CommandQueue queue;
+  explicit Slot(const cl::Device& d) : context(d), queue(context, d) {}
+};
+
+struct KernelRunner::Compiled {
+  int slot = 0;
+  cl::Program program;
+  std::vector<std::string> kernels;  // compiled (on a CPU device: work-group function generated)
+  bool has(const std::string& k) const { return std::find(kernels.begin(), kernels.end(), k) != kernels.end(); }
+};
+
+}  // namespace brdfbake

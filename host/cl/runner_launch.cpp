@@ -1,0 +1,171 @@
+// The table kernels' launches (KernelRunner's table methods): buffers, arguments, the fixed CPU
+// local size, reading back; building the programs is host/cl/runner.cpp.
+#include <algorithm>
+#include <cmath>
+
+#include "cl/runner.h"
+#include "cl/runner_internal.h"
+#include "common/brdf_host.h"
+#include "common/errors.h"
+
+namespace brdfbake {
+
+using namespace runner_detail;
+
+namespace {
+cl::Buffer outBuffer(const cl::Context& ctx, size_t n) { return cl::Buffer(ctx, CL_MEM_WRITE_ONLY, n * sizeof(float)); }
+std::vector<float> readBack(cl::CommandQueue& q, const cl::Buffer& b, size_t n) {
+  std::vector<float> v(n);
+  q.enqueueReadBuffer(b, CL_TRUE, 0, n * sizeof(float), v.data());
+  return v;
+}
+}  // namespace
+
+// gx x gy work-items (gy = 0: a 1D range); on a CPU device in groups of the one local size.
+void KernelRunner::run(Compiled& c, cl::Kernel& k, size_t gx, size_t gy) {
+  cl::CommandQueue& q = slots_[c.slot]->queue;
+  if (cpu_) {
+    if (gy == 0)
+      q.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(roundUp(gx, kLocalX)), cl::NDRange(kLocalX));
+    else
+      q.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(roundUp(gx, kLocalX), roundUp(gy, kLocalY)),
+                             cl::NDRange(kLocalX, kLocalY));
+  } else {
+    q.enqueueNDRangeKernel(k, cl::NullRange, gy == 0 ? cl::NDRange(gx) : cl::NDRange(gx, gy), cl::NullRange);
+  }
+}
+
+KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid, const HemiWeight& w) {
+  return hemisphereRange(ndf, gaf, nx, ny, 0.0f, 1.0f, 0.0f, 1.0f, nodeGrid, w);
+}
+
+KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, float muLo, float muHi, float rLo,
+                                          float rHi, bool nodeGrid, const HemiWeight& w, int level) {
+  Compiled& c = compiled(ndf, gaf, kHemisphere);
+  Slot& s = *slots_[c.slot];
+  size_t n = static_cast<size_t>(nx) * ny;
+  cl::Buffer a = outBuffer(s.context, n), b = outBuffer(s.context, n), e = outBuffer(s.context, n),
+             err = outBuffer(s.context, n);
+  cl::Kernel k(c.program, kHemisphere);
+  k.setArg(0, a);
+  k.setArg(1, b);
+  k.setArg(2, e);
+  k.setArg(3, err);
+  k.setArg(4, nx);
+  k.setArg(5, ny);
+  k.setArg(6, muLo);
+  k.setArg(7, muHi);
+  k.setArg(8, rLo);
+  k.setArg(9, rHi);
+  k.setArg(10, nodeGrid ? 1 : 0);
+  setWeightArgs(k, 11, w);
+  k.setArg(15, level);
+  run(c, k, nx, ny);
+  KernelTable t;
+  t.width = nx;
+  t.height = ny;
+  t.planes = {readBack(s.queue, a, n), readBack(s.queue, b, n), readBack(s.queue, e, n)};
+  t.err = readBack(s.queue, err, n);
+  return t;
+}
+
+namespace {
+// The arguments the kernels over r share: (values, bounds, n, r range [0, 1], grid).
+void setRArgs(cl::Kernel& k, const cl::Buffer& values, const cl::Buffer& bounds, int n, bool nodeGrid, float rLo,
+              float rHi) {
+  k.setArg(0, values);
+  k.setArg(1, bounds);
+  k.setArg(2, n);
+  k.setArg(3, rLo);
+  k.setArg(4, rHi);
+  k.setArg(5, nodeGrid ? 1 : 0);
+}
+}  // namespace
+
+KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w, float rLo,
+                                    float rHi) {
+  Compiled& c = compiled(ndf, gaf, kAlbedoNodes);
+  Slot& s = *slots_[c.slot];
+  const int m = AVG_NODES;
+  size_t count = static_cast<size_t>(m) * n;
+  cl::Buffer e = outBuffer(s.context, count), err = outBuffer(s.context, count);
+  cl::Kernel k(c.program, kAlbedoNodes);
+  setRArgs(k, e, err, n, nodeGrid, rLo, rHi);
+  setWeightArgs(k, 6, w);
+  run(c, k, m, n);
+  std::vector<float> ev = readBack(s.queue, e, count), errv = readBack(s.queue, err, count);
+  // The rule (kernels/integrate/albedo_avg.h) in double: weights from the double tables, mu as
+  // the device evaluated it (the float node).
+  KernelTable t;
+  t.width = n;
+  t.height = 1;
+  t.planes = {std::vector<float>(n)};
+  t.err.resize(n);
+  for (int j = 0; j < n; ++j) {
+    double sum = 0, diff = 0, inner = 0;
+    for (int i = 0; i < m; ++i) {
+      double mu = static_cast<float>(brdf64::AVG_MU[i]);
+      size_t x = static_cast<size_t>(j) * m + i;
+      double f = 2 * mu * ev[x];
+      sum += brdf64::AVG_WK[i] * f;
+      diff += brdf64::AVG_WD[i] * f;
+      inner += brdf64::AVG_WK[i] * 2 * mu * errv[x];
+    }
+    t.planes[0][j] = static_cast<float>(sum);
+    t.err[j] = static_cast<float>((std::fabs(diff) + inner) / std::max(1.0, std::fabs(sum)));
+  }
+  return t;
+}
+
+KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid, float rLo, float rHi) {
+  Compiled* pc = kpProgram(ndf);
+  Compiled& c = pc ? *pc : compiled(ndf, GAF_NONE, kKp);
+  compileKernel(c, kKp);
+  Slot& s = *slots_[c.slot];
+  cl::Buffer v = outBuffer(s.context, n), err = outBuffer(s.context, n);
+  cl::Kernel k(c.program, kKp);
+  setRArgs(k, v, err, n, nodeGrid, rLo, rHi);
+  run(c, k, n, 0);
+  KernelTable t;
+  t.width = n;
+  t.height = 1;
+  t.planes = {readBack(s.queue, v, n)};
+  t.err = readBack(s.queue, err, n);
+  return t;
+}
+
+// The diffuse kernel has its own arguments: it is created here and launched by run() (the fixed
+// local size on a CPU device), not pre-compiled by compileKernel()/emptyArgs().
+KernelTable KernelRunner::diffuseAlbedo(int model, int nx, int ny, float pLo, float pHi, bool nodeGrid, float muLo,
+                                        float muHi) {
+  static const char* const kDiffuse = "bake_diffuse_albedo";
+  Compiled* pc = programs_.empty() ? nullptr : find(programs_.begin()->first.first, programs_.begin()->first.second);
+  if (!pc) {
+    buildHere(NDF_GGX, GAF_SMITH_CORRELATED);
+    pc = find(NDF_GGX, GAF_SMITH_CORRELATED);
+  }
+  Compiled& c = *pc;
+  Slot& s = *slots_[c.slot];
+  size_t n = static_cast<size_t>(nx) * ny;
+  cl::Buffer e = outBuffer(s.context, n), err = outBuffer(s.context, n);
+  cl::Kernel k(c.program, kDiffuse);
+  k.setArg(0, e);
+  k.setArg(1, err);
+  k.setArg(2, nx);
+  k.setArg(3, ny);
+  k.setArg(4, muLo);
+  k.setArg(5, muHi);
+  k.setArg(6, pLo);
+  k.setArg(7, pHi);
+  k.setArg(8, nodeGrid ? 1 : 0);
+  k.setArg(9, model);
+  run(c, k, nx, ny);
+  KernelTable t;
+  t.width = nx;
+  t.height = ny;
+  t.planes = {readBack(s.queue, e, n)};
+  t.err = readBack(s.queue, err, n);
+  return t;
+}
+
+}  // namespace brdfbake

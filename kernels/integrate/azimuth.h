@@ -1,0 +1,149 @@
+/* azimuth.h: the inner (azimuth) rules of the hemisphere estimators (hemisphere.h holds the
+ * derivation): int_0^phimax H dphi at fixed theta_h, by the trapezoid rule on whole circles or
+ * GK15 panels on arcs, split at the GAF's and Fresnel's kinks and graded towards the horizon.
+ * Needs integrand.h and quadrature.h; hemisphere.h, which calls hemi_phi, comes after it. */
+/* The azimuth's budgets (the brdf.method text is generated from these: host/bake/bake.cpp). */
+#define HEMI_TRAP_N 16         /* trapezoid intervals on the whole circle; refined: twice as many */
+#define HEMI_PHI_GROW RC(4.0)  /* grading of the arc panels towards phimax; refined: halved */
+
+/* GK15 over phi in [lo, hi]: adds the Kronrod values to ka, kb and |K - G| to ea, eb.
+ * All 15 nodes in one lane vector on the device (HEMI_GK_N = 16, the last of weight 0). */
+/* sq_lo / sq_hi: an end with a square-root singularity in the integrand (Fresnel's critical
+ * angle), made smooth by phi = lo + L y^2 (hi - L (1 - y)^2; the smoothstep for both). */
+BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo,
+                         real hi, int sq_lo, int sq_hi, real* ka, real* kb, real* ea, real* eb) {
+  real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo), len = hi - lo;
+  real sa = RC(0.0), sb = RC(0.0), da = RC(0.0), db = RC(0.0);
+  int k = 0;
+  for (; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
+    lane_t fa, fb;
+    lane_t x = lane_load(GK15_XL, k);
+    if (sq_lo || sq_hi) {
+      lane_t y = RC(0.5) * (x + RC(1.0)), phi, jac;
+      if (sq_lo && sq_hi) {
+        phi = lo + len * y * y * (RC(3.0) - RC(2.0) * y);
+        jac = RC(3.0) * y * (RC(1.0) - y); /* (dphi/dy)/(2 hw) */
+      } else if (sq_lo) {
+        phi = lo + len * y * y;
+        jac = y;
+      } else {
+        phi = hi - len * (RC(1.0) - y) * (RC(1.0) - y);
+        jac = RC(1.0) - y;
+      }
+      hemi_node(ndf, gaf, p, mu, s, h, sn, cos(phi), &fa, &fb);
+      fa *= RC(2.0) * jac;
+      fb *= RC(2.0) * jac;
+    } else {
+      hemi_node(ndf, gaf, p, mu, s, h, sn, cos(mid + hw * x), &fa, &fb);
+    }
+    lane_t wk = lane_load(GK15_WKL, k), wd = lane_load(GK15_WDL, k);
+    sa += lane_sum(wk * fa);
+    sb += lane_sum(wk * fb);
+    da += lane_sum(wd * fa);
+    db += lane_sum(wd * fb);
+  }
+  *ka += sa * hw;
+  *kb += sb * hw;
+  *ea += fabs(da) * hw;
+  *eb += fabs(db) * hw;
+}
+
+/* Trapezoid on the whole half-circle with n = 16 or 32 intervals (nodes cos(k pi/n)): values to
+ * ia, ib, the difference from the n/2-interval rule to ea, eb. Lane vectors of nodes, then the
+ * remaining node(s) one by one. */
+BRDF_FN void hemi_phi_trap(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, int n,
+                           real* ia, real* ib, real* ea, real* eb) {
+  BRDF_TABLE real* cs = n == 32 ? COS_PI32 : COS_PI16;
+  BRDF_TABLE real* w = n == 32 ? TRAP32_W : TRAP16_W;
+  BRDF_TABLE real* d = n == 32 ? TRAP32_D : TRAP16_D;
+  real sa = RC(0.0), sb = RC(0.0), da = RC(0.0), db = RC(0.0);
+  int k = 0;
+  for (; k + BRDF_LANES <= n + 1; k += BRDF_LANES) {
+    lane_t fa, fb;
+    hemi_node(ndf, gaf, p, mu, s, h, sn, lane_load(cs, k), &fa, &fb);
+    lane_t wk = lane_load(w, k), dk = lane_load(d, k);
+    sa += lane_sum(wk * fa);
+    sb += lane_sum(wk * fb);
+    da += lane_sum(dk * fa);
+    db += lane_sum(dk * fb);
+  }
+  for (; k <= n; ++k) {
+    real fa, fb;
+    hemi_node(ndf, gaf, p, mu, s, h, sn, cs[k], &fa, &fb);
+    sa += w[k] * fa;
+    sb += w[k] * fb;
+    da += d[k] * fa;
+    db += d[k] * fb;
+  }
+  real step = BRDF_PI / (real)n;
+  *ia = sa * step;
+  *ib = sb * step;
+  *ea = fabs(da) * step;
+  *eb = fabs(db) * step;
+}
+
+/* int_0^phimax H dphi at fixed theta_h (full: phimax = pi; sn = sin theta_h, sinmax = sin phimax).
+ * Results in ia, ib; bounds in ea, eb. */
+BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, int full,
+                      real phimax, real sinmax, int refine, real* ia, real* ib, real* ea, real* eb) {
+  *ia = RC(0.0);
+  *ib = RC(0.0);
+  *ea = RC(0.0);
+  *eb = RC(0.0);
+  real kinks[4];
+  int nk = gaf_kinks(gaf, mu, s, h.c, sn, kinks);
+  /* Fresnel's kink at o.h = oc (total internal reflection): cos phi = (oc - mu c)/(s sn); F has a
+   * square-root end there (panels beside it substitute) */
+  real oc = fresnel_kink(p.moments, p.fresnel, p.fr_x);
+  real fk = RC(-1.0);
+  if (oc > RC(0.0) && s * sn > RC(0.0)) {
+    real ck = (oc - mu * h.c) / (s * sn);
+    if (ck < RC(1.0) && ck > RC(-1.0)) {
+      fk = acos(ck);
+      kinks[nk++] = ck;
+    }
+  }
+  if (full && nk == 0 && refine <= 1) {
+    hemi_phi_trap(ndf, gaf, p, mu, s, h, sn, refine ? 2 * HEMI_TRAP_N : HEMI_TRAP_N, ia, ib, ea, eb);
+    return;
+  }
+  /* Breakpoints inside (0, phimax): the GAF's kinks, and on a partial arc a geometric grading
+   * towards phimax. There n.i -> 0, and many GAFs (kelemen's 1/(o.h)^2, Smith's n.i/(n.o Lambda_i),
+   * cook-torrance) change on the scale where n.i ~ mu, a layer of width
+   * dphi ~ mu/(2 c s sn sin(phimax)) (n.i = 2 c s sn (cos phi - c0)). Panels of width dphi 4^k
+   * resolve it with a fixed number of nodes per panel, whatever mu. */
+  real br[16];
+  int nb = 0;
+  for (int k = 0; k < nk; ++k) {
+    if (kinks[k] < RC(1.0) && kinks[k] > RC(-1.0)) {
+      real a = acos(kinks[k]);
+      if (a < phimax) br[nb++] = a;
+    }
+  }
+  if (!full) {
+    real den = s * sn * fmax(sinmax, RC(1e-30));
+    real layer = mu / (RC(2.0) * h.c * den);
+    /* Fresnel of eta slightly above 1 changes on the scale o.h ~ sqrt(eta^2 - 1), which the arc
+     * reaches near its horizon end (o.h = mu/(2c) there, 0 at mu = 0): grade from that scale too. */
+    real fs = fresnel_soft_scale(p.moments, p.fresnel, p.fr_x);
+    if (fs > RC(0.0)) layer = layer > RC(0.0) ? fmin(layer, fs / den) : fs / den;
+    real grow = refine ? RC(0.5) * HEMI_PHI_GROW : HEMI_PHI_GROW;
+    for (real d = layer; d < RC(0.5) * phimax && nb < 16; d *= grow) br[nb++] = phimax - d;
+  }
+  sort_ascending(br, nb);
+  real lo = RC(0.0);
+  for (int k = 0; k <= nb; ++k) {
+    real hi = k < nb ? br[k] : phimax;
+    if (hi > lo) {
+      int sl = lo == fk, sh = hi == fk;
+      /* 2^refine equal pieces; the substitutions stay on the pieces that touch the kink */
+      int pieces = 1 << refine;
+      real w = (hi - lo) / (real)pieces;
+      for (int q = 0; q < pieces; ++q) {
+        real a = lo + w * (real)q, b = q + 1 < pieces ? lo + w * (real)(q + 1) : hi;
+        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, a, b, q == 0 && sl, q + 1 == pieces && sh, ia, ib, ea, eb);
+      }
+    }
+    lo = hi;
+  }
+}
