@@ -1,30 +1,26 @@
 // Reading and writing BRDF lookup tables as OpenEXR files.
 //
-// A table is a 2D grid of float texels with up to four channels (R, G, B, A) plus
-// string / V2f / float header attributes that describe how it was baked.  Files are
-// single-part scanline EXRs, ZIP compressed, written atomically and deterministically
-// (the same TableImage always gives byte-identical files).
+// The table model, TableImage, and the checks every table passes live in
+// formats/table_image.h (included here, so this header alone is enough for callers).
+// Files are single-part scanline EXRs, ZIP compressed, written atomically and
+// deterministically (the same TableImage always gives byte-identical files).
+//
+// Implemented in exr_writer.cpp (writeTableExr, writeTableExrTemporary,
+// temporaryPathFor), exr_reader.cpp (readTableExr, tableExrIsHalf) and
+// exr_describe.cpp (describeTableExr).
 #pragma once
-#include <map>
 #include <string>
-#include <utility>
-#include <vector>
+
+#include "formats/table_image.h"
 
 namespace brdfbake {
-
-struct TableImage {
-  int width = 0, height = 0;               // x = first axis (width), y = second axis (height)
-  std::vector<std::string> channels;       // subset of "R","G","B","A", in that order
-  std::vector<std::vector<float>> planes;  // planes[c][y * width + x], one per channel
-  std::map<std::string, std::string> strings;          // string header attributes
-  std::map<std::string, std::pair<float, float>> v2f;  // Imath::V2f header attributes
-  std::map<std::string, float> floats;                 // float header attributes
-};
 
 // Writes a single-part scanline EXR, ZIP_COMPRESSION, channels FLOAT (or HALF when
 // half == true), INCREASING_Y line order, with every attribute of `img` in the header.
 //
-// Validates first and throws Error(kExitDataErr) naming the channel and texel if:
+// Validates first (validateTableImage, with the HALF range when half == true and
+// OpenEXR's structural names reserved) and throws Error(kExitDataErr) naming the
+// channel and texel if:
 // width or height < 1, channels empty / not a subset of R,G,B,A in that order /
 // planes.size() != channels.size(), a plane does not hold width*height values, a value
 // is NaN or infinite, or (half == true) |value| > 65504.  Attribute names must be

@@ -1,0 +1,147 @@
+// OpenEXR reading of BRDF lookup tables, and the reading helpers exr_describe.cpp
+// shares (exr_internal.h).  See table_file.h for the contract.
+#include <ImfAttribute.h>
+#include <ImfChannelList.h>
+#include <ImfFloatAttribute.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfPixelType.h>
+#include <ImfStringAttribute.h>
+#include <ImfVecAttribute.h>
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstdint>
+
+#include "common/errors.h"
+#include "exr/exr_internal.h"
+#include "exr/table_file.h"
+
+namespace brdfbake {
+namespace {
+
+using exr::errnoText;
+
+[[noreturn]] void readError(const std::string& path, const std::string& reason) {
+  throw Error(kExitNoInput, "cannot read " + path + ": " + reason);
+}
+
+// Runs f(); OpenEXR / standard exceptions become Error(kExitNoInput).
+template <class F>
+auto guardRead(const std::string& path, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    readError(path, e.what());
+  }
+}
+
+}  // namespace
+
+namespace exr {
+
+std::unique_ptr<Imf::InputFile> openExr(const std::string& path) {
+  struct stat st;
+  if (::stat(path.c_str(), &st) != 0) {
+    const int err = errno;
+    readError(path, errnoText(err));
+  }
+  if (S_ISDIR(st.st_mode)) readError(path, errnoText(EISDIR));
+  auto file = guardRead(path, [&] { return std::make_unique<Imf::InputFile>(path.c_str(), 0); });
+  if (!file->isComplete()) readError(path, "file is incomplete (truncated?)");
+  return file;
+}
+
+Window dataWindowOf(const std::string& path, const Imf::Header& h) {
+  Window w;
+  w.box = h.dataWindow();
+  const int64_t width = int64_t{w.box.max.x} - w.box.min.x + 1;
+  const int64_t height = int64_t{w.box.max.y} - w.box.min.y + 1;
+  if (width < 1 || height < 1 || width > INT32_MAX || height > INT32_MAX)
+    readError(path, "invalid data window");
+  w.width = static_cast<int>(width);
+  w.height = static_cast<int>(height);
+  return w;
+}
+
+std::vector<std::vector<float>> readPlanes(const std::string& path, Imf::InputFile& file,
+                                           const Window& win,
+                                           const std::vector<std::string>& names) {
+  const size_t count = static_cast<size_t>(win.width) * static_cast<size_t>(win.height);
+  std::vector<std::vector<float>> planes(names.size());
+  Imf::FrameBuffer fb;
+  for (size_t i = 0; i < names.size(); ++i) {
+    const Imf::Channel* ch = file.header().channels().findChannel(names[i]);
+    if (ch->xSampling != 1 || ch->ySampling != 1)
+      readError(path, "channel " + names[i] + " is subsampled");
+    planes[i].assign(count, 0.0f);
+    fb.insert(names[i], Imf::Slice::Make(Imf::FLOAT, planes[i].data(), win.box, sizeof(float),
+                                         sizeof(float) * static_cast<size_t>(win.width)));
+  }
+  guardRead(path, [&] {
+    file.setFrameBuffer(fb);
+    file.readPixels(win.box.min.y, win.box.max.y);
+  });
+  return planes;
+}
+
+}  // namespace exr
+
+namespace {
+
+using exr::as;
+using exr::dataWindowOf;
+using exr::isStructuralAttribute;
+using exr::openExr;
+using exr::readPlanes;
+using exr::Window;
+
+// Names of the R/G/B/A channels present, in that order.
+std::vector<std::string> tableChannels(const std::string& path, const Imf::Header& h) {
+  std::vector<std::string> names;
+  for (const char* c : kTableChannels)
+    if (h.channels().findChannel(c)) names.emplace_back(c);
+  if (names.empty()) readError(path, "none of the channels R, G, B, A is present");
+  return names;
+}
+
+}  // namespace
+
+TableImage readTableExr(const std::string& path) {
+  std::unique_ptr<Imf::InputFile> file = openExr(path);
+  const Imf::Header& h = file->header();
+  const Window win = dataWindowOf(path, h);
+
+  TableImage img;
+  img.width = win.width;
+  img.height = win.height;
+  img.channels = tableChannels(path, h);
+  img.planes = readPlanes(path, *file, win, img.channels);
+
+  for (Imf::Header::ConstIterator it = h.begin(); it != h.end(); ++it) {
+    const std::string name = it.name();
+    if (isStructuralAttribute(name)) continue;
+    const Imf::Attribute& a = it.attribute();
+    if (auto s = as<Imf::StringAttribute>(a)) {
+      img.strings[name] = s->value();
+    } else if (auto v = as<Imf::V2fAttribute>(a)) {
+      img.v2f[name] = {v->value().x, v->value().y};
+    } else if (auto f = as<Imf::FloatAttribute>(a)) {
+      img.floats[name] = f->value();
+    }
+  }
+  return img;
+}
+
+bool tableExrIsHalf(const std::string& path) {
+  std::unique_ptr<Imf::InputFile> file = openExr(path);
+  const Imf::Header& h = file->header();
+  for (const std::string& c : tableChannels(path, h))
+    if (h.channels().findChannel(c)->type != Imf::HALF) return false;
+  return true;
+}
+
+}  // namespace brdfbake

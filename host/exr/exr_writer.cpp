@@ -1,0 +1,190 @@
+// OpenEXR writing of BRDF lookup tables: atomic, deterministic.  See table_file.h
+// for the contract.
+#include <Iex.h>
+#include <ImfChannelList.h>
+#include <ImfCompression.h>
+#include <ImfFloatAttribute.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfLineOrder.h>
+#include <ImfOutputFile.h>
+#include <ImfPixelType.h>
+#include <ImfStringAttribute.h>
+#include <ImfVecAttribute.h>
+#include <Imath/half.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+
+#include "common/errors.h"
+#include "exr/exr_internal.h"
+#include "exr/table_file.h"
+
+namespace brdfbake {
+namespace {
+
+using exr::errnoText;
+
+// Fixed so the output does not depend on Imf::setDefaultZipCompressionLevel().
+constexpr int kZipLevel = 6;
+
+// An Imf::OStream over a POSIX file descriptor.  Remembers the first write error so it
+// can be detected even when OpenEXR swallows the exception (its OutputFile destructor
+// writes the line offset table and ignores failures).
+class FdOStream final : public Imf::OStream {
+ public:
+  FdOStream(int fd, const std::string& name) : Imf::OStream(name.c_str()), fd_(fd) {}
+
+  void write(const char c[], int n) override {
+    if (err_ != 0) throw Iex::IoExc("earlier write failed: " + errnoText(err_));
+    size_t left = n > 0 ? static_cast<size_t>(n) : 0;
+    while (left > 0) {
+      const ssize_t r = ::pwrite(fd_, c, left, static_cast<off_t>(pos_));
+      if (r < 0) {
+        if (errno == EINTR) continue;
+        err_ = errno;
+        throw Iex::IoExc(errnoText(err_));
+      }
+      if (r == 0) {
+        err_ = EIO;
+        throw Iex::IoExc(errnoText(err_));
+      }
+      c += r;
+      left -= static_cast<size_t>(r);
+      pos_ += static_cast<uint64_t>(r);
+    }
+  }
+  uint64_t tellp() override { return pos_; }
+  void seekp(uint64_t pos) override { pos_ = pos; }
+  int error() const { return err_; }
+
+ private:
+  int fd_;
+  uint64_t pos_ = 0;
+  int err_ = 0;
+};
+
+// Closes the descriptor and removes the temp file unless released.
+class TempFileGuard {
+ public:
+  TempFileGuard(std::string path, int fd) : path_(std::move(path)), fd_(fd) {}
+  ~TempFileGuard() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!released_) ::unlink(path_.c_str());
+  }
+  TempFileGuard(const TempFileGuard&) = delete;
+  TempFileGuard& operator=(const TempFileGuard&) = delete;
+  int fd() const { return fd_; }
+  // Closes the descriptor; returns 0 or an errno value.
+  int close() {
+    const int r = ::close(fd_);
+    fd_ = -1;
+    return r == 0 ? 0 : errno;
+  }
+  void release() { released_ = true; }
+
+ private:
+  std::string path_;
+  int fd_;
+  bool released_ = false;
+};
+
+}  // namespace
+
+std::string temporaryPathFor(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  if (name.empty() || name == "." || name == "..")
+    throw Error(kExitCantCreat, "cannot create " + path + ": not a file name");
+  return dir + "." + name + ".tmp-" + std::to_string(::getpid());
+}
+
+void writeTableExr(const std::string& path, const TableImage& img, bool half) {
+  const std::string tmp = temporaryPathFor(path);
+  writeTableExrTemporary(tmp, path, img, half);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    throw Error(kExitCantCreat, "cannot create " + path + ": " + errnoText(err));
+  }
+}
+
+void writeTableExrTemporary(const std::string& tmp, const std::string& path, const TableImage& img, bool half) {
+  TableFormatRules rules;
+  rules.halfRange = half;
+  rules.isReservedAttribute = exr::isStructuralAttribute;
+  rules.formatName = "OpenEXR";
+  validateTableImage(path, img, rules);
+
+  // Everything that can fail for reasons other than the file system is prepared first.
+  Imf::Header header(img.width, img.height);
+  std::vector<std::vector<Imath::half>> halfPlanes;
+  Imf::FrameBuffer fb;
+  try {
+    header.compression() = Imf::ZIP_COMPRESSION;
+    header.zipCompressionLevel() = kZipLevel;
+    header.lineOrder() = Imf::INCREASING_Y;
+    for (const auto& kv : img.strings) header.insert(kv.first, Imf::StringAttribute(kv.second));
+    for (const auto& kv : img.v2f)
+      header.insert(kv.first, Imf::V2fAttribute(Imath::V2f(kv.second.first, kv.second.second)));
+    for (const auto& kv : img.floats) header.insert(kv.first, Imf::FloatAttribute(kv.second));
+
+    const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
+    const size_t w = static_cast<size_t>(img.width);
+    if (half) halfPlanes.resize(img.channels.size());
+    for (size_t ci = 0; ci < img.channels.size(); ++ci) {
+      const std::string& c = img.channels[ci];
+      header.channels().insert(c, Imf::Channel(type));
+      if (half) {
+        std::vector<Imath::half>& hp = halfPlanes[ci];
+        hp.reserve(img.planes[ci].size());
+        for (float v : img.planes[ci]) hp.emplace_back(v);
+        fb.insert(c, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(hp.data()),
+                                sizeof(Imath::half), sizeof(Imath::half) * w));
+      } else {
+        // OpenEXR only reads through the pointer when writing.
+        char* base = reinterpret_cast<char*>(const_cast<float*>(img.planes[ci].data()));
+        fb.insert(c, Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * w));
+      }
+    }
+  } catch (const std::exception& e) {
+    throw Error(kExitIoErr, "cannot write " + path + ": " + e.what());
+  }
+
+  int fd;
+  do {
+    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0666);
+  } while (fd < 0 && errno == EINTR);
+  if (fd < 0) {
+    const int err = errno;
+    throw Error(kExitCantCreat,
+                "cannot create " + path + ": " + errnoText(err) + " (temporary file " + tmp + ")");
+  }
+  TempFileGuard guard(tmp, fd);
+
+  try {
+    FdOStream os(fd, tmp);
+    {
+      Imf::OutputFile out(os, header, /*numThreads=*/0);
+      out.setFrameBuffer(fb);
+      out.writePixels(img.height);
+    }  // the destructor writes the line offset table
+    if (os.error() != 0) throw Iex::IoExc(errnoText(os.error()));
+  } catch (const std::exception& e) {
+    throw Error(kExitIoErr, "cannot write " + path + ": " + e.what());
+  }
+  if (::fsync(fd) != 0) {
+    const int err = errno;
+    throw Error(kExitIoErr, "cannot write " + path + ": fsync: " + errnoText(err));
+  }
+  if (const int err = guard.close())
+    throw Error(kExitIoErr, "cannot write " + path + ": close: " + errnoText(err));
+  guard.release();
+}
+
+}  // namespace brdfbake
