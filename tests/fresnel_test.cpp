@@ -16,17 +16,13 @@
 #include "common/material.h"
 #include "common/models.h"
 #include "reference/reference.h"
+#include "test_device.h"
 
 namespace {
 using namespace brdfbake;
 
-KernelRunner& runner() {
-  static std::unique_ptr<KernelRunner> r;
-  if (!r) r = std::make_unique<KernelRunner>(selectDevice("").device);
-  return *r;
-}
-
-double rel(double got, double want) { return std::fabs(got - want) / std::max(1.0, std::fabs(want)); }
+using testing_device::rel;
+using testing_device::runner;
 
 struct Case {
   const char* name;

@@ -14,6 +14,7 @@
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "common/format.h"
 #include "common/material.h"
 #include "common/models.h"
 #include "version.h"
@@ -40,36 +41,24 @@ namespace {
 
 // brdf.method, generated from the constants the estimators use (kernels/integrate/hemisphere.h),
 // so that it describes the code that ran.
-std::string fmt(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", v);
-  return b;
-}
-
-std::string fmt9(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.9g", v);
-  return b;
-}
-
 std::string hemisphereMethod() {
   std::string breaks;
-  for (int k = 0; k < HEMI_NBREAKS; ++k) breaks += (k ? "," : "") + fmt(brdf64::HEMI_BREAKS[k]);
+  for (int k = 0; k < HEMI_NBREAKS; ++k) breaks += (k ? "," : "") + fmtG(brdf64::HEMI_BREAKS[k]);
   std::string cuts;
-  for (double c : brdf64::HEMI_REFINE_CUTS) cuts += (cuts.empty() ? "" : ",") + fmt(c);
+  for (double c : brdf64::HEMI_REFINE_CUTS) cuts += (cuts.empty() ? "" : ",") + fmtG(c);
   return "h-space quadrature: theta_h by v=-log(1-CDF_ndf) in GK15 panels (breaks " + breaks +
          " and at the visible-domain limits, sqrt ends substituted), phi_h by " + std::to_string(HEMI_TRAP_N) +
-         "-interval trapezoid on the full circle or GK15 per smooth arc (graded x" + fmt(brdf64::kPhiGrow) +
-         " towards the horizon); texels bounded above " + fmt(HEMI_BAKE_TARGET) +
+         "-interval trapezoid on the full circle or GK15 per smooth arc (graded x" + fmtG(brdf64::kPhiGrow) +
+         " towards the horizon); texels bounded above " + fmtG(HEMI_BAKE_TARGET) +
          " redone with each outer panel cut at " + cuts + ", " + std::to_string(2 * HEMI_TRAP_N) +
-         " trapezoid intervals, grading x" + fmt(0.5 * brdf64::kPhiGrow) + " and every arc panel halved; error |K15-G7| + inner bounds + " +
-         fmt(kFloatArithmeticAllowance) + " float allowance + storage rounding";
+         " trapezoid intervals, grading x" + fmtG(0.5 * brdf64::kPhiGrow) + " and every arc panel halved; error |K15-G7| + inner bounds + " +
+         fmtG(kFloatArithmeticAllowance) + " float allowance + storage rounding";
 }
 
 std::string diffuseMethod() {
   return "theta_i in GK15 panels (" + std::to_string(DIFFUSE_PANELS) +
          " each side of theta_o), phi by GK15 on [0,pi/2] and [pi/2,pi] where f_d depends on it; error |K15-G7| + " +
-         fmt(kFloatArithmeticAllowance) + " float allowance + storage rounding";
+         fmtG(kFloatArithmeticAllowance) + " float allowance + storage rounding";
 }
 
 std::string modelsOf(const TableJob& job) {
@@ -84,12 +73,12 @@ std::string methodText(TableKind kind) {
              " mu nodes, sums in double on the host; error |K31-G15| + node bounds), E at each node by " +
              hemisphereMethod();
     case TableKind::Kp:
-      return "k_p = int e^-v p/D_grid dv by GK15 panels on v in [0," + fmt(brdf64::HEMI_BREAKS[HEMI_NBREAKS - 1]) +
+      return "k_p = int e^-v p/D_grid dv by GK15 panels on v in [0," + fmtG(brdf64::HEMI_BREAKS[HEMI_NBREAKS - 1]) +
              "] (breaks " + [] {
                std::string b;
-               for (int k = 0; k < HEMI_NBREAKS; ++k) b += (k ? "," : "") + fmt(brdf64::HEMI_BREAKS[k]);
+               for (int k = 0; k < HEMI_NBREAKS; ++k) b += (k ? "," : "") + fmtG(brdf64::HEMI_BREAKS[k]);
                return b;
-             }() + "); error |K15-G7| + " + fmt(kFloatArithmeticAllowance) + " float allowance";
+             }() + "); error |K15-G7| + " + fmtG(kFloatArithmeticAllowance) + " float allowance";
     default:
       return hemisphereMethod();
   }
@@ -250,7 +239,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
     for (const auto& [name, value] : fc.parameters()) img.strings["brdf.fresnel." + name] = value;
     // F_avg = 2 int F mu dmu, which Kulla-Conty's Fresnel term needs (host, double)
     std::string avg;
-    for (int c = 0; c < fc.channels(); ++c) avg += (c ? "," : "") + fmt9(fresnelAverage(fc, c));
+    for (int c = 0; c < fc.channels(); ++c) avg += (c ? "," : "") + fmtG9(fresnelAverage(fc, c));
     img.strings["brdf.fresnel.avg"] = avg;
   }
   img.strings["brdf.axes"] = axes;

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "common/format.h"
 #include "exr/exr_internal.h"
 #include "exr/table_file.h"
 
@@ -29,12 +30,6 @@ using exr::isStandardAttribute;
 using exr::openExr;
 using exr::readPlanes;
 using exr::Window;
-
-std::string fmtG(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
 
 const char* pixelTypeName(Imf::PixelType t) {
   switch (t) {
@@ -84,7 +79,7 @@ std::string escapeText(const std::string& s) {
 
 std::string attributeValue(const Imf::Attribute& a) {
   if (auto s = as<Imf::StringAttribute>(a)) return escapeText(s->value());
-  if (auto f = as<Imf::FloatAttribute>(a)) return fmtG(f->value());
+  if (auto f = as<Imf::FloatAttribute>(a)) return fmtG9(f->value());
   if (auto d = as<Imf::DoubleAttribute>(a)) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.17g", d->value());
@@ -92,13 +87,13 @@ std::string attributeValue(const Imf::Attribute& a) {
   }
   if (auto i = as<Imf::IntAttribute>(a)) return std::to_string(i->value());
   if (auto v = as<Imf::V2fAttribute>(a))
-    return "(" + fmtG(v->value().x) + ", " + fmtG(v->value().y) + ")";
+    return "(" + fmtG9(v->value().x) + ", " + fmtG9(v->value().y) + ")";
   if (auto v = as<Imf::V2dAttribute>(a))
-    return "(" + fmtG(v->value().x) + ", " + fmtG(v->value().y) + ")";
+    return "(" + fmtG9(v->value().x) + ", " + fmtG9(v->value().y) + ")";
   if (auto v = as<Imf::V2iAttribute>(a))
     return "(" + std::to_string(v->value().x) + ", " + std::to_string(v->value().y) + ")";
   if (auto v = as<Imf::V3fAttribute>(a))
-    return "(" + fmtG(v->value().x) + ", " + fmtG(v->value().y) + ", " + fmtG(v->value().z) + ")";
+    return "(" + fmtG9(v->value().x) + ", " + fmtG9(v->value().y) + ", " + fmtG9(v->value().z) + ")";
   if (auto v = as<Imf::V3iAttribute>(a))
     return "(" + std::to_string(v->value().x) + ", " + std::to_string(v->value().y) + ", " +
            std::to_string(v->value().z) + ")";
@@ -109,8 +104,8 @@ std::string attributeValue(const Imf::Attribute& a) {
   }
   if (auto b = as<Imf::Box2fAttribute>(a)) {
     const Imath::Box2f& v = b->value();
-    return "(" + fmtG(v.min.x) + ", " + fmtG(v.min.y) + ") - (" + fmtG(v.max.x) + ", " +
-           fmtG(v.max.y) + ")";
+    return "(" + fmtG9(v.min.x) + ", " + fmtG9(v.min.y) + ") - (" + fmtG9(v.max.x) + ", " +
+           fmtG9(v.max.y) + ")";
   }
   if (auto sv = as<Imf::StringVectorAttribute>(a)) {
     std::string out = "[";
@@ -181,7 +176,7 @@ std::string describeTableExr(const std::string& path) {
     }
     out << "  channel " << names[i] << ":";
     if (any)
-      out << " min " << fmtG(lo) << " max " << fmtG(hi);
+      out << " min " << fmtG9(lo) << " max " << fmtG9(hi);
     else
       out << " no finite values";
     if (nonFinite) out << " (" << nonFinite << " non-finite values)";

@@ -6,17 +6,12 @@
 #include <set>
 
 #include "common/errors.h"
+#include "common/format.h"
 
 namespace brdfbake {
 namespace {
 
 constexpr float kHalfMax = 65504.0f;
-
-std::string fmtG(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
 
 [[noreturn]] void dataError(const std::string& path, const std::string& what) {
   throw Error(kExitDataErr, "cannot write " + path + ": " + what);
@@ -67,7 +62,7 @@ void validateTableImage(const std::string& path, const TableImage& img, const Ta
         problem = "exceeds the HALF range (|v| <= 65504)";
       if (problem)
         dataError(path, "channel " + c + " texel (x=" + std::to_string(i % w) +
-                            ", y=" + std::to_string(i / w) + ") value " + fmtG(v) + " " +
+                            ", y=" + std::to_string(i / w) + ") value " + fmtG9(v) + " " +
                             problem);
     }
   }

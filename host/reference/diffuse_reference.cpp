@@ -1,5 +1,7 @@
 #include "reference/diffuse_reference.h"
 
+#include "reference/adaptive.h"
+
 #include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
@@ -58,34 +60,10 @@ double brdf(int model, double p, const dvec3& i, const dvec3& o) {
   }
 }
 
-// Adaptive GK31 on [a, b] from Boost's node tables: bisect until |K31 - G15| on a piece is below
-// kRelTol times the piece's L1 norm or an absolute floor (halved with each split), or the depth
-// runs out. (Boost's own integrate() floors its error estimate near 1e-11 relative to the L1 norm
-// and then splits down to its full depth, nested here that would take minutes.)
-template <class F>
-double adapt(F& f, double a, double b, double absTol, unsigned depth) {
-  using K = boost::math::quadrature::gauss_kronrod<double, 31>;
-  using G = boost::math::quadrature::gauss<double, 15>;
-  const auto& x = K::abscissa();
-  const auto& wk = K::weights();
-  const auto& wg = G::weights();
-  double c = 0.5 * (a + b), h = 0.5 * (b - a);
-  double f0 = f(c);
-  double vk = wk[0] * f0, vg = wg[0] * f0, l1 = wk[0] * std::fabs(f0);
-  for (size_t i = 1; i < x.size(); ++i) {
-    double fl = f(c - h * x[i]), fr = f(c + h * x[i]);
-    vk += wk[i] * (fl + fr);
-    l1 += wk[i] * (std::fabs(fl) + std::fabs(fr));
-    if (i % 2 == 0) vg += wg[i / 2] * (fl + fr);
-  }
-  double err = std::fabs(vk - vg) * h;
-  if (err <= kRelTol * l1 * h || err <= absTol || depth == 0) return vk * h;
-  return adapt(f, a, c, 0.5 * absTol, depth - 1) + adapt(f, c, b, 0.5 * absTol, depth - 1);
-}
 template <class F>
 double gk(F f, double a, double b) {
   if (!(b > a)) return 0.0;
-  return adapt(f, a, b, 1e-14, kDepth);
+  return detail::adapt(f, a, b, 1e-14, kDepth, kRelTol);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/brdf_host.h"
+#include "reference/adaptive.h"
 
 namespace brdfbake::reference {
 namespace {
@@ -27,38 +28,9 @@ Pair operator+(Pair x, Pair y) { return {x.e + y.e, x.b + y.b}; }
 Pair operator-(Pair x, Pair y) { return {x.e - y.e, x.b - y.b}; }
 Pair operator*(double s, Pair x) { return {s * x.e, s * x.b}; }
 Pair operator*(Pair x, double s) { return s * x; }
-double norm(double v) { return std::fabs(v); }
 double norm(Pair x) { return std::max(std::fabs(x.e), std::fabs(x.b)); }
 
-// Adaptive GK31: bisect until |K31 - G15| on a piece is below an absolute tolerance (halved with
-// each split) or below `rel` times the piece's L1 norm, whichever comes first. For a Pair, both
-// components must pass (max norm).
-template <class F>
-auto adapt(F& f, double a, double b, double tol, unsigned depth, double rel) -> decltype(f(a)) {
-  // GK31 on [a, b] from Boost's node tables: K31 value, |K31 - G15| error, L1 norm. (Boost's own
-  // integrate() floors its error estimate near 1e-11, which would stall an absolute tolerance.)
-  using K = boost::math::quadrature::gauss_kronrod<double, 31>;
-  using G = boost::math::quadrature::gauss<double, 15>;
-  const auto& x = K::abscissa();
-  const auto& wk = K::weights();
-  const auto& wg = G::weights();
-  double c = 0.5 * (a + b), h = 0.5 * (b - a);
-  auto f0 = f(c);
-  auto vk = wk[0] * f0, vg = wg[0] * f0;
-  double l1 = wk[0] * norm(f0);
-  for (size_t i = 1; i < x.size(); ++i) {
-    auto fl = f(c - h * x[i]), fr = f(c + h * x[i]);
-    vk = vk + wk[i] * (fl + fr);
-    l1 += wk[i] * (norm(fl) + norm(fr));
-    if (i % 2 == 0) vg = vg + wg[i / 2] * (fl + fr);
-  }
-  auto v = vk * h;
-  double err = norm(vk - vg) * h;
-  l1 *= h;
-  if (err <= tol || err <= rel * l1 || depth == 0) return v;
-  double m = 0.5 * (a + b);
-  return adapt(f, a, m, 0.5 * tol, depth - 1, rel) + adapt(f, m, b, 0.5 * tol, depth - 1, rel);
-}
+using detail::adapt;
 
 // Over [a, b], split first at the given interior points.
 template <class F>

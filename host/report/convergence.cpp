@@ -6,11 +6,13 @@
 #include <cstdio>
 #include <thread>
 
+#include "bench/bench_util.h"
 #include "bench/mc_common.h"
 #include "cl/device.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "common/format.h"
 #include "common/material.h"
 #include "common/models.h"
 #include "reference/reference.h"
@@ -21,12 +23,6 @@ namespace brdfbake {
 namespace {
 
 constexpr int kLevels = 4;  // quadrature levels 0..3
-
-std::string g(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
-}
 
 double rel(double a, double b) { return std::fabs(a - b) / std::max(1.0, std::fabs(b)); }
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
@@ -79,11 +75,11 @@ double mcTexel(int ndf, int gaf, const HemiWeight& hw, double mu, double r, int 
 std::string timeTo(const std::vector<Rung>& rs, double tol) {
   for (size_t i = 0; i < rs.size(); ++i) {
     if (rs[i].error > tol) continue;
-    if (i == 0) return "<= " + g(rs[0].seconds) + " s";
+    if (i == 0) return "<= " + fmt3(rs[0].seconds) + " s";
     double x0 = std::log(rs[i - 1].seconds), x1 = std::log(rs[i].seconds);
     double y0 = std::log(std::max(rs[i - 1].error, 1e-300)), y1 = std::log(std::max(rs[i].error, 1e-300));
     double t = y1 == y0 ? 1 : (std::log(tol) - y0) / (y1 - y0);
-    return g(std::exp(x0 + t * (x1 - x0))) + " s";
+    return fmt3(std::exp(x0 + t * (x1 - x0))) + " s";
   }
   return "not reached";
 }
@@ -133,18 +129,11 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
   std::fprintf(stderr, "convergence: reference at %d texels\n", n * n);
   std::vector<double> ref(static_cast<size_t>(n) * n);
   double t0 = now();
-  {
-    auto work = [&](int parity) {
-      for (int k = parity; k < n * n; k += 2) {
-        double mu = static_cast<float>((k % n + 0.5) / n), r = static_cast<float>((k / n + 0.5) / n);
-        reference::Moments m = reference::albedo(ndf, gaf, r, mu, rw);
-        ref[k] = hw.moments == HEMI_FRESNEL ? m.b : m.e();
-      }
-    };
-    std::thread th(work, 1);
-    work(0);
-    th.join();
-  }
+  bench::onTwoThreads(ref.size(), [&](size_t k) {
+    double mu = static_cast<float>((k % n + 0.5) / n), r = static_cast<float>((k / n + 0.5) / n);
+    reference::Moments m = reference::albedo(ndf, gaf, r, mu, rw);
+    ref[k] = hw.moments == HEMI_FRESNEL ? m.b : m.e();
+  });
   double refSeconds = now() - t0;
 
   DeviceEntry dev = selectDevice(req.device);
@@ -167,19 +156,14 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
     Rung rg{"quadrature (host, double)", "level " + std::to_string(L), 0, 0, 0};
     std::vector<double> v(ref.size()), e(ref.size());
     rg.seconds = now();
-    auto work = [&](int parity) {
-      for (int k = parity; k < n * n; k += 2) {
-        double mu = static_cast<float>((k % n + 0.5) / n), r = static_cast<float>((k / n + 0.5) / n);
-        brdf64::BrdfParams p = brdf64::hemisphere_texel_params(ndf, gaf, mu, r);
-        p.moments = hw.moments, p.fresnel = hw.fresnel, p.fr_x = hw.x, p.fr_y = hw.y;
-        brdf64::HemiResult h = brdf64::hemisphere_moments(ndf, gaf, p, mu, L);
-        v[k] = hw.moments == HEMI_FRESNEL ? h.b : h.a + h.b;
-        e[k] = brdf64::hemi_rel_error(h);
-      }
-    };
-    std::thread th(work, 1);
-    work(0);
-    th.join();
+    bench::onTwoThreads(ref.size(), [&](size_t k) {
+      double mu = static_cast<float>((k % n + 0.5) / n), r = static_cast<float>((k / n + 0.5) / n);
+      brdf64::BrdfParams p = brdf64::hemisphere_texel_params(ndf, gaf, mu, r);
+      p.moments = hw.moments, p.fresnel = hw.fresnel, p.fr_x = hw.x, p.fr_y = hw.y;
+      brdf64::HemiResult h = brdf64::hemisphere_moments(ndf, gaf, p, mu, L);
+      v[k] = hw.moments == HEMI_FRESNEL ? h.b : h.a + h.b;
+      e[k] = brdf64::hemi_rel_error(h);
+    });
     rg.seconds = now() - rg.seconds;
     for (size_t k = 0; k < ref.size(); ++k) {
       rg.error = std::max(rg.error, rel(v[k], ref[k]));
@@ -192,14 +176,10 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
     Rung rg{"Monte Carlo (Hammersley, float)", std::to_string(ns) + " samples", 0, 0, 0};
     std::vector<double> v(ref.size()), se(ref.size());
     rg.seconds = now();
-    auto work = [&](int parity) {
-      for (int k = parity; k < n * n; k += 2)
-        v[k] = mcTexel(ndf, gaf, hw, static_cast<float>((k % n + 0.5) / n), static_cast<float>((k / n + 0.5) / n), ns,
-                       &se[k]);
-    };
-    std::thread th(work, 1);
-    work(0);
-    th.join();
+    bench::onTwoThreads(ref.size(), [&](size_t k) {
+      v[k] = mcTexel(ndf, gaf, hw, static_cast<float>((k % n + 0.5) / n), static_cast<float>((k / n + 0.5) / n), ns,
+                     &se[k]);
+    });
     rg.seconds = now() - rg.seconds;
     for (size_t k = 0; k < ref.size(); ++k) {
       rg.error = std::max(rg.error, rel(v[k], ref[k]));
@@ -221,7 +201,7 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
     for (const Rung& r : res.rungs)
       if (r.method == m) rs.push_back(r);
     double o = order(rs);
-    std::snprintf(line, sizeof line, "%-32s  %9s  %14s  %14s  %14s\n", m.c_str(), std::isnan(o) ? "at floor" : g(o).c_str(),
+    std::snprintf(line, sizeof line, "%-32s  %9s  %14s  %14s  %14s\n", m.c_str(), std::isnan(o) ? "at floor" : fmt3(o).c_str(),
                   timeTo(rs, 1e-3).c_str(), timeTo(rs, 1e-5).c_str(), timeTo(rs, 1e-7).c_str());
     res.summary += line;
   }
@@ -231,8 +211,8 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
     if (r.method == "quadrature (host, double)") agree = r.error;
   res.summary += "order: slope of log(true error) against log(time) while the error falls (\"at floor\": float "
                  "rounding from the first rung). The reference (adaptive Gauss-Kronrod in double in the plain "
-                 "angles, host/reference) took " + g(refSeconds) + " s for " + std::to_string(n * n) +
-                 " texels; the finest double quadrature, another method, agrees with it to " + g(agree) + "\n";
+                 "angles, host/reference) took " + fmt3(refSeconds) + " s for " + std::to_string(n * n) +
+                 " texels; the finest double quadrature, another method, agrees with it to " + fmt3(agree) + "\n";
 
   ReportPage page("brdfbake convergence");
   page.paragraph(res.table);
@@ -241,13 +221,13 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
   for (size_t mi = 0; mi < methods.size(); ++mi) {
     dat += "# " + methods[mi] + ": seconds estimate error\n";
     for (const Rung& r : res.rungs)
-      if (r.method == methods[mi]) dat += g(r.seconds) + " " + g(std::max(r.estimate, 1e-17)) + " " + g(std::max(r.error, 1e-17)) + "\n";
+      if (r.method == methods[mi]) dat += fmt3(r.seconds) + " " + fmt3(std::max(r.estimate, 1e-17)) + " " + fmt3(std::max(r.error, 1e-17)) + "\n";
     dat += "\n\n";
   }
   page.data("convergence.dat", dat);
   std::string csv = "method,budget,seconds,estimate,error\n";
   for (const Rung& r : res.rungs)
-    csv += r.method + "," + r.budget + "," + g(r.seconds) + "," + g(r.estimate) + "," + g(r.error) + "\n";
+    csv += r.method + "," + r.budget + "," + fmt3(r.seconds) + "," + fmt3(r.estimate) + "," + fmt3(r.error) + "\n";
   page.data("convergence.csv", csv);
   std::string plot = "set title 'error against run time: " + res.table + "' noenhanced\n"
                      "set logscale xy\nset format y '10^{%L}'\nset xlabel 'seconds'\nset ylabel 'max relative error'\n"

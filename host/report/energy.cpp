@@ -8,6 +8,7 @@
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "common/format.h"
 #include "common/material.h"
 #include "common/models.h"
 
@@ -18,12 +19,6 @@ namespace {
 // The kernels' float arithmetic, as in the bake (host/bake/bake.cpp): once per lobe.
 constexpr double kAllowance = 1e-6;
 constexpr size_t kWorstShown = 5;
-
-std::string fmtG(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", v);
-  return b;
-}
 
 // Node i of n on [lo, hi] (the checks include the grid's edges).
 double node(int i, int n, double lo, double hi) { return n > 1 ? lo + (hi - lo) * i / (n - 1.0) : lo; }

@@ -8,6 +8,7 @@
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "common/format.h"
 #include "common/models.h"
 #include "reference/diffuse_reference.h"
 #include "reference/reference.h"
@@ -22,17 +23,6 @@ constexpr double kAllowance = 1e-6;  // the kernels' float arithmetic (host/bake
 // kernels' limits there to ~1e-7 (tests/accuracy_test.cpp); elsewhere to its 1e-9.
 constexpr double kLimitSlack = 1e-7;
 constexpr double kPi = 3.14159265358979323846;
-
-std::string g(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4g", v);
-  return b;
-}
-std::string g6(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
 
 double rel(double a, double b) { return std::fabs(a - b) / std::max(1.0, std::fabs(b)); }
 
@@ -75,7 +65,7 @@ struct Runner {
     bool fres = w.kind == reference::Weight::Fresnel;
     double v = fres ? t.planes[1][0] : t.planes[2][0];
     reference::Moments m = reference::albedo(ndf, gaf, fr, fm, w);
-    add(sweep, ndfNames()[ndf] + "+" + gafNames()[gaf] + " mu=" + g(fm) + " r=" + g(fr), v, t.err[0],
+    add(sweep, ndfNames()[ndf] + "+" + gafNames()[gaf] + " mu=" + fmt4(fm) + " r=" + fmt4(fr), v, t.err[0],
         fres ? m.b : m.e(), fm == 0 || fr == 0 ? kLimitSlack : 3e-9, limitText, limit, tol);
   }
 };
@@ -96,11 +86,11 @@ std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine
       run.specular("alpha -> 0, albedo", ndf, sc, 0.5, r, one, "E -> 1 (mirror)", 1.0, r == 0 ? 1e-7 : r > 0.05 ? 0.05 : 1e-3);
   // Blinn-Phong exponents to 1e9 and beyond: the lobe is a mirror, E -> 1
   for (double e : {1e3, 1e6, 1e9, 1e12})
-    run.specular("blinn-phong exponent " + g(e), NDF_BLINN_PHONG, sc, 0.5, rOfExponent(e), one, "E -> 1 (mirror)", 1.0,
+    run.specular("blinn-phong exponent " + fmt4(e), NDF_BLINN_PHONG, sc, 0.5, rOfExponent(e), one, "E -> 1 (mirror)", 1.0,
                  e >= 1e6 ? 1e-3 : 0.05);
   // gaussian c to 1e3
   for (double c : {10.0, 100.0, 1000.0})
-    run.specular("gaussian c " + g(c), NDF_GAUSSIAN, sc, 0.5, rOfGaussianC(c), one, "E -> 1 (mirror)", 1.0,
+    run.specular("gaussian c " + fmt4(c), NDF_GAUSSIAN, sc, 0.5, rOfGaussianC(c), one, "E -> 1 (mirror)", 1.0,
                  c >= 1000 ? 2e-3 : 0.2);
   // mu down to 1e-6 and exactly 0: continuous into the grazing limit (E(0, r) = 1 for ggx + smith-correlated)
   // (E changes on the scale mu ~ alpha: the limit is met once mu << alpha)
@@ -113,19 +103,19 @@ std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine
   // eta near 1: the dielectric reflects almost nothing (F0 = ((eta-1)/(eta+1))^2), exactly nothing at 1
   for (double eta : {1.01, 1.0001, 1.0}) {
     reference::Weight w{reference::Weight::Fresnel, {FRESNEL_DIELECTRIC, eta, 0}};
-    run.specular("dielectric eta " + g6(eta), ggx, sc, 0.5, 0.5, w, "E_F -> 0 as eta -> 1", 0.0, eta > 1.001 ? 1e-3 : 1e-6);
-    run.specular("dielectric eta " + g6(eta), ggx, sc, 0.0, 0.5, w);
+    run.specular("dielectric eta " + fmtG(eta), ggx, sc, 0.5, 0.5, w, "E_F -> 0 as eta -> 1", 0.0, eta > 1.001 ? 1e-3 : 1e-6);
+    run.specular("dielectric eta " + fmtG(eta), ggx, sc, 0.0, 0.5, w);
   }
   // eta below 1 across the critical angle: total internal reflection
   for (double eta : {0.95, 1 / 1.5, 0.3}) {
     reference::Weight w{reference::Weight::Fresnel, {FRESNEL_DIELECTRIC, eta, 0}};
-    for (double mu : {0.0, 0.25, 1.0}) run.specular("dielectric eta " + g(eta) + " (TIR)", ggx, sc, mu, 0.5, w);
+    for (double mu : {0.0, 0.25, 1.0}) run.specular("dielectric eta " + fmt4(eta) + " (TIR)", ggx, sc, mu, 0.5, w);
   }
   // conductors with large k: F -> 1, so E_F -> E
   for (double kk : {10.0, 50.0, 100.0}) {
     reference::Weight w{reference::Weight::Fresnel, {FRESNEL_CONDUCTOR, 1.5, kk}};
     double e = reference::albedo(ggx, sc, 0.5, 0.5).e();
-    run.specular("conductor k " + g(kk), ggx, sc, 0.5, 0.5, w, "E_F -> E as k -> inf", e, 6 * 1.5 / (kk * kk));
+    run.specular("conductor k " + fmt4(kk), ggx, sc, 0.5, 0.5, w, "E_F -> E as k -> inf", e, 6 * 1.5 / (kk * kk));
   }
   // Oren-Nayar sigma to pi/2, mu to 0: E(0) = A + B/2
   for (double sigma : {1.0, kPi / 2})
@@ -133,7 +123,7 @@ std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine
       float fs = static_cast<float>(sigma), fm = static_cast<float>(mu);
       KernelTable t = kr.diffuseAlbedo(DIFFUSE_OREN_NAYAR, 1, 1, fs, fs, true, fm, fm);
       double s2 = double(fs) * fs, A = 1 - 0.5 * s2 / (s2 + 0.33), B = 0.45 * s2 / (s2 + 0.09);
-      run.add("oren-nayar sigma " + g(sigma), "mu=" + g(fm), t.planes[0][0], t.err[0],
+      run.add("oren-nayar sigma " + fmt4(sigma), "mu=" + fmt4(fm), t.planes[0][0], t.err[0],
               reference::diffuseAlbedo(DIFFUSE_OREN_NAYAR, fs, fm), 3e-9, mu == 0 ? "E(0) = A + B/2" : "",
               A + B / 2, 1e-5);
     }
@@ -149,14 +139,14 @@ std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine
       float fr = static_cast<float>(r);
       KernelTable t = kr.kp(ndf, 1, true, fr, fr);
       double a = double(fr) * fr, closed = ndf == NDF_GGX ? kPi * a * a : (a > 0 ? kPi * a * a : 0);
-      run.add("k_p small alpha", ndfNames()[ndf] + " r=" + g(fr), t.planes[0][0], t.err[0], reference::kp(ndf, fr),
+      run.add("k_p small alpha", ndfNames()[ndf] + " r=" + fmt4(fr), t.planes[0][0], t.err[0], reference::kp(ndf, fr),
               3e-9, "k_p = pi alpha^2", closed, 1e-6 * std::max(1e-12, closed) + 1e-15);
     }
   // average albedo at r -> 0: 1 for smith-correlated
   for (double r : {0.01, 0.0}) {
     float fr = static_cast<float>(r);
     KernelTable t = kr.albedoAvg(ggx, sc, 1, true, {}, fr, fr);
-    run.add("albedo-avg r -> 0", "ggx+smith-correlated r=" + g(fr), t.planes[0][0], t.err[0],
+    run.add("albedo-avg r -> 0", "ggx+smith-correlated r=" + fmt4(fr), t.planes[0][0], t.err[0],
             reference::albedoAvg(ggx, sc, fr), 1e-7, "E_avg -> 1", 1.0, r == 0 ? 1e-6 : 1e-3);
   }
 
@@ -167,13 +157,13 @@ std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine
   page.preformatted(formatStress(pts));
   std::string dat = "# index error bound pass\n";
   for (size_t i = 0; i < pts.size(); ++i)
-    dat += std::to_string(i + 1) + " " + g(std::max(pts[i].error, 1e-17)) + " " + g(pts[i].bound) + " " +
+    dat += std::to_string(i + 1) + " " + fmt4(std::max(pts[i].error, 1e-17)) + " " + fmt4(pts[i].bound) + " " +
            (pts[i].pass() ? "1" : "0") + "\n";
   page.data("stress.dat", dat);
   std::string csv = "sweep,point,value,reference,error,bound,finite,within_bound,limit,limit_met\n";
   for (const auto& p : pts)
-    csv += "\"" + p.sweep + "\",\"" + p.label + "\"," + g(p.value) + "," + g(p.reference) + "," + g(p.error) + "," +
-           g(p.bound) + "," + (p.finite ? "1" : "0") + "," + (p.withinBound ? "1" : "0") + ",\"" + p.limit + "\"," +
+    csv += "\"" + p.sweep + "\",\"" + p.label + "\"," + fmt4(p.value) + "," + fmt4(p.reference) + "," + fmt4(p.error) + "," +
+           fmt4(p.bound) + "," + (p.finite ? "1" : "0") + "," + (p.withinBound ? "1" : "0") + ",\"" + p.limit + "\"," +
            (p.limitMet ? "1" : "0") + "\n";
   page.data("stress.csv", csv);
   page.plot("stress",

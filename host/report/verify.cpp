@@ -9,6 +9,7 @@
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "common/format.h"
 #include "common/models.h"
 #include "reference/reference.h"
 #include "report/report_page.h"
@@ -22,12 +23,6 @@ constexpr double kWeakFurnaceTol = 1e-6;  // |W(mu)/mu - 1| for an exact Smith p
 constexpr double kNormTol = 1e-6;         // |int D (n.h) dw - 1|
 constexpr double kReciprocityTol = 1e-12;  // relative, in double
 constexpr int kReciprocityPairs = 2000;
-
-std::string g(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4g", v);
-  return b;
-}
 
 std::string pairName(int ndf, int gaf) { return ndfNames()[ndf] + "+" + gafNames()[gaf]; }
 std::string fileStem(int ndf, int gaf) { return ndfNames()[ndf] + "_" + gafNames()[gaf]; }
@@ -45,10 +40,10 @@ VerifyCheck whiteFurnace(const KernelTable& t, int n, bool node, ReportPage& pag
       size_t k = static_cast<size_t>(j) * n + i;
       double mu = node ? i / (n - 1.0) : (i + 0.5) / n, r = node ? j / (n - 1.0) : (j + 0.5) / n;
       double e = t.planes[2][k], bound = t.err[k] * std::max(1.0, std::fabs(e)) + kAllowance;
-      csv += g(mu) + " " + g(r) + " " + std::to_string(e) + " " + g(bound) + "\n";
+      csv += fmt4(mu) + " " + fmt4(r) + " " + std::to_string(e) + " " + fmt4(bound) + "\n";
       if (e > maxE) {
         maxE = e;
-        c.where = "mu=" + g(mu) + " r=" + g(r);
+        c.where = "mu=" + fmt4(mu) + " r=" + fmt4(r);
       }
       if (e > 1 + bound) {
         c.pass = false;
@@ -80,8 +75,8 @@ void energyLoss(const KernelTable& t, const KernelTable& avg, int n, bool node, 
   std::string csv = "# r 1-E_avg 1-E(mu=1) 1-E(mu=0.5) 1-E(mu=0.125)\n";
   for (int j = 0; j < n; ++j) {
     double r = node ? j / (n - 1.0) : (j + 0.5) / n;
-    csv += g(r) + " " + g(1 - avg.planes[0][j]);
-    for (double mu : {1.0, 0.5, 0.125}) csv += " " + g(1 - t.planes[2][static_cast<size_t>(j) * n + col(mu)]);
+    csv += fmt4(r) + " " + fmt4(1 - avg.planes[0][j]);
+    for (double mu : {1.0, 0.5, 0.125}) csv += " " + fmt4(1 - t.planes[2][static_cast<size_t>(j) * n + col(mu)]);
     csv += "\n";
   }
   std::string stem = fileStem(ndf, gaf);
@@ -107,11 +102,11 @@ VerifyCheck weakFurnace(int ndf, int gaf) {
       double d = std::fabs(reference::weakFurnace(ndf, r, mu) / mu - 1);
       if (d > c.worst) {
         c.worst = d;
-        c.where = "mu=" + g(mu) + " r=" + g(r);
+        c.where = "mu=" + fmt4(mu) + " r=" + fmt4(r);
       }
     }
   c.pass = c.worst <= kWeakFurnaceTol;
-  c.detail = "max |W(mu)/mu - 1| = " + g(c.worst) + " at " + c.where + " (tolerance " + g(kWeakFurnaceTol) + ")";
+  c.detail = "max |W(mu)/mu - 1| = " + fmt4(c.worst) + " at " + c.where + " (tolerance " + fmt4(kWeakFurnaceTol) + ")";
   return c;
 }
 
@@ -123,11 +118,11 @@ VerifyCheck normalisation(int ndf, int gaf) {
     double d = std::fabs(reference::normalisation(ndf, r, p.inv_kp) - 1);
     if (d > c.worst) {
       c.worst = d;
-      c.where = "r=" + g(r);
+      c.where = "r=" + fmt4(r);
     }
   }
   c.pass = c.worst <= kNormTol;
-  c.detail = "max |int D (n.h) dw - 1| = " + g(c.worst) + " at " + c.where;
+  c.detail = "max |int D (n.h) dw - 1| = " + fmt4(c.worst) + " at " + c.where;
   return c;
 }
 
@@ -149,11 +144,11 @@ VerifyCheck reciprocity(int ndf, int gaf) {
     double d = std::fabs(fio - foi) / std::max(std::fabs(fio), 1e-300);
     if (d > c.worst) {
       c.worst = d;
-      c.where = "n.i=" + g(ni) + " n.o=" + g(no) + " r=" + g(r);
+      c.where = "n.i=" + fmt4(ni) + " n.o=" + fmt4(no) + " r=" + fmt4(r);
     }
   }
   c.pass = c.worst <= kReciprocityTol;
-  c.detail = "max |f(i,o) - f(o,i)|/f = " + g(c.worst) + " over " + std::to_string(kReciprocityPairs) + " pairs";
+  c.detail = "max |f(i,o) - f(o,i)|/f = " + fmt4(c.worst) + " over " + std::to_string(kReciprocityPairs) + " pairs";
   return c;
 }
 
@@ -218,7 +213,7 @@ std::vector<VerifyResult> runVerify(const BakeRequest& req, std::string* pageLin
   for (const auto& r : out)
     for (const auto& c : r.checks)
       csv += ndfNames()[r.ndf] + "," + gafNames()[r.gaf] + "," + c.name + "," + (c.applies ? "1" : "0") + "," +
-             (c.pass ? "1" : "0") + "," + g(c.worst) + "," + c.where + "\n";
+             (c.pass ? "1" : "0") + "," + fmt4(c.worst) + "," + c.where + "\n";
   page.data("verify.csv", csv);
   *pageLine = page.write(req.outDir + "/verify");
   return out;
