@@ -33,7 +33,8 @@ std::string usageText() {
          "  brdfbake stress [-o DIR]      every table kind through the stiff and extreme cases, against the\n"
          "                                reference; page in DIR/stress (exit 1: NaN/Inf, missed limit, over bound)\n"
          "  brdfbake convergence [opts]   error against run time of each method (quadrature on the device and\n"
-         "                                in double, Monte Carlo) for one pair's albedo; page in DIR/convergence\n"
+         "                                in double, Monte Carlo) for one pair's albedo; page in DIR/convergence;\n"
+         "                                --levels 0,1,2,3 (quadrature budgets, 0..5), --samples 16,64,...,65536\n"
          "  brdfbake energy [options]     does a whole material conserve energy? worst total albedo over\n"
          "                                (mu, r, parameter); exit 0 if it conserves, 1 if it does not\n"
          "  brdfbake --help | --version\n"
@@ -223,6 +224,26 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       req.coupling = value();
       if (req.coupling != "sum" && req.coupling != "albedo-scaling")
         throw Error(kExitUsage, "--coupling must be sum or albedo-scaling, got '" + req.coupling + "'");
+    } else if ((opt == "--levels" || opt == "--samples") && cmd.kind == Command::Kind::Convergence) {
+      // a budget ladder: increasing integers in range
+      once(opt, opt);
+      bool lv = opt == "--levels";
+      long lo = lv ? 0 : 1, hi = lv ? 5 : 1 << 22;
+      std::string range = lv ? "0..5" : "1..4194304";
+      std::vector<int> ladder;
+      for (const auto& item : splitCommas(value())) {
+        errno = 0;
+        char* end = nullptr;
+        long v = std::strtol(item.c_str(), &end, 10);
+        if (item.empty() || *end != '\0' || errno != 0 || v < lo || v > hi)
+          throw Error(kExitUsage, opt + " must be a comma-separated, increasing list of integers in " + range + ", got '" +
+                                      item + "'");
+        if (!ladder.empty() && v <= ladder.back())
+          throw Error(kExitUsage, opt + " must be increasing (a ladder of budgets), got " + std::to_string(v) +
+                                      " after " + std::to_string(ladder.back()));
+        ladder.push_back(static_cast<int>(v));
+      }
+      (lv ? req.levels : req.samples) = ladder;
     } else if (opt == "--diffuse") {
       once(opt, "--diffuse");
       req.diffuse = diffuseId(value());

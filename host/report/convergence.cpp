@@ -22,7 +22,6 @@ namespace brdfbake {
 
 namespace {
 
-constexpr int kLevels = 4;  // quadrature levels 0..3
 
 double rel(double a, double b) { return std::fabs(a - b) / std::max(1.0, std::fabs(b)); }
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
@@ -140,7 +139,7 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
   KernelRunner kr(dev.device);
   kr.prepare(TableKind::Albedo, ndf, gaf);
   kr.hemisphere(ndf, gaf, n, n, false, hw);  // warm: the kernel's compile is not timed
-  for (int L = 0; L < kLevels; ++L) {
+  for (int L : req.levels) {
     std::fprintf(stderr, "convergence: quadrature level %d\n", L);
     KernelTable t;
     Rung rg{"quadrature (device, float)", "level " + std::to_string(L), 0, 0, 0};
@@ -151,7 +150,7 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
     }
     res.rungs.push_back(rg);
   }
-  for (int L = 0; L < kLevels; ++L) {
+  for (int L : req.levels) {
     std::fprintf(stderr, "convergence: quadrature level %d in double\n", L);
     Rung rg{"quadrature (host, double)", "level " + std::to_string(L), 0, 0, 0};
     std::vector<double> v(ref.size()), e(ref.size());
@@ -171,7 +170,7 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
     }
     res.rungs.push_back(rg);
   }
-  for (int ns = 16; ns <= 65536; ns *= 4) {
+  for (int ns : req.samples) {
     std::fprintf(stderr, "convergence: Monte Carlo %d samples\n", ns);
     Rung rg{"Monte Carlo (Hammersley, float)", std::to_string(ns) + " samples", 0, 0, 0};
     std::vector<double> v(ref.size()), se(ref.size());

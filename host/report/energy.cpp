@@ -85,6 +85,20 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
             else np = n, plo = 0, phi = 1, res.paramName = "F0";
           }
           dif = runner.diffuseAlbedo(d, n, np, static_cast<float>(plo), static_cast<float>(phi), true);
+          // the diffuse lobe on its own: Burley's and Oren-Nayar's exceed 1 by themselves
+          size_t worst = 0;
+          for (size_t k = 0; k < dif.planes[0].size(); ++k)
+            if (dif.planes[0][k] > dif.planes[0][worst]) worst = k;
+          double ed = dif.planes[0][worst];
+          std::string at = "mu=" + fmtG(node(static_cast<int>(worst % n), n, 0, 1), 4) +
+                           (np > 1 ? " " + (res.paramName.empty() ? std::string("r") : res.paramName) + "=" +
+                                         fmtG(node(static_cast<int>(worst / n), np, plo, phi), 4)
+                                   : "");
+          if (c == 0)
+            res.diffuseAlone = "diffuse " + diffuseNames()[d] + " alone: largest albedo " + fmtG(ed) + " at " + at +
+                               (ed > 1 + dif.err[worst] + kAllowance
+                                    ? ", above 1 by " + fmtG(ed - 1, 3) + " (a property of the model itself)"
+                                    : ", at most 1");
         }
         bool followsR = d == DIFFUSE_BURLEY || d == DIFFUSE_LAMBERT;
         for (int j = 0; j < n; ++j)
@@ -138,6 +152,7 @@ std::string formatEnergy(const std::vector<EnergyResult>& results) {
       std::snprintf(line, sizeof line, "conserves: %s: largest total albedo %.6g at mu=%.4g r=%.4g (bound %.2g)\n",
                     r.material.c_str(), w.total, w.mu, w.r, w.bound);
     s += line;
+    if (!r.diffuseAlone.empty()) s += "  " + r.diffuseAlone + "\n";
     s += "  F_avg (2 int F mu dmu, " + r.fresnelAvgHow + "):";
     for (double f : r.fresnelAvg) s += " " + fmtG(f);
     s += "\n";

@@ -23,6 +23,7 @@ struct EnergyResult {
   int channels = 1;                // colour channels of the Fresnel parameters
   std::vector<double> fresnelAvg;  // F_avg per channel
   std::string fresnelAvgHow;       // "closed form" or the quadrature
+  std::string diffuseAlone;        // the diffuse lobe's own largest albedo, and where ("" without one)
 };
 
 // One result per NDF/GAF pair of the request (size = grid nodes per axis, default 33).
