@@ -78,14 +78,19 @@ struct Ndf {
 
 Ndf makeNdf(int model, double y) {
   Ndf n{model, y, 0};
-  if (model == 3) {  // k_p = 2 pi int_0^{pi/2} exp(-theta^2/alpha^2) cos sin dtheta
+  static double lastY = -1, lastKp = 0;  // k_p depends on y only: once per table row
+  if (model == 3 && y == lastY) {
+    n.kp = lastKp;
+  } else if (model == 3) {  // k_p = 2 pi int_0^{pi/2} exp(-theta^2/alpha^2) cos sin dtheta
     double al = std::sqrt(y);
     auto f = [&](double th) { return 2 * kPi * std::exp(-th * th / y) * std::cos(th) * std::sin(th); };
     std::vector<double> br{0};
     for (double m : {0.5, 1.0, 2.0, 4.0, 8.0})
       if (m * al < kPi / 2) br.push_back(m * al);
     br.push_back(kPi / 2);
-    n.kp = integrate(f, br, 1e-17 * y);
+    n.kp = integrate(f, br, 1e-16 * y);
+    lastY = y;
+    lastKp = n.kp;
   }
   return n;
 }
