@@ -138,7 +138,7 @@ double smithLambda(const Model& m, double c) {
 // With o = (s, 0, c) and h at (theta, phi), o.h < 0 on |phi| > phi0 once theta > pi/2 - theta_o; the
 // phi-integral is closed: 2 s sin(theta) (sin psi - psi cos psi), cos psi = cot(theta_o) cot(theta),
 // psi = pi - phi0. theta = pi/2 - theta_o + d, d in (0, theta_o]: 1 - cos psi = sin d/(s sin theta)
-// without cancellation. Adaptive GK31 in d, relative tolerance 1e-12 only (Lambda may be tiny).
+// without cancellation. Adaptive GK31 in d, relative tolerance 1e-11 only (Lambda may be tiny).
 double cLambdaQuad(int ndf, const brdf64::BrdfParams& dp, double c) {
   double s = std::sqrt((1 - c) * (1 + c));
   if (s <= 0 || dp.alpha <= 0) return 0;
@@ -165,7 +165,7 @@ double cLambdaQuad(int ndf, const brdf64::BrdfParams& dp, double c) {
     if (d > 0 && d < tho) br.push_back(d);
   }
   for (double d = tho / 2; d > tho * 1e-6; d /= 4) br.push_back(d);
-  return integrate(f, 0, tho, br, 24, 1e-300, 1e-12);
+  return integrate(f, 0, tho, br, 18, 1e-300, 1e-11);
 }
 
 // cos(theta) Lambda_exact on a dense grid in z = c/(c + alpha s) (Beckmann's b/(1+b)), from
@@ -175,7 +175,7 @@ struct ExactLambdaCache {
   int ndf = -1;
   double alpha = -1;
   std::vector<double> v;  // cLambda/(alpha s) at z_k = k/(N - 1)
-  static constexpr int N = 2049;
+  static constexpr int N = 1025;
 };
 
 double cLambdaExact(const Model& m, double c) {
