@@ -117,7 +117,7 @@ TEST_P(PairTest, AverageAlbedoMatchesReference) {
 std::vector<std::pair<int, int>> allPairs() {
   std::vector<std::pair<int, int>> v;
   for (int n = 0; n < 4; ++n)
-    for (int g = 0; g < 11; ++g) v.push_back({n, g});
+    for (int g = 0; g < GAF_COUNT; ++g) v.push_back({n, g});
   return v;
 }
 
@@ -160,7 +160,7 @@ TEST_P(PairTest, EveryEdgeTexelOfA128TableMatchesReference) {
 // GAF. Finite everywhere, and the stiffest texels of a 64x64 table match the reference.
 TEST(Stiff, BlinnPhongHugeExponentsAndGrazingViewsMatchReference) {
   const int n = 64;
-  for (int gaf = 0; gaf < 11; ++gaf) {
+  for (int gaf = 0; gaf < GAF_COUNT; ++gaf) {
     KernelTable t = runner().hemisphere(NDF_BLINN_PHONG, gaf, n, n, false);
     for (size_t k = 0; k < t.planes[2].size(); ++k)
       ASSERT_TRUE(std::isfinite(t.planes[0][k]) && std::isfinite(t.planes[1][k]) && std::isfinite(t.err[k]));

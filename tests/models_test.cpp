@@ -186,7 +186,11 @@ TEST(Gaf, KernelFormsMatchTheReferencesOwnFormulas) {
         BrdfParams p = params(ndf, gaf, r);
         double got = gaf_G(gaf, ndf, p, i[2], o[2], h[2], oh, 1 - i[2] * i[2], 1 - o[2] * o[2]);
         double want = brdfbake::reference::gaf(ndf, gaf, r, i, o, h);
-        EXPECT_NEAR(got, want, 1e-12 * std::max(1.0, std::fabs(want)))
+        // the exact Smith Lambda of Blinn-Phong and the gaussian is tabulated in the kernel
+        // (kernels/brdf/smith_tables.h, ~1e-7 of G) and integrated in the reference
+        bool tabulated = (gaf == GAF_SMITH_EXACT || gaf == GAF_SMITH_CORRELATED_EXACT) &&
+                         (ndf == NDF_BLINN_PHONG || ndf == NDF_GAUSSIAN);
+        EXPECT_NEAR(got, want, (tabulated ? 2e-6 : 1e-12) * std::max(1.0, std::fabs(want)))
             << ndfName(ndf) << "+" << gafName(gaf) << " n.i " << i[2] << " n.o " << o[2] << " o.h " << oh;
         (want == 0 ? zeros : nonzeros)++;
       }

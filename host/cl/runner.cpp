@@ -36,7 +36,7 @@ void append(std::string& src, const std::string& path) {
 std::string kernelSource(int ndf, int gaf) {
   std::string src = "/* brdfbake prelude: " + ndfNames()[ndf] + " + " + gafNames()[gaf] + " */\n";
   src += "#define BRDF_NDF " + std::to_string(ndf) + "\n#define BRDF_GAF " + std::to_string(gaf) + "\n";
-  const char* pointwise[] = {"kernels/brdf/ndf.h", "kernels/brdf/gaf.h", "kernels/brdf/fresnel.h",
+  const char* pointwise[] = {"kernels/brdf/smith_tables.h", "kernels/brdf/ndf.h", "kernels/brdf/gaf.h", "kernels/brdf/fresnel.h",
                              "kernels/brdf/diffuse.h", "kernels/integrate/integrand.h"};
   append(src, "kernels/brdf/compat.h");
   for (const char* f : pointwise) append(src, f);

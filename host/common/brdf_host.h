@@ -9,6 +9,7 @@
 namespace brdf64 {
 typedef double real;
 #include "brdf/compat.h"
+#include "brdf/smith_tables.h"
 #include "brdf/ndf.h"
 #include "brdf/gaf.h"
 #include "brdf/fresnel.h"
@@ -24,6 +25,7 @@ typedef double real;
 namespace brdf32 {
 typedef float real;
 #include "brdf/compat.h"
+#include "brdf/smith_tables.h"
 #include "brdf/ndf.h"
 #include "brdf/gaf.h"
 #include "brdf/fresnel.h"

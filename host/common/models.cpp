@@ -13,7 +13,8 @@ const std::vector<std::string>& gafNames() {
   static const std::vector<std::string> n = {"none",  "implicit", "cook-torrance", "kelemen",
                                              "neumann", "ashikhmin-premoze", "schlick-beckmann",
                                              "schlick-ggx", "schlick-ggx-direct", "smith",
-                                             "smith-correlated"};
+                                             "smith-correlated", "smith-exact",
+                                             "smith-correlated-exact"};
   return n;
 }
 

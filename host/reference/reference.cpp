@@ -104,6 +104,86 @@ double smithLambda(const Model& m, double c) {
   return -std::erfc(a) / 2 + std::exp(-a * a) / (2 * a * std::sqrt(kPi));
 }
 
+// Exact Smith Lambda of any isotropic NDF from its projected area (Smith 1967; Heitz 2014 eq. 17-18):
+//   cos(theta_o) (1 + Lambda) = int max(0, o.h) D dw_h, int D (n.h) dw_h = 1, so
+//   cos(theta_o) Lambda = int max(0, -o.h) D(h) dw_h   (the back-facing microfacets' projected area).
+// With o = (s, 0, c) and h at (theta, phi), o.h < 0 on |phi| > phi0 once theta > pi/2 - theta_o; the
+// phi-integral is closed: 2 s sin(theta) (sin psi - psi cos psi), cos psi = cot(theta_o) cot(theta),
+// psi = pi - phi0. theta = pi/2 - theta_o + d, d in (0, theta_o]: 1 - cos psi = sin d/(s sin theta)
+// without cancellation. Adaptive GK31 in d, relative tolerance 1e-11 only (Lambda may be tiny).
+double cLambdaQuad(int ndf, const brdf64::BrdfParams& dp, double c) {
+  double s = std::sqrt((1 - c) * (1 + c));
+  if (s <= 0 || dp.alpha <= 0) return 0;
+  double tho = std::atan2(s, c);
+  auto f = [&](double d) {
+    double ct = std::sin(tho - d), st = std::cos(tho - d);  // cos, sin of theta = pi/2 - theta_o + d
+    double om = std::sin(d) / (s * st);                      // 1 - cos psi
+    double x = 1 - om, sp = std::sqrt(std::max(0.0, om * (2 - om)));
+    double psi = std::atan2(sp, x);
+    double g;  // sin psi - psi cos psi
+    if (psi < 0.3) {  // series: the difference cancels (its terms 2k psi^(2k+1)/(2k+1)!)
+      double p2 = psi * psi;
+      g = psi * p2 *
+          (1.0 / 3 - p2 * (1.0 / 30 - p2 * (1.0 / 840 - p2 * (1.0 / 45360 - p2 * (1.0 / 3991680 - p2 / 518918400)))));
+    } else {
+      g = sp - psi * x;
+    }
+    return brdf64::ndf_D(ndf, dp, ct, st * st) * st * 2 * s * st * g;
+  };
+  std::vector<double> br;
+  // the lobe near theta = few alpha, i.e. d = theta - pi/2 + theta_o; and geometric towards d = 0
+  for (double t : lobeBreaks(dp.alpha, kPi / 2)) {
+    double d = t - kPi / 2 + tho;
+    if (d > 0 && d < tho) br.push_back(d);
+  }
+  for (double d = tho / 2; d > tho * 1e-6; d /= 4) br.push_back(d);
+  return integrate(f, 0, tho, br, 18, 1e-300, 1e-11);
+}
+
+// cos(theta) Lambda_exact on a dense grid in z = c/(c + alpha s) (Beckmann's b/(1+b)), from
+// cLambdaQuad, 8-point Lagrange in between: the albedo integrals need it at millions of points.
+// As cLambda/(alpha s), which is smooth in z on [0, 1] for every alpha.
+struct ExactLambdaCache {
+  int ndf = -1;
+  double alpha = -1;
+  std::vector<double> v;  // cLambda/(alpha s) at z_k = k/(N - 1)
+  static constexpr int N = 1025;
+};
+
+double cLambdaExact(const Model& m, double c) {
+  if (m.ndf != NDF_BLINN_PHONG && m.ndf != NDF_GAUSSIAN) return -1;  // not used: closed forms exact
+  double s = std::sqrt((1 - c) * (1 + c));
+  if (s <= 0 || m.alpha <= 0) return 0;
+  thread_local ExactLambdaCache cache;
+  const int N = ExactLambdaCache::N;
+  if (cache.ndf != m.ndf || cache.alpha != m.alpha) {
+    cache.ndf = m.ndf;
+    cache.alpha = m.alpha;
+    cache.v.assign(N, 0.0);
+    for (int k = 0; k + 1 < N; ++k) {
+      double z = double(k) / (N - 1);
+      // c/(alpha s) = b = z/(1 - z): c = b alpha/sqrt(1 + b^2 alpha^2)
+      double b = z / (1 - z), t = b * m.alpha, cc = t / std::sqrt(1 + t * t), ss = 1 / std::sqrt(1 + t * t);
+      cache.v[k] = cLambdaQuad(m.ndf, m.dp, cc) / (m.alpha * ss);
+    }
+  }
+  double z = c / (c + m.alpha * s), u = z * (N - 1);
+  int i0 = std::clamp(int(std::floor(u)) - 3, 0, N - 8);
+  double sum = 0;
+  for (int i = 0; i < 8; ++i) {
+    double w = 1;
+    for (int j = 0; j < 8; ++j)
+      if (j != i) w *= (u - (i0 + j)) / double(i - j);
+    sum += w * cache.v[i0 + i];
+  }
+  return sum * m.alpha * s;
+}
+
+double smithLambdaExact(const Model& m, double c) {
+  if (m.ndf != NDF_BLINN_PHONG && m.ndf != NDF_GAUSSIAN) return smithLambda(m, c);
+  return cLambdaExact(m, c) / c;
+}
+
 double gafOf(const Model& m, const dvec3& i, const dvec3& o, const dvec3& h) {
   double ni = i.z, no = o.z, nh = h.z, oh = glm::dot(o, h), ih = glm::dot(i, h);
   if (ni <= 0 || no <= 0 || oh <= 0 || ih <= 0) return 0;  // chi+
@@ -121,6 +201,8 @@ double gafOf(const Model& m, const dvec3& i, const dvec3& o, const dvec3& h) {
       return g(ni) * g(no);
     }
     case GAF_SMITH: return 1 / ((1 + smithLambda(m, ni)) * (1 + smithLambda(m, no)));  // separable
+    case GAF_SMITH_EXACT: return 1 / ((1 + smithLambdaExact(m, ni)) * (1 + smithLambdaExact(m, no)));
+    case GAF_SMITH_CORRELATED_EXACT: return 1 / (1 + smithLambdaExact(m, ni) + smithLambdaExact(m, no));
     default: return 1 / (1 + smithLambda(m, ni) + smithLambda(m, no));  // height-correlated, Heitz 2014
   }
 }
@@ -395,10 +477,18 @@ double fresnelAvg(const FresnelSpec& f) {
   return integrate(g, 0, 1, oc > 0 ? std::vector<double>{oc} : std::vector<double>{}, 40, 1e-15, 1e-14);
 }
 
-double weakFurnace(int ndf, double r, double mu) {
-  Model m = model(ndf, GAF_SMITH, r);
+double smithLambdaExact(int ndf, double r, double mu) {
+  Model m = model(ndf, GAF_SMITH_EXACT, r);
+  return cLambdaQuad(ndf, m.dp, mu) / mu;
+}
+
+double weakFurnace(int ndf, double r, double mu) { return weakFurnace(ndf, GAF_SMITH, r, mu); }
+
+double weakFurnace(int ndf, int gaf, double r, double mu) {
+  Model m = model(ndf, gaf, r);
   double s = std::sqrt((1 - mu) * (1 + mu));
-  double g1 = 1 / (1 + smithLambda(m, mu));
+  bool exact = gaf == GAF_SMITH_EXACT || gaf == GAF_SMITH_CORRELATED_EXACT;
+  double g1 = 1 / (1 + (exact ? smithLambdaExact(ndf, r, mu) : smithLambda(m, mu)));
   // int over h with o.h > 0: cos(phi) > -mu c/(s sn)
   auto outer = [&](double th) {
     double sn = std::sin(th), c = std::cos(th);

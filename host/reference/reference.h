@@ -52,6 +52,12 @@ Moments albedo(int ndf, int gaf, double r, double mu, const Weight& w = {});
 double albedoAvg(int ndf, int gaf, double r, const Weight& w = {});
 // Weak white furnace: int G1(o) max(0, o.h) D(h) dw_h, which is mu for a Smith G1 matching D.
 double weakFurnace(int ndf, double r, double mu);
+// The same with the Smith G1 of a GAF: GAF_SMITH (Beckmann's Lambda for Blinn-Phong and the
+// gaussian) or GAF_SMITH_EXACT / GAF_SMITH_CORRELATED_EXACT (the exact Lambda, smithLambdaExact).
+double weakFurnace(int ndf, int gaf, double r, double mu);
+// The exact Smith Lambda of the NDF at r for the direction with cosine mu, by adaptive quadrature
+// of the back-facing projected area (Heitz 2014 eq. 17-18), independent of kernels/brdf/smith_tables.h.
+double smithLambdaExact(int ndf, double r, double mu);
 
 // The mirror limit (alpha -> 0 at mu > 0): D becomes a delta at h = n, i = o mirrored, and
 // E(mu, 0) = G at that configuration (hand-derived per GAF); A and B split it by (1 - mu)^5.

@@ -19,6 +19,7 @@
  *   lane_load(tab, k)  tab[k .. k + BRDF_LANES) as a lane_t;  lane_store(x, arr, k) the reverse
  *   lane_sum(x)        the sum of x's lanes
  *   param_t            a value derived from the per-texel parameters: one value in both passes
+ *   tab_at(tab, i)     tab[i] of a BRDF_CONST float table, i an integer held in a real (per lane)
  */
 #ifndef BRDF_COMPAT_H
 #define BRDF_COMPAT_H
@@ -48,6 +49,13 @@ typedef float acc_t;
 #endif
 #define BRDF_CONST constant
 #define BRDF_TABLE constant /* a parameter pointing into a BRDF_CONST table */
+/* tab_at(tab, i): tab[i] for an index held in a real (an integer value), gathered lane by lane */
+static inline __attribute__((overloadable)) float tab_at(constant float* t, float i) { return t[(int)i]; }
+static inline __attribute__((overloadable)) float16 tab_at(constant float* t, float16 i) {
+  int16 k = convert_int16(i);
+  return (float16)(t[k.s0], t[k.s1], t[k.s2], t[k.s3], t[k.s4], t[k.s5], t[k.s6], t[k.s7], t[k.s8], t[k.s9],
+                   t[k.sa], t[k.sb], t[k.sc], t[k.sd], t[k.se], t[k.sf]);
+}
 #else /* C++ host */
 #include <cmath>
 #define BRDF_FN static inline
@@ -77,6 +85,7 @@ using std::erfc;
 using std::exp;
 using std::expm1;
 using std::fabs;
+using std::floor;
 using std::fmax;
 using std::fmin;
 using std::log;
@@ -90,4 +99,5 @@ typedef real param_t;
 BRDF_FN real lane_load(const real* tab, int k) { return tab[k]; }
 BRDF_FN real lane_sum(real x) { return x; }
 BRDF_FN void lane_store(real x, real* arr, int k) { arr[k] = x; }
+BRDF_FN real tab_at(const float* t, real i) { return (real)t[(int)i]; }
 #endif

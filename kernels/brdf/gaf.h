@@ -19,7 +19,11 @@
 #define GAF_SCHLICK_GGX_DIRECT 8
 #define GAF_SMITH 9
 #define GAF_SMITH_CORRELATED 10
-#define GAF_COUNT 11
+/* the same with the NDF's exact Smith Lambda (ndf_cLambda_exact): differs for Blinn-Phong and the
+ * gaussian, whose `smith`/`smith-correlated` keep Beckmann's Lambda (MODELS.md "Exact Smith Lambda") */
+#define GAF_SMITH_EXACT 11
+#define GAF_SMITH_CORRELATED_EXACT 12
+#define GAF_COUNT 13
 
 /* Schlick's k per convention (MODELS.md): schlick-beckmann k = alpha sqrt(2/pi) (Schlick 1994 with
  * m = alpha), schlick-ggx k = alpha/2 (Karis 2013, IBL), schlick-ggx-direct k = (r+1)^2/8 (Karis 2013,
@@ -62,6 +66,10 @@ BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, param_t no, 
   } else if (gaf == GAF_SMITH) {
     /* separable Smith: G1(i) G1(o), G1(v)/(n.v) = 1/(n.v + n.v Lambda(v)) */
     g = ni / ((ni + ndf_cLambda(ndf, p, ni, s2i)) * (no + ndf_cLambda(ndf, p, no, s2o)));
+  } else if (gaf == GAF_SMITH_EXACT) {
+    g = ni / ((ni + ndf_cLambda_exact(ndf, p, ni, s2i)) * (no + ndf_cLambda_exact(ndf, p, no, s2o)));
+  } else if (gaf == GAF_SMITH_CORRELATED_EXACT) {
+    g = ni / (ni * no + no * ndf_cLambda_exact(ndf, p, ni, s2i) + ni * ndf_cLambda_exact(ndf, p, no, s2o));
   } else {
     /* height-correlated Smith (Heitz 2014): 1/(1 + Lambda_i + Lambda_o), times ni/ni */
     g = ni / (ni * no + no * ndf_cLambda(ndf, p, ni, s2i) + ni * ndf_cLambda(ndf, p, no, s2o));
