@@ -90,7 +90,9 @@ void energyLoss(const KernelTable& t, const KernelTable& avg, int n, bool node, 
             "Energy lost by " + pairName(ndf, gaf) + " (negative: the lobe gains energy it should not).");
 }
 
-// Weak white furnace (Heitz 2014): int G1(o) max(0, o.h) D dw_h = mu for an exact Smith G1.
+// Weak white furnace (Heitz 2014): int G1(o) max(0, o.h) D dw_h = mu for an exact Smith G1, with
+// the GAF's own Lambda (smith/smith-correlated: Beckmann's for blinn-phong and the gaussian;
+// the -exact variants: the NDF's own).
 VerifyCheck weakFurnace(int ndf, int gaf) {
   VerifyCheck c{"weak furnace", true, isSmith(gaf), 0, "", ""};
   if (!c.applies) {
@@ -99,7 +101,7 @@ VerifyCheck weakFurnace(int ndf, int gaf) {
   }
   for (double r : {0.2, 0.4, 0.6, 0.8, 1.0})
     for (double mu : {0.05, 0.1, 0.25, 0.5, 0.75, 1.0}) {
-      double d = std::fabs(reference::weakFurnace(ndf, r, mu) / mu - 1);
+      double d = std::fabs(reference::weakFurnace(ndf, gaf, r, mu) / mu - 1);
       if (d > c.worst) {
         c.worst = d;
         c.where = "mu=" + fmt4(mu) + " r=" + fmt4(r);
