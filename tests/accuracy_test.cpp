@@ -114,10 +114,17 @@ TEST_P(PairTest, AverageAlbedoMatchesReference) {
   }
 }
 
+// The GAFs these reference sweeps cover: all but the exact-Smith ones, whose reference Lambda is
+// itself an adaptive integral per direction (a 1025-node cache per (NDF, r)), which makes every
+// sweep here take minutes per pair. Those two are checked against the reference in
+// tests/smith_exact_test.cpp (Lambda, weak furnace, the device's albedo at nodes) and for
+// finiteness below; for ggx and beckmann they are smith and smith-correlated exactly.
+constexpr int kReferenceSweepGafs = GAF_SMITH_CORRELATED + 1;
+
 std::vector<std::pair<int, int>> allPairs() {
   std::vector<std::pair<int, int>> v;
   for (int n = 0; n < 4; ++n)
-    for (int g = 0; g < GAF_COUNT; ++g) v.push_back({n, g});
+    for (int g = 0; g < kReferenceSweepGafs; ++g) v.push_back({n, g});
   return v;
 }
 
@@ -164,6 +171,7 @@ TEST(Stiff, BlinnPhongHugeExponentsAndGrazingViewsMatchReference) {
     KernelTable t = runner().hemisphere(NDF_BLINN_PHONG, gaf, n, n, false);
     for (size_t k = 0; k < t.planes[2].size(); ++k)
       ASSERT_TRUE(std::isfinite(t.planes[0][k]) && std::isfinite(t.planes[1][k]) && std::isfinite(t.err[k]));
+    if (gaf >= kReferenceSweepGafs) continue;  // finite; the reference comparison is smith_exact_test's
     for (int i : {0, 1, n / 2, n - 1})  // mu = 1/128 (e = 2 128^4 ~ 5e8 at r = 1/128), 3/128, 1/2, 1 - 1/128
       checkTexel(t, static_cast<size_t>(i), NDF_BLINN_PHONG, gaf, (i + 0.5) / n, 0.5 / n);
   }
