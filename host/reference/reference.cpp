@@ -64,6 +64,7 @@ struct Model {
   double k;                   // Schlick's k
   brdf64::BrdfParams dp;      // for D only (alpha, and 1/k_p of the gaussian)
   double oc = -1;             // o.h where the weight has a kink (Fresnel's critical angle), or -1
+  bool direct = false;        // exact Lambda by quadrature at each call, not from the per-r cache
 };
 
 // Where the weight has a kink: total internal reflection from o.h < sqrt(1 - eta^2), eta < 1.
@@ -181,7 +182,7 @@ double cLambdaExact(const Model& m, double c) {
 
 double smithLambdaExact(const Model& m, double c) {
   if (m.ndf != NDF_BLINN_PHONG && m.ndf != NDF_GAUSSIAN) return smithLambda(m, c);
-  return cLambdaExact(m, c) / c;
+  return (m.direct ? cLambdaQuad(m.ndf, m.dp, c) : cLambdaExact(m, c)) / c;
 }
 
 double gafOf(const Model& m, const dvec3& i, const dvec3& o, const dvec3& h) {
@@ -352,7 +353,9 @@ Moments albedoInside(int ndf, int gaf, double r, double mu, const Weight& wt) {
 }  // namespace
 
 double gaf(int ndf, int g, double r, const double i[3], const double o[3], const double h[3]) {
-  return gafOf(model(ndf, g, r), dvec3(i[0], i[1], i[2]), dvec3(o[0], o[1], o[2]), dvec3(h[0], h[1], h[2]));
+  Model m = model(ndf, g, r);
+  m.direct = true;  // one point: the quadrature itself (the cache pays off over an integral)
+  return gafOf(m, dvec3(i[0], i[1], i[2]), dvec3(o[0], o[1], o[2]), dvec3(h[0], h[1], h[2]));
 }
 
 double normalisation(int ndf, double r, double invKp) {
