@@ -355,7 +355,7 @@ std::string energyWarnings(const TableImage& t) {
       return "warning: " + name + " exceeds 1 (max " + b + "): a single-scattering albedo cannot; " + str("brdf.ndf") +
              " with " + str("brdf.gaf") +
              (str("brdf.gaf") == "none" ? " (G = 1, albedo ~ 1/mu at grazing)"
-                                        : " (a Lambda borrowed from Beckmann, not the NDF's own)") +
+                                        : " (a Lambda borrowed from Beckmann, not the NDF's own; " + str("brdf.gaf") + "-exact has the exact one)") +
              " does not conserve energy; see docs/MODELS.md, \"Tables that exceed 1\"\n";
     }
   }
