@@ -67,11 +67,6 @@ struct Model {
   bool direct = false;        // exact Lambda by quadrature at each call, not from the per-r cache
 };
 
-// Where the weight has a kink: total internal reflection from o.h < sqrt(1 - eta^2), eta < 1.
-double weightKink(const Weight& w) {
-  bool tir = w.kind == Weight::Fresnel && (w.f.model == FRESNEL_DIELECTRIC || w.f.model == FRESNEL_SCHLICK_TIR);
-  return tir && w.f.x < 1 ? std::sqrt(1 - w.f.x * w.f.x) : -1;
-}
 
 // Schlick's k: Schlick 1994 with m = alpha (k = alpha sqrt(2/pi)); Karis 2013: alpha/2 for image
 // based lighting, (r + 1)^2/8 for analytic lights.
@@ -352,6 +347,12 @@ Moments albedoInside(int ndf, int gaf, double r, double mu, const Weight& wt) {
 
 }  // namespace
 
+// Where the weight has a kink: total internal reflection from o.h < sqrt(1 - eta^2), eta < 1.
+double weightKink(const Weight& w) {
+  bool tir = w.kind == Weight::Fresnel && (w.f.model == FRESNEL_DIELECTRIC || w.f.model == FRESNEL_SCHLICK_TIR);
+  return tir && w.f.x < 1 ? std::sqrt(1 - w.f.x * w.f.x) : -1;
+}
+
 double gaf(int ndf, int g, double r, const double i[3], const double o[3], const double h[3]) {
   Model m = model(ndf, g, r);
   m.direct = true;  // one point: the quadrature itself (the cache pays off over an integral)
@@ -383,32 +384,6 @@ double kp(int ndf, double r) {
   return integrate(f, 0, kPi / 2, lobeBreaks(p.alpha, kPi / 2));
 }
 
-// Derived by hand: with alpha -> 0 at mu > 0, E = int D (G/no) F (o.h) dw_h concentrates at h = n,
-// where i = (-s, 0, mu): n.i = n.o = o.h = i.h = mu, n.h = 1, so E = (G/mu) mu = G there:
-//   none, cook-torrance (min(1, 2, 2)), kelemen (mu^2/mu^2): 1; implicit: mu^2; neumann: mu;
-//   ashikhmin-premoze: mu^2/(2 mu - mu^2) = mu/(2 - mu); Schlick with k -> 0: 1, and
-//   schlick-ggx-direct, whose k = (r + 1)^2/8 -> 1/8: (mu/(mu (1 - k) + k))^2;
-//   smith, smith-correlated: Lambda -> 0 for every direction above the horizon, so 1.
-Moments mirrorAlbedo(int gaf, double mu, const Weight& w) {
-  double e = 1;
-  switch (gaf) {
-    case GAF_IMPLICIT: e = mu * mu; break;
-    case GAF_NEUMANN: e = mu; break;
-    case GAF_ASHIKHMIN_PREMOZE: e = mu / (2 - mu); break;
-    case GAF_SCHLICK_GGX_DIRECT: {
-      double g = mu / (mu * 7 / 8 + 1.0 / 8);
-      e = g * g;
-      break;
-    }
-    default: break;
-  }
-  if (mu <= 0 && gaf != GAF_NONE) e = 0;
-  Moments m;
-  m.b = e * weightAt(w, mu);  // o.h = mu at the mirror configuration
-  m.a = e - m.b;
-  return m;
-}
-
 Moments albedo(int ndf, int gaf, double r, double mu, const Weight& w) {
   if (r <= 0 && mu <= 0) {
     // the corner: the limit along the mu = 0 edge, from inside (alpha ~ 1e-9, mu << alpha)
@@ -429,55 +404,6 @@ double albedoAvg(int ndf, int gaf, double r, const Weight& w) {
   }
   auto f = [&](double mu) { return 2 * mu * value(albedoInside(ndf, gaf, r, mu, w)); };
   return integrate(f, 0, 1, lobeBreaks(r * r, 1));
-}
-
-// Fresnel from the complex amplitudes (Born and Wolf 1999, sec. 1.5 and 14.2): with the relative
-// index n = eta + i k and cos_t = sqrt(1 - (1 - c^2)/n^2) (principal root: the transmitted wave
-// decays), r_s = (c - n cos_t)/(c + n cos_t), r_p = (n c - cos_t)/(n c + cos_t),
-// F = (|r_s|^2 + |r_p|^2)/2. Total internal reflection (real eta < 1) comes out as |r| = 1.
-double complexFresnel(double eta, double k, double c) {
-  using C = std::complex<double>;
-  C n(eta, k);
-  C ct = std::sqrt(C(1.0) - C((1 - c) * (1 + c)) / (n * n));
-  C rs = (c - n * ct) / (c + n * ct), rp = (n * c - ct) / (n * c + ct);
-  return 0.5 * (std::norm(rs) + std::norm(rp));
-}
-
-double fresnel(const FresnelSpec& f, double c) {
-  c = std::min(std::fabs(c), 1.0);
-  auto schlick = [](double f0, double x) { return f0 + (1 - f0) * std::pow(1 - x, 5); };  // Schlick 1994
-  switch (f.model) {
-    case FRESNEL_SCHLICK: return schlick(f.x, c);
-    case FRESNEL_DIELECTRIC: return complexFresnel(f.x, 0, c);
-    case FRESNEL_CONDUCTOR: return complexFresnel(f.x, f.y, c);
-    case FRESNEL_SCHLICK_TIR: {  // Burley 2015: Schlick on the transmitted cosine where eta < 1
-      double f0 = std::pow((f.x - 1) / (f.x + 1), 2);
-      if (f.x >= 1) return schlick(f0, c);
-      double ct2 = 1 - (1 - c * c) / (f.x * f.x);
-      return ct2 < 0 ? 1.0 : schlick(f0, std::sqrt(ct2));
-    }
-    case FRESNEL_F82_TINT: {  // Hoffman 2019 / OpenPBR: F(1/7) = tint * Schlick(1/7)
-      const double mb = 1.0 / 7;
-      double b = schlick(f.x, mb) * (1 - f.y) / (mb * std::pow(1 - mb, 6));
-      return schlick(f.x, c) - b * c * std::pow(1 - c, 6);
-    }
-    default: return 1.0;
-  }
-}
-
-double weightAt(const Weight& w, double c) {
-  switch (w.kind) {
-    case Weight::Fresnel: return fresnel(w.f, c);
-    case Weight::F82C: return c * std::pow(1 - c, 6);
-    default: return std::pow(1 - c, 5);
-  }
-}
-
-double fresnelAvg(const FresnelSpec& f) {
-  Weight w{Weight::Fresnel, f};
-  double oc = weightKink(w);
-  auto g = [&](double mu) { return 2 * mu * fresnel(f, mu); };
-  return integrate(g, 0, 1, oc > 0 ? std::vector<double>{oc} : std::vector<double>{}, 40, 1e-15, 1e-14);
 }
 
 double smithLambdaExact(int ndf, double r, double mu) {

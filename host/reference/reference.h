@@ -34,6 +34,9 @@ struct Weight {
   FresnelSpec f;
 };
 double weightAt(const Weight& w, double c);
+// Where the weight has a kink: o.h = sqrt(1 - eta^2) for a Fresnel with total internal reflection
+// (dielectric, schlick-tir with eta < 1); -1 where it has none.
+double weightKink(const Weight& w);
 
 struct Moments {
   double a = 0, b = 0;  // split-sum A, B; E = a + b

@@ -1,0 +1,64 @@
+// The reference's Fresnel: reflectance from the complex amplitudes, the albedo weights, F_avg.
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+#include "common/brdf_host.h"
+#include "reference/adaptive.h"
+#include "reference/reference.h"
+
+namespace brdfbake::reference {
+
+// Fresnel from the complex amplitudes (Born and Wolf 1999, sec. 1.5 and 14.2): with the relative
+// index n = eta + i k and cos_t = sqrt(1 - (1 - c^2)/n^2) (principal root: the transmitted wave
+// decays), r_s = (c - n cos_t)/(c + n cos_t), r_p = (n c - cos_t)/(n c + cos_t),
+// F = (|r_s|^2 + |r_p|^2)/2. Total internal reflection (real eta < 1) comes out as |r| = 1.
+double complexFresnel(double eta, double k, double c) {
+  using C = std::complex<double>;
+  C n(eta, k);
+  C ct = std::sqrt(C(1.0) - C((1 - c) * (1 + c)) / (n * n));
+  C rs = (c - n * ct) / (c + n * ct), rp = (n * c - ct) / (n * c + ct);
+  return 0.5 * (std::norm(rs) + std::norm(rp));
+}
+
+double fresnel(const FresnelSpec& f, double c) {
+  c = std::min(std::fabs(c), 1.0);
+  auto schlick = [](double f0, double x) { return f0 + (1 - f0) * std::pow(1 - x, 5); };  // Schlick 1994
+  switch (f.model) {
+    case FRESNEL_SCHLICK: return schlick(f.x, c);
+    case FRESNEL_DIELECTRIC: return complexFresnel(f.x, 0, c);
+    case FRESNEL_CONDUCTOR: return complexFresnel(f.x, f.y, c);
+    case FRESNEL_SCHLICK_TIR: {  // Burley 2015: Schlick on the transmitted cosine where eta < 1
+      double f0 = std::pow((f.x - 1) / (f.x + 1), 2);
+      if (f.x >= 1) return schlick(f0, c);
+      double ct2 = 1 - (1 - c * c) / (f.x * f.x);
+      return ct2 < 0 ? 1.0 : schlick(f0, std::sqrt(ct2));
+    }
+    case FRESNEL_F82_TINT: {  // Hoffman 2019 / OpenPBR: F(1/7) = tint * Schlick(1/7)
+      const double mb = 1.0 / 7;
+      double b = schlick(f.x, mb) * (1 - f.y) / (mb * std::pow(1 - mb, 6));
+      return schlick(f.x, c) - b * c * std::pow(1 - c, 6);
+    }
+    default: return 1.0;
+  }
+}
+
+double weightAt(const Weight& w, double c) {
+  switch (w.kind) {
+    case Weight::Fresnel: return fresnel(w.f, c);
+    case Weight::F82C: return c * std::pow(1 - c, 6);
+    default: return std::pow(1 - c, 5);
+  }
+}
+
+double fresnelAvg(const FresnelSpec& f) {
+  Weight w{Weight::Fresnel, f};
+  double oc = weightKink(w);
+  auto g = [&](double mu) { return 2 * mu * fresnel(f, mu); };
+  // split at the critical angle, where F has a square-root end
+  double v = 0;
+  if (oc > 0) v += detail::adapt(g, 0.0, oc, 1e-15, 40, 1e-14);
+  return v + detail::adapt(g, std::max(oc, 0.0), 1.0, 1e-15, 40, 1e-14);
+}
+
+}  // namespace brdfbake::reference
