@@ -39,6 +39,20 @@ KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool node
   return hemisphereRange(ndf, gaf, nx, ny, 0.0f, 1.0f, 0.0f, 1.0f, nodeGrid, w);
 }
 
+namespace {
+// The grid arguments the 2D kernels share, from index `first`: nx, ny, the x range, the y range,
+// node grid or texel centres.
+void setGridArgs(cl::Kernel& k, int first, int nx, int ny, float xLo, float xHi, float yLo, float yHi, bool nodeGrid) {
+  k.setArg(first, nx);
+  k.setArg(first + 1, ny);
+  k.setArg(first + 2, xLo);
+  k.setArg(first + 3, xHi);
+  k.setArg(first + 4, yLo);
+  k.setArg(first + 5, yHi);
+  k.setArg(first + 6, nodeGrid ? 1 : 0);
+}
+}  // namespace
+
 KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, float muLo, float muHi, float rLo,
                                           float rHi, bool nodeGrid, const HemiWeight& w, int level) {
   Compiled& c = compiled(ndf, gaf, kHemisphere);
@@ -51,13 +65,7 @@ KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, floa
   k.setArg(1, b);
   k.setArg(2, e);
   k.setArg(3, err);
-  k.setArg(4, nx);
-  k.setArg(5, ny);
-  k.setArg(6, muLo);
-  k.setArg(7, muHi);
-  k.setArg(8, rLo);
-  k.setArg(9, rHi);
-  k.setArg(10, nodeGrid ? 1 : 0);
+  setGridArgs(k, 4, nx, ny, muLo, muHi, rLo, rHi, nodeGrid);
   setWeightArgs(k, 11, w);
   k.setArg(15, level);
   run(c, k, nx, ny);
@@ -151,13 +159,7 @@ KernelTable KernelRunner::diffuseAlbedo(int model, int nx, int ny, float pLo, fl
   cl::Kernel k(c.program, kDiffuse);
   k.setArg(0, e);
   k.setArg(1, err);
-  k.setArg(2, nx);
-  k.setArg(3, ny);
-  k.setArg(4, muLo);
-  k.setArg(5, muHi);
-  k.setArg(6, pLo);
-  k.setArg(7, pHi);
-  k.setArg(8, nodeGrid ? 1 : 0);
+  setGridArgs(k, 2, nx, ny, muLo, muHi, pLo, pHi, nodeGrid);
   k.setArg(9, model);
   run(c, k, nx, ny);
   KernelTable t;

@@ -294,7 +294,6 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
           (std::string(o) == "--diffuse" && req.diffuse >= 0))
         throw Error(kExitUsage, std::string(o) + ": not a verify option (verify checks NDF/GAF pairs: --ndf, --gaf, --size, -o)");
   }
-  req.tablesGiven = !req.tables.empty();
   if (!req.tables.empty()) {
   } else if (req.diffuse >= 0) {
     req.tables = {TableKind::Albedo};  // the diffuse model's albedo

@@ -26,7 +26,6 @@ struct BakeRequest {
   std::string coupling = "sum";      // energy: --coupling sum | albedo-scaling
   std::vector<int> levels = {0, 1, 2, 3};                           // convergence: quadrature levels
   std::vector<int> samples = {16, 64, 256, 1024, 4096, 16384, 65536};  // convergence: MC samples
-  bool tablesGiven = false;          // --table given (else the defaults, which depend on --fresnel)
 };
 
 struct Command {
