@@ -25,32 +25,16 @@
 #include <cstdlib>
 #include <vector>
 
+#include "reference/adaptive.h"
+
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int NZ = 129, NY = 33;
 
 template <class F>
-double adapt(F& f, double a, double b, double tol, int depth) {
-  using K = boost::math::quadrature::gauss_kronrod<double, 31>;
-  using G = boost::math::quadrature::gauss<double, 15>;
-  const auto& x = K::abscissa();
-  const auto& wk = K::weights();
-  const auto& wg = G::weights();
-  double c = 0.5 * (a + b), h = 0.5 * (b - a);
-  double f0 = f(c), vk = wk[0] * f0, vg = wg[0] * f0;
-  for (size_t i = 1; i < x.size(); ++i) {
-    double s = f(c - h * x[i]) + f(c + h * x[i]);
-    vk += wk[i] * s;
-    if (i % 2 == 0) vg += wg[i / 2] * s;
-  }
-  if (std::fabs(vk - vg) * h <= tol || depth == 0) return vk * h;
-  return adapt(f, a, c, 0.5 * tol, depth - 1) + adapt(f, c, b, 0.5 * tol, depth - 1);
-}
-
-template <class F>
 double integrate(F f, std::vector<double> br, double tol) {
   double s = 0;
-  for (size_t i = 0; i + 1 < br.size(); ++i) s += adapt(f, br[i], br[i + 1], tol, 40);
+  for (size_t i = 0; i + 1 < br.size(); ++i) s += brdfbake::reference::detail::adapt(f, br[i], br[i + 1], tol, 40, 0.0);  // absolute tolerance only
   return s;
 }
 
