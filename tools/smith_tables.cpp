@@ -151,7 +151,10 @@ int main(int argc, char** argv) {
     for (int j = 0; j < NY; ++j)
       for (int i = 0; i < NZ; ++i) tab[j * NZ + i] = value(model, double(i) / (NZ - 1), double(j) / (NY - 1));
     std::printf("BRDF_CONST float smith_tab_%s[SMITH_NZ * SMITH_NY] = {\n", names[m]);
-    for (int k = 0; k < NZ * NY; ++k) std::printf("%.9ef%s", tab[k], (k % 24 == 23 || k + 1 == NZ * NY) ? ",\n" : ", ");
+    // values below float's smallest subnormal are 0 as float literals anyway: written as 0, so
+    // that compilers do not warn about truncation
+    for (int k = 0; k < NZ * NY; ++k)
+      std::printf("%.9ef%s", std::fabs(tab[k]) < 1e-45 ? 0.0 : tab[k], (k % 24 == 23 || k + 1 == NZ * NY) ? ",\n" : ", ");
     std::printf("};\n");
     // error at cell centres (and off-centre points): G1-relative (|dLambda|/(1 + Lambda)) and
     // Lambda-relative where Lambda > 1e-3
