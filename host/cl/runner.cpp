@@ -43,9 +43,9 @@ std::string kernelSource(int ndf, int gaf) {
   src += "#define BRDF_LANE_PASS 1\n#undef real\n#define real lane_t\n";
   for (const char* f : pointwise) append(src, f);
   src += "#undef BRDF_LANE_PASS\n#undef real\n#define real float\n";
-  for (const char* f : {"kernels/integrate/quadrature.h", "kernels/integrate/azimuth.h", "kernels/integrate/hemisphere.h",
-                        "kernels/integrate/albedo_avg.h", "kernels/integrate/diffuse_albedo.h",
-                        "kernels/bake.cl"})
+  for (const char* f : {"kernels/brdf/brdf.h", "kernels/integrate/quadrature.h", "kernels/integrate/azimuth.h",
+                        "kernels/integrate/hemisphere.h", "kernels/integrate/albedo_avg.h",
+                        "kernels/integrate/diffuse_albedo.h", "kernels/bake.cl", "kernels/brdf3d.cl"})
     append(src, f);
   return src;
 }
@@ -75,6 +75,18 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
     k.setArg(10, 0);
     setWeightArgs(k, 11, {});
     k.setArg(15, -1);
+  } else if (name == kBrdf3d) {
+    k.setArg(0, dummy);
+    for (int i = 1; i < 9; ++i) k.setArg(i, 0);
+    k.setArg(9, 0.5f);
+    k.setArg(10, 0);
+    cl_float4 zero = {{0, 0, 0, 0}};
+    k.setArg(11, zero);
+    k.setArg(12, zero);
+    k.setArg(13, -1);
+    k.setArg(14, 0.0f);
+    k.setArg(15, zero);
+    k.setArg(16, 0);
   } else {
     k.setArg(0, dummy);
     k.setArg(1, dummy);
@@ -173,6 +185,9 @@ void KernelRunner::prepare(TableKind kind, int ndf, int gaf) {
       if (Compiled* c = kpProgram(ndf)) compileKernel(*c, kKp);
       else compiled(ndf, GAF_NONE, kKp);
       break;
+    case TableKind::Brdf3d:
+      compiled(ndf, gaf, kBrdf3d);
+      break;
     case TableKind::FresnelAvg:  // computed on the host
       break;
   }
@@ -193,6 +208,7 @@ std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<TableNeed>&
   for (const TableNeed& t : tables) {
     if (t.kind == TableKind::SplitSum || t.kind == TableKind::Albedo) add(t.ndf, t.gaf, kHemisphere);
     if (t.kind == TableKind::AlbedoAvg) add(t.ndf, t.gaf, kAlbedoNodes);
+    if (t.kind == TableKind::Brdf3d) add(t.ndf, t.gaf, kBrdf3d);
   }
   for (const TableNeed& t : tables) {
     if (t.kind != TableKind::Kp) continue;

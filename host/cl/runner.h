@@ -24,6 +24,8 @@
 
 namespace brdfbake {
 
+struct Brdf3dSpec;  // common/brdf3d_grid.h
+
 // The full device source for one NDF/GAF pair: a #define prelude, then the embedded files.
 std::string kernelSource(int ndf, int gaf);
 
@@ -77,6 +79,10 @@ class KernelRunner {
                         float rHi = 1.0f);
   // k_p over r.
   KernelTable kp(int ndf, int n, bool nodeGrid, float rLo = 0.0f, float rHi = 1.0f);
+
+  // One slab of a 3D BRDF table (kernels/brdf3d.cl): slices z0 .. z0 + zn - 1 of the spec's table,
+  // one plane per channel, [((z - z0) * ny + y) * nx + x].
+  std::vector<std::vector<float>> brdf3dSlab(const Brdf3dSpec& spec, int z0, int zn);
 
   // Threads prepareAll uses (default: hardware_concurrency; 1 = in order on this thread).
   void setBuildThreads(int n) { buildThreads_ = n; }

@@ -13,6 +13,7 @@ namespace brdfbake::runner_detail {
 inline const char* const kHemisphere = "bake_hemisphere";
 inline const char* const kAlbedoNodes = "bake_albedo_nodes";
 inline const char* const kKp = "bake_kp";
+inline const char* const kBrdf3d = "bake_brdf3d";
 
 // On a CPU device (PoCL) every launch uses these local sizes: PoCL generates one work-group
 // function per kernel and local size, a few tenths of a second each, so one size per kernel keeps

@@ -5,6 +5,7 @@
 
 #include "cl/runner.h"
 #include "cl/runner_internal.h"
+#include "common/brdf3d_grid.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 
@@ -168,6 +169,45 @@ KernelTable KernelRunner::diffuseAlbedo(int model, int nx, int ny, float pLo, fl
   t.planes = {readBack(s.queue, e, n)};
   t.err = readBack(s.queue, err, n);
   return t;
+}
+
+}  // namespace brdfbake
+
+namespace brdfbake {
+
+std::vector<std::vector<float>> KernelRunner::brdf3dSlab(const Brdf3dSpec& spec, int z0, int zn) {
+  Compiled& c = compiled(spec.ndf, spec.gaf, kBrdf3d);
+  Slot& s = *slots_[c.slot];
+  const int nchan = spec.channels();
+  size_t plane = static_cast<size_t>(spec.nx) * spec.ny * zn;
+  cl::Buffer out = outBuffer(s.context, plane * nchan);
+  cl_float4 fx = {{0, 0, 0, 0}}, fy = {{0, 0, 0, 0}}, rho = {{1, 1, 1, 1}};
+  for (int ch = 0; ch < nchan; ++ch) {
+    auto [x, y] = spec.fresnel.kernelParams(spec.fresnel.channels() == 3 ? ch : 0);
+    fx.s[ch] = static_cast<float>(x);
+    fy.s[ch] = static_cast<float>(y);
+    if (!spec.rho.empty()) rho.s[ch] = static_cast<float>(spec.rho[spec.rho.size() == 3 ? ch : 0]);
+  }
+  cl::Kernel k(c.program, kBrdf3d);
+  int a = 0;
+  k.setArg(a++, out);
+  for (int v : {spec.nx, spec.ny, spec.nz, z0, zn, spec.kernelParam(), spec.kernelGrid(), spec.timesCos ? 1 : 0})
+    k.setArg(a++, v);
+  k.setArg(a++, static_cast<float>(spec.roughness));
+  k.setArg(a++, spec.fresnel.model);
+  k.setArg(a++, fx);
+  k.setArg(a++, fy);
+  k.setArg(a++, spec.diffuse);
+  k.setArg(a++, static_cast<float>(spec.diffuseParam));
+  k.setArg(a++, rho);
+  k.setArg(a++, nchan);
+  run(c, k, spec.nx, static_cast<size_t>(spec.ny) * zn);
+  std::vector<float> all = readBack(s.queue, out, plane * nchan);
+  std::vector<std::vector<float>> planes(nchan);
+  for (int ch = 0; ch < nchan; ++ch)
+    planes[ch].assign(all.begin() + static_cast<std::ptrdiff_t>(ch * plane),
+                      all.begin() + static_cast<std::ptrdiff_t>((ch + 1) * plane));
+  return planes;
 }
 
 }  // namespace brdfbake

@@ -19,7 +19,7 @@ const std::vector<std::string>& gafNames() {
 }
 
 const std::vector<std::string>& tableNames() {
-  static const std::vector<std::string> n = {"splitsum", "albedo", "albedo-avg", "kp", "fresnel-avg"};
+  static const std::vector<std::string> n = {"splitsum", "albedo", "albedo-avg", "kp", "fresnel-avg", "brdf3d"};
   return n;
 }
 
