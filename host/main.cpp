@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "bake/bake.h"
+#include "bake/volume.h"
 #include "cl/device.h"
 #include "cli/args.h"
 #include "common/errors.h"
@@ -36,6 +37,9 @@ int main(int argc, char** argv) {
       case Command::Kind::Info:
         std::cout << describeTableExr(cmd.file);
         std::cout << energyWarnings(readTableExr(cmd.file));
+        return kExitOk;
+      case Command::Kind::Sample:
+        std::cout << sampleReport(cmd.file, cmd.at);
         return kExitOk;
       case Command::Kind::Energy: {
         if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);

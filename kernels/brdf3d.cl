@@ -10,16 +10,14 @@
  *
  * Precision. Every angle is a multiple of pi, so cos and sin come from cospi/sinpi of the exact
  * grid fraction, and of its complement 1 - t formed from integers, so that cos theta near grazing
- * keeps full relative precision. The directions are formed in double where the device has it
- * (cl_khr_fp64), in float otherwise; the BRDF itself is evaluated in float.
+ * keeps full relative precision. Its program is its own (host/cl/runner.cpp volumeKernelSource):
+ * compat.h, the models and this file, with `real` = double where the device has cl_khr_fp64 (float
+ * otherwise); the texel is rounded to float once, at the end.
  */
-#ifdef cl_khr_fp64
-#pragma OPENCL EXTENSION cl_khr_fp64 : enable
-typedef double geo_t;
-#else
-typedef float geo_t;
-#endif
+typedef real geo_t;
 
+/* |i + o|^2 below this: i = -o up to rounding (both directions on the horizon, opposite) */
+#define BRDF3D_OPPOSITE 1e-24
 #define B3_PARAM_ANGLES 0
 #define B3_PARAM_RUSINKIEWICZ 1
 #define B3_PARAM_RUSINKIEWICZ_SQRT 2
@@ -47,7 +45,7 @@ static inline void b3_half_angle(geo_t t, geo_t tc, geo_t* c, geo_t* s) {
   *s = sinpi((geo_t)0.5 * t);
 }
 
-/* The geometry of texel (x, y, z), from double (or float) directions to brdf.h's float struct. */
+/* The geometry of texel (x, y, z) as brdf.h takes it. */
 static inline BrdfGeometry b3_geometry(int x, int y, int z, int nx, int ny, int nz, int param, int grid) {
   geo_t tx, txc, ty, tyc, tz, tzc;
   b3_fraction(x, nx, grid, &tx, &txc);
@@ -55,6 +53,7 @@ static inline BrdfGeometry b3_geometry(int x, int y, int z, int nx, int ny, int 
   b3_fraction(z, nz, grid, &tz, &tzc);
   geo_t cp = cospi(tz), sp = sinpi(tz);
   geo_t ix, iy, iz, ox, oy, oz;
+  geo_t h_c = (geo_t)1, h_s = (geo_t)0, d_c = (geo_t)1;
   if (param == B3_PARAM_ANGLES) {
     /* i = (sin ti cos phi, sin ti sin phi, cos ti), o = (sin to, 0, cos to) */
     geo_t ci, si, co, so;
@@ -75,35 +74,46 @@ static inline BrdfGeometry b3_geometry(int x, int y, int z, int nx, int ny, int 
     b3_half_angle(ty, tyc, &cd, &sd);
     ix = sd * cp * ch + cd * sh; iy = sd * sp; iz = cd * ch - sd * cp * sh;
     ox = cd * sh - sd * cp * ch; oy = -iy; oz = cd * ch + sd * cp * sh;
+    h_c = ch; h_s = sh; d_c = cd;
   }
-  /* h = (i + o)/|i + o|; |i + o|^2 = 2 (1 + i.o) */
-  geo_t hx = ix + ox, hy = iy + oy, hz = iz + oz;
-  geo_t len2 = hx * hx + hy * hy + hz * hz;
   geo_t s2i = ix * ix + iy * iy, s2o = ox * ox + oy * oy;
   geo_t sio = sqrt(s2i * s2o);
   BrdfGeometry g;
-  g.ni = (float)iz;
-  g.no = (float)oz;
-  g.s2i = (float)s2i;
-  g.s2o = (float)s2o;
-  if (len2 > (geo_t)0) {
-    g.nh = (float)(hz / sqrt(len2));
-    g.s2h = (float)((hx * hx + hy * hy) / len2);
-    g.oh = (float)((geo_t)0.5 * sqrt(len2));
-  } else { /* i = -o: no half-vector (both grazing, opposite); f = 0 there (o.h = 0) */
-    g.nh = 0.0f;
-    g.s2h = 1.0f;
-    g.oh = 0.0f;
+  g.ni = iz;
+  g.no = oz;
+  g.s2i = s2i;
+  g.s2o = s2o;
+  if (param != B3_PARAM_ANGLES) {
+    /* the half-vector is an axis: n.h = cos th, o.h = cos td, exactly */
+    g.nh = h_c;
+    g.s2h = h_s * h_s;
+    g.oh = d_c;
+  } else {
+    /* h = (i + o)/|i + o|; |i + o|^2 = 2 (1 + i.o) */
+    geo_t hx = ix + ox, hy = iy + oy, hz = iz + oz;
+    geo_t len2 = hx * hx + hy * hy + hz * hz;
+    if (len2 > (geo_t)BRDF3D_OPPOSITE) {
+      g.nh = hz / sqrt(len2);
+      g.s2h = (hx * hx + hy * hy) / len2;
+      g.oh = (geo_t)0.5 * sqrt(len2);
+    } else { /* i = -o, both on the horizon: no half-vector, o.h = 0 (brdf.h: no specular) */
+      g.nh = RC(1.0);
+      g.s2h = RC(0.0);
+      g.oh = RC(0.0);
+    }
   }
-  g.cphi = sio > (geo_t)0 ? (float)((ix * ox + iy * oy) / sio) : 1.0f;
+  g.cphi = sio > (geo_t)0 ? (ix * ox + iy * oy) / sio : RC(1.0);
   return g;
 }
 
 /* out[((c * zn + z - z0) * ny + y) * nx + x] for z in [z0, z0 + zn): one slab of slices, channel
- * planes one after another. value 0: f; 1: f (n.i). Channel c's Fresnel parameters (fx.c, fy.c)
- * and diffuse albedo rho.c. */
+ * planes one after another. value 0: f; 1: f (n.i). The material: roughness r, 1/k_p of the
+ * gaussian's raw shape (inv_kp, from the host; 0 otherwise), channel c's Fresnel parameters
+ * (fx.c, fy.c) and diffuse albedo rho.c. Parameters arrive as float: the table is the BRDF of
+ * those float values (host/common/brdf3d_grid.cpp evaluates the same). */
 kernel void bake_brdf3d(global float* out, int nx, int ny, int nz, int z0, int zn, int param, int grid, int value,
-                        float r, int fresnel, float4 fx, float4 fy, int diffuse, float dparam, float4 rho, int nchan) {
+                        float r, float inv_kp, int fresnel, float4 fx, float4 fy, int diffuse, float dparam, float4 rho,
+                        int nchan) {
   int x = get_global_id(0), yz = get_global_id(1);
   if (x >= nx || yz >= ny * zn) return;
   int y = yz % ny, zl = yz / ny;
@@ -111,12 +121,13 @@ kernel void bake_brdf3d(global float* out, int nx, int ny, int nz, int z0, int z
   BrdfMaterial m;
   m.ndf = BRDF_NDF;
   m.gaf = BRDF_GAF;
-  m.p = brdf_params(BRDF_NDF, BRDF_GAF, r);
+  m.p = brdf_params_kp(BRDF_GAF, (real)r, (real)inv_kp);
   m.fresnel = fresnel;
   m.diffuse = diffuse;
-  m.dparam = dparam;
+  m.dparam = (real)dparam;
   float fxs[4] = {fx.x, fx.y, fx.z, fx.w}, fys[4] = {fy.x, fy.y, fy.z, fy.w}, rhos[4] = {rho.x, rho.y, rho.z, rho.w};
-  float cosi = value ? fmax(g.ni, 0.0f) : 1.0f;
+  real cosi = value ? fmax(g.ni, BRDF_MIN_COS) : RC(1.0); /* f = 0 below the horizon anyway */
   size_t plane = (size_t)nx * ny * zn, at = ((size_t)zl * ny + y) * nx + x;
-  for (int c = 0; c < nchan; ++c) out[c * plane + at] = brdf_f(m, g, fxs[c], fys[c], rhos[c]) * cosi;
+  for (int c = 0; c < nchan; ++c)
+    out[c * plane + at] = (float)(brdf_f(m, g, (real)fxs[c], (real)fys[c], (real)rhos[c]) * cosi);
 }

@@ -498,7 +498,7 @@ TEST(CliMaterials, BadMaterialInputNamesTheFlagAndWritesNothing) {
       {"energy --diffuse oren-nayar --sigma 2", "--sigma must be one angle in [0, 1.5708]"},
       {"energy --coupling product", "--coupling must be sum or albedo-scaling, got 'product'"},
       {"energy --table albedo", "--table: not an energy option"},
-      {"--sigma 0.3", "unknown option '--sigma'"},
+      {"--sigma 0.3", "--sigma: only --diffuse oren-nayar and oren-nayar-as-printed take it"},
   };
   for (auto [args, msg] : cases) {
     CmdResult r = run(std::string(args) + " -o " + (d / "o").string());

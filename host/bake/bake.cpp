@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "bake/output_set.h"
+#include "bake/volume.h"
 #include "cl/device.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"
@@ -186,6 +187,8 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       img.planes = {kt.planes[0]};
       channels = "R=G=B=k_p";
       break;
+    case TableKind::Brdf3d:
+      throw Error(kExitSoftware, "internal: a brdf3d table is written by bake/volume.cpp, not computeTable");
     case TableKind::FresnelAvg: {
       // F_avg(eta) on the host in double (1D, cheap): fresnelAverage, closed form or GK31
       kt.planes = {std::vector<float>(job.width)};
@@ -269,16 +272,20 @@ std::vector<TableReport> runPlan(const Plan& plan) {
   // Nothing is created before every table is computed and checked: a bad -o, a missing device
   // or an interrupt leaves the file system as it was.
   checkOutputDir(plan.outDir);
+  checkVolumeSpace(plan.outDir, plan.volumes);
   DeviceEntry dev = selectDevice(plan.device);
-  guardInterrupts("abandoned " + std::to_string(plan.jobs.size()) + " table(s) for " + plan.outDir + "/");
+  guardInterrupts("abandoned " + std::to_string(plan.jobs.size() + plan.volumes.size()) + " table(s) for " +
+                  plan.outDir + "/");
   KernelRunner runner(dev.device);
   // every program (and kernel) the plan needs, built at once on parallel contexts
   std::vector<KernelRunner::TableNeed> needs;
   for (const TableJob& j : plan.jobs)
     if (j.ndf >= 0) needs.push_back({j.kind, j.ndf, j.gaf});
+  for (const VolumeJob& v : plan.volumes) needs.push_back({TableKind::Brdf3d, v.spec.ndf, v.spec.gaf});
   runner.prepareAll(needs);
   std::vector<TableImage> images;
   std::vector<TableReport> reports;
+  reports.reserve(plan.jobs.size() + plan.volumes.size());  // the volumes' entries are filled while they are written
   for (const TableJob& job : plan.jobs) {
     TableReport r;
     images.push_back(computeTable(runner, job, &r.seconds));
@@ -292,7 +299,24 @@ std::vector<TableReport> runPlan(const Plan& plan) {
     reports.push_back(r);
   }
   std::vector<OutputFile> files;
-  for (size_t i = 0; i < plan.jobs.size(); ++i) files.push_back({plan.jobs[i].path, &images[i], plan.jobs[i].half});
+  for (size_t i = 0; i < plan.jobs.size(); ++i) files.push_back({plan.jobs[i].path, &images[i], plan.jobs[i].half, {}});
+  // 3D tables: baked slab by slab while their files are written (never whole in memory)
+  std::vector<TableImage> headers;
+  headers.reserve(plan.volumes.size());
+  for (const VolumeJob& v : plan.volumes) {
+    headers.push_back(volumeHeader(v));
+    TableReport r;
+    r.path = v.path;
+    r.table = v.merl ? "brdf3d (merl)" : "brdf3d";
+    r.ndf = ndfNames()[v.spec.ndf];
+    r.gaf = gafNames()[v.spec.gaf];
+    r.width = v.spec.nx;
+    r.height = v.spec.ny;
+    r.depth = v.spec.nz;
+    r.errorBound = headers.back().floats["brdf.error"];
+    reports.push_back(r);
+    files.push_back(volumeOutput(runner, v, headers.back(), &reports.back().seconds));
+  }
   commitOutputs(plan.outDir, files);
   return reports;
 }
@@ -310,7 +334,8 @@ std::string formatReport(const std::vector<TableReport>& reports) {
                 "seconds");
   s += line;
   for (const auto& r : reports) {
-    std::string size = std::to_string(r.width) + "x" + std::to_string(r.height);
+    std::string size = std::to_string(r.width) + "x" + std::to_string(r.height) +
+                       (r.depth > 1 ? "x" + std::to_string(r.depth) : "");
     std::snprintf(line, sizeof line, "%-*s  %-*s  %9s  %9.2e  %7.3f\n", int(wf), r.path.c_str(), int(wt), r.table.c_str(),
                   size.c_str(), r.errorBound, r.seconds);
     s += line;

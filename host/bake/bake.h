@@ -12,7 +12,7 @@ namespace brdfbake {
 struct TableReport {
   std::string path;
   std::string table, ndf, gaf;
-  int width = 0, height = 0;
+  int width = 0, height = 0, depth = 1;
   double errorBound = 0;  // brdf.error
   double seconds = 0;     // kernel time for this table
 };

@@ -150,7 +150,8 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files)
       copyTo(gPaths[gNumPaths], tmp);
       gNumPaths = gNumPaths + 1;
       temps.push_back(tmp);
-      writeTableExrTemporary(tmp, f.path, *f.image, f.half);
+      if (f.write) f.write(tmp);
+      else writeTableExrTemporary(tmp, f.path, *f.image, f.half);
     }
   } catch (const Error& e) {
     cleanUp(temps, created);

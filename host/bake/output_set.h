@@ -3,6 +3,7 @@
 // any point before the renames, leaves the output directory exactly as it was (no temporaries, no
 // directories created, earlier outputs untouched).
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -12,8 +13,12 @@ namespace brdfbake {
 
 struct OutputFile {
   std::string path;
-  const TableImage* image;
-  bool half;
+  const TableImage* image = nullptr;
+  bool half = false;
+  // When set, writes (and syncs) the temporary it is given itself, instead of `image`: tables too
+  // large to hold whole (3D tables, streamed slab by slab) and other formats. It throws Error, and
+  // the set then removes every temporary as for any other failure.
+  std::function<void(const std::string& tmp)> write;
 };
 
 // Before any work: `dir` is a directory we can write into, or can be created (mkdir -p) under the

@@ -51,6 +51,7 @@ using namespace brdfbake::bench;
 
 namespace brdfbake {
 int materialsBench(KernelRunner& runner, int samples, int repeat, int stride);  // materials_bench.cpp
+int volumeBench(KernelRunner& runner, int repeat, int bigSize);  // volume_bench.cpp
 }
 
 namespace {
@@ -120,6 +121,7 @@ KernelTable bakeOne(KernelRunner& runner, const BenchTable& t) {
       return runner.albedoAvg(t.ndf, t.gaf, t.size, false);
     case TableKind::Kp:
     case TableKind::FresnelAvg:  // not in the bench's sets (host-side, no kernel)
+    case TableKind::Brdf3d:      // --volume
       break;
   }
   return runner.kp(t.ndf, t.size, false);
@@ -281,8 +283,8 @@ int main(int argc, char** argv) {
   int n = 128, samples = 1024, stride = 1, repeat = 3;
   std::string device;
   bool timesOnly = false, everyPair = false, avgCheck = false, cold = false, skipAll = false, strideSet = false;
-  bool materials = false;
-  int buildThreads = 0;
+  bool materials = false, volume = false;
+  int buildThreads = 0, volumeSize = 256;
   std::string child;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
@@ -300,6 +302,8 @@ int main(int argc, char** argv) {
     else if (a == "--albedo-avg") avgCheck = true;
     else if (a == "--cold-start") cold = true;
     else if (a == "--materials") materials = true;
+    else if (a == "--volume") volume = true;
+    else if (a == "--volume-size") volumeSize = std::atoi(next().c_str());
     else if (a == "--skip-all") skipAll = true;
     else if (a == "--build-threads") buildThreads = std::atoi(next().c_str());
     else if (a == "--bake-child") child = next();
@@ -315,6 +319,7 @@ int main(int argc, char** argv) {
     if (everyPair) return allPairs(runner, n, stride);
     if (avgCheck) return albedoAvgCheck(runner, strideSet ? stride : 8, repeat);
     if (materials) return materialsBench(runner, samples, repeat, strideSet ? stride : 4);
+    if (volume) return volumeBench(runner, repeat, std::max(1, std::min(volumeSize, 1024)));
     runner.hemisphere(ndf, gaf, 1, 1, false);  // builds the program: not part of the timing
 
     double tq = 1e30, tm = 1e30;

@@ -14,6 +14,8 @@ inline const char* const kHemisphere = "bake_hemisphere";
 inline const char* const kAlbedoNodes = "bake_albedo_nodes";
 inline const char* const kKp = "bake_kp";
 inline const char* const kBrdf3d = "bake_brdf3d";
+// 3D tables have programs of their own (volumeKernelSource): kept under the pair's GAF + this.
+constexpr int kVolumeProgram = 1000;
 
 // On a CPU device (PoCL) every launch uses these local sizes: PoCL generates one work-group
 // function per kernel and local size, a few tenths of a second each, so one size per kernel keeps

@@ -176,7 +176,7 @@ KernelTable KernelRunner::diffuseAlbedo(int model, int nx, int ny, float pLo, fl
 namespace brdfbake {
 
 std::vector<std::vector<float>> KernelRunner::brdf3dSlab(const Brdf3dSpec& spec, int z0, int zn) {
-  Compiled& c = compiled(spec.ndf, spec.gaf, kBrdf3d);
+  Compiled& c = compiled(spec.ndf, spec.gaf + kVolumeProgram, kBrdf3d);
   Slot& s = *slots_[c.slot];
   const int nchan = spec.channels();
   size_t plane = static_cast<size_t>(spec.nx) * spec.ny * zn;
@@ -193,7 +193,9 @@ std::vector<std::vector<float>> KernelRunner::brdf3dSlab(const Brdf3dSpec& spec,
   k.setArg(a++, out);
   for (int v : {spec.nx, spec.ny, spec.nz, z0, zn, spec.kernelParam(), spec.kernelGrid(), spec.timesCos ? 1 : 0})
     k.setArg(a++, v);
-  k.setArg(a++, static_cast<float>(spec.roughness));
+  float r = static_cast<float>(spec.roughness);
+  k.setArg(a++, r);
+  k.setArg(a++, static_cast<float>(brdf64::brdf_params(spec.ndf, spec.gaf, r).inv_kp));
   k.setArg(a++, spec.fresnel.model);
   k.setArg(a++, fx);
   k.setArg(a++, fy);

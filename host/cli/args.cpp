@@ -1,4 +1,5 @@
 #include "cli/args.h"
+#include "cli/volume_args.h"
 
 #include <algorithm>
 #include <cctype>
@@ -7,6 +8,7 @@
 
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "common/format.h"
 
 namespace brdfbake {
 
@@ -28,6 +30,9 @@ std::string usageText() {
          "  brdfbake bake [options]       the same, spelled out\n"
          "  brdfbake devices              list OpenCL platforms and devices\n"
          "  brdfbake info FILE.exr        print a table's metadata and value range\n"
+         "  brdfbake sample FILE.exr --at A,B,C\n"
+         "                                a brdf3d table's trilinear lookup next to the exact BRDF at\n"
+         "                                (theta_i,theta_o,phi) or (theta_h,theta_d,phi_d), in degrees\n"
          "  brdfbake verify [options]     white and weak furnace, normalisation, reciprocity, energy loss of\n"
          "                                --ndf x --gaf pairs; page with plots in DIR/verify (exit 1: a check failed)\n"
          "  brdfbake stress [-o DIR]      every table kind through the stiff and extreme cases, against the\n"
@@ -68,6 +73,17 @@ std::string usageText() {
          "forms, sigma in [0, pi/2] for Oren-Nayar, r in [0,1] for Burley; --table splitsum: burley's\n"
          "albedo in channel B, as HDRP's FGD table; the default table is albedo):\n"
          "  --diffuse MODEL   " + joinNames(diffuseNames()) + "\n"
+         "\n"
+         "3D tables (--table brdf3d: f of one material over three angles, an EXR atlas of z-slices):\n"
+         "  --param P         angles (theta_i, theta_o, phi; default) or rusinkiewicz (theta_h, theta_d, phi_d)\n"
+         "  --theta-h I       rusinkiewicz's theta_h index: linear (default) or sqrt (MERL's)\n"
+         "  --size N|X,Y,Z    texels per axis, 1..1024 (default 32 each)\n"
+         "  --roughness R     the specular lobe's perceptual roughness, [0.01, 1] (default 0.5)\n"
+         "  --value V         f (default) or f-cos (f cos theta_i)\n"
+         "  --rho V           diffuse albedo with --diffuse (one value or R,G,B in [0, 1]; default 1);\n"
+         "                    --sigma S for oren-nayar (radians, default 0.5)\n"
+         "  --atlas CxR       slices per atlas row and column (default: near-square, see README)\n"
+         "  --format F        exr (default) or merl (MERL's binary layout: rusinkiewicz, 90x90x180)\n"
          "\n"
          "Models, formulas and table conventions: docs/MODELS.md in the source tree.\n"
          "Exit codes: 0 ok, 64 usage, 66 unreadable input, 69 no OpenCL device, 70 internal error,\n"
@@ -137,6 +153,28 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     cmd.kind = Command::Kind::Devices;
     return cmd;
   }
+  if (first == "sample") {
+    // sample FILE --at A,B,C
+    if (args.size() != 4 || args[2] != "--at")
+      throw Error(kExitUsage, "sample: expected FILE.exr --at A,B,C (a brdf3d table and the point, in degrees)");
+    cmd.kind = Command::Kind::Sample;
+    cmd.file = args[1];
+    std::vector<std::string> parts = splitCommas(args[3]);
+    if (parts.size() != 3)
+      throw Error(kExitUsage, "--at takes three angles in degrees, A,B,C (theta_i,theta_o,phi or theta_h,theta_d,phi_d), got '" +
+                                  args[3] + "'");
+    for (int a = 0; a < 3; ++a) {
+      char* end = nullptr;
+      errno = 0;
+      double v = std::strtod(parts[a].c_str(), &end);
+      double hi = a == 2 ? 180.0 : 90.0;
+      if (parts[a].empty() || *end != '\0' || errno != 0 || !(v >= 0 && v <= hi))
+        throw Error(kExitUsage, std::string("--at: angle ") + std::to_string(a + 1) + " must be in [0, " + fmtG(hi) +
+                                    "] degrees, got '" + parts[a] + "'");
+      cmd.at[a] = v;
+    }
+    return cmd;
+  }
   if (first == "info") {
     if (args.size() != 2) throw Error(kExitUsage, "info: expected exactly one FILE.exr argument");
     cmd.kind = Command::Kind::Info;
@@ -188,7 +226,14 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       for (const auto& n : splitCommas(value())) addUnique(req.tables, tableKind(n));
     } else if (opt == "--size") {
       once(opt, "--size");
-      req.size = parseSize(value());
+      const std::string& v = value();
+      if (v.find(',') == std::string::npos) {
+        req.size = parseSize(v);
+      } else {
+        parseVolumeSize(v, req);
+      }
+    } else if (parseVolumeOption(opt, value, req)) {
+      // a brdf3d option (cli/volume_args.cpp)
     } else if (opt == "--grid") {
       once(opt, "--grid");
       gridName = value();
@@ -213,7 +258,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       once(opt, "--fresnel");
       req.fresnel.model = fresnelId(value());
       req.fresnelGiven = true;
-    } else if (opt == "--sigma" && cmd.kind == Command::Kind::Energy) {
+    } else if (opt == "--sigma" && (cmd.kind == Command::Kind::Energy || cmd.kind == Command::Kind::Bake)) {
       once(opt, opt);
       std::vector<double> v = parseValues(opt, value());
       if (v.size() != 1 || v[0] < 0 || v[0] > 1.5707963267948966)
@@ -294,6 +339,12 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
           (std::string(o) == "--diffuse" && req.diffuse >= 0))
         throw Error(kExitUsage, std::string(o) + ": not a verify option (verify checks NDF/GAF pairs: --ndf, --gaf, --size, -o)");
   }
+  if (req.sigma && cmd.kind == Command::Kind::Bake) {
+    if (req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
+      throw Error(kExitUsage, "--sigma: only --diffuse oren-nayar and oren-nayar-as-printed take it");
+    req.volume.flags.push_back("--sigma");
+  }
+  validateVolumeOptions(cmd.kind == Command::Kind::Bake, req);
   if (!req.tables.empty()) {
   } else if (req.diffuse >= 0) {
     req.tables = {TableKind::Albedo};  // the diffuse model's albedo

@@ -1,9 +1,11 @@
 // Command line -> Command. Pure parsing and validation: nothing is read or written here.
 #pragma once
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "common/brdf3d_grid.h"
 #include "common/material.h"
 #include "common/models.h"
 
@@ -26,16 +28,31 @@ struct BakeRequest {
   std::string coupling = "sum";      // energy: --coupling sum | albedo-scaling
   std::vector<int> levels = {0, 1, 2, 3};                           // convergence: quadrature levels
   std::vector<int> samples = {16, 64, 256, 1024, 4096, 16384, 65536};  // convergence: MC samples
+  // --table brdf3d (the others ignore these; given without it, they are a usage error)
+  struct Volume {
+    Brdf3dParam param = Brdf3dParam::Angles;  // --param
+    bool thetaHSqrt = false;                  // --theta-h sqrt
+    bool timesCos = false;                    // --value f-cos
+    double roughness = 0.5;                   // --roughness
+    std::vector<double> rho;                  // --rho (diffuse albedo; default 1)
+    std::optional<std::array<int, 3>> size;   // --size NX,NY,NZ (or N: N each)
+    std::optional<std::pair<int, int>> atlas; // --atlas CxR
+    bool merl = false;                        // --format merl
+    std::vector<std::string> flags;           // brdf3d-only flags given
+  } volume;
 };
 
 struct Command {
-  enum class Kind { Bake, Energy, Verify, Stress, Convergence, Devices, Info, Help, Version } kind = Kind::Bake;
+  enum class Kind { Bake, Energy, Verify, Stress, Convergence, Devices, Info, Sample, Help, Version } kind = Kind::Bake;
   BakeRequest bake;
-  std::string file;  // for Info
+  std::string file;  // for Info, Sample
+  std::array<double, 3> at{};  // Sample: --at, in degrees
 };
 
 constexpr int kMinSize = 1;
 constexpr int kMaxSize = 8192;
+constexpr int kMaxVolumeSize = 1024;  // per axis of a 3D table
+constexpr double kMinVolumeRoughness = 0.01;
 
 // The built-in default set (no arguments): ggx + smith-correlated, every table at its default size.
 BakeRequest defaultRequest();

@@ -104,14 +104,14 @@ double hostBrdf(const Brdf3dSpec& s, const Directions& d, int c) {
   g.s2o = d.o.x * d.o.x + d.o.y * d.o.y;
   glm::dvec3 sum = d.i + d.o;
   double len2 = glm::dot(sum, sum);
-  if (len2 > 0) {
+  if (len2 > 1e-24) {  // else i = -o, both on the horizon: no half-vector (kernels/brdf3d.cl)
     glm::dvec3 h = sum / std::sqrt(len2);
     g.nh = h.z;
     g.s2h = h.x * h.x + h.y * h.y;
     g.oh = glm::dot(d.o, h);
   } else {
-    g.nh = 0;
-    g.s2h = 1;
+    g.nh = 1;
+    g.s2h = 0;
     g.oh = 0;
   }
   double sio = std::sqrt(g.s2i * g.s2o);
@@ -119,14 +119,17 @@ double hostBrdf(const Brdf3dSpec& s, const Directions& d, int c) {
   BrdfMaterial m;
   m.ndf = s.ndf;
   m.gaf = s.gaf;
-  m.p = brdf_params(s.ndf, s.gaf, s.roughness);
+  // the material's parameters as the device receives them (float), so that both evaluate the
+  // BRDF of the same material
+  auto fl = [](double v) { return static_cast<double>(static_cast<float>(v)); };
+  m.p = brdf_params(s.ndf, s.gaf, fl(s.roughness));
   m.fresnel = s.fresnel.model;
   m.diffuse = s.diffuse;
-  m.dparam = s.diffuseParam;
+  m.dparam = fl(s.diffuseParam);
   auto [fx, fy] = s.fresnel.kernelParams(s.fresnel.channels() == 3 ? c : 0);
   double rho = s.rho.empty() ? 1.0 : s.rho[s.rho.size() == 3 ? c : 0];
-  double f = brdf_f(m, g, fx, fy, rho);
-  return s.timesCos && g.ni > 0 ? f * std::max(g.ni, BRDF_MIN_COS) : f;
+  double f = brdf_f(m, g, fl(fx), fl(fy), fl(rho));
+  return s.timesCos ? f * std::max(g.ni, BRDF_MIN_COS) : f;
 }
 
 double trilinear(const Brdf3dSpec& s, const std::vector<float>& plane, glm::dvec3 index) {
@@ -167,7 +170,9 @@ InterpError interpolationError(const Brdf3dSpec& s, int samples) {
   };
   int n[3] = {s.nx, s.ny, s.nz};
   InterpError e;
-  double sum2 = 0;
+  double sum2 = 0, sum2Interior = 0;
+  int interior = 0;
+  const double cosInterior = std::cos(kInteriorThetaDeg * kPi / 180);
   for (int k = 1; k <= samples; ++k) {
     glm::dvec3 idx(radical(k, 2) * (n[0] - 1), radical(k, 3) * (n[1] - 1), radical(k, 5) * (n[2] - 1));
     double lookup = 0;
@@ -204,8 +209,14 @@ InterpError interpolationError(const Brdf3dSpec& s, int samples) {
       e.max = err;
       e.worstAt = ang;
     }
+    if (std::min(d.i.z, d.o.z) >= cosInterior) {
+      ++interior;
+      sum2Interior += err * err;
+      e.maxInterior = std::max(e.maxInterior, err);
+    }
   }
   e.rms = std::sqrt(sum2 / samples);
+  e.rmsInterior = interior ? std::sqrt(sum2Interior / interior) : 0.0;
   return e;
 }
 

@@ -74,7 +74,11 @@ double trilinear(const Brdf3dSpec& s, const std::vector<float>& plane, glm::dvec
 struct InterpError {
   double max = 0, rms = 0;
   glm::dvec3 worstAt{0.0};  // angles (radians) of the worst point
+  // the same over the points with both directions at most kInteriorTheta from the normal: away
+  // from grazing, where f itself grows without bound for most GAFs and no resolution helps
+  double maxInterior = 0, rmsInterior = 0;
 };
+constexpr double kInteriorThetaDeg = 80.0;
 InterpError interpolationError(const Brdf3dSpec& s, int samples = 4096);
 
 }  // namespace brdfbake

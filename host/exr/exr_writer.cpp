@@ -16,6 +16,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -120,38 +121,37 @@ void writeTableExrTemporary(const std::string& tmp, const std::string& path, con
   rules.isReservedAttribute = exr::isStructuralAttribute;
   rules.formatName = "OpenEXR";
   validateTableImage(path, img, rules);
+  const size_t w = static_cast<size_t>(img.width);
+  writeTableExrRowsTemporary(tmp, path, img, half, img.height,
+                             [&](int y0, int rows, std::vector<std::vector<float>>& planes) {
+                               planes.resize(img.planes.size());
+                               for (size_t c = 0; c < img.planes.size(); ++c)
+                                 planes[c].assign(img.planes[c].begin() + static_cast<std::ptrdiff_t>(y0 * w),
+                                                  img.planes[c].begin() + static_cast<std::ptrdiff_t>((y0 + rows) * w));
+                             });
+}
+
+void writeTableExrRowsTemporary(const std::string& tmp, const std::string& path, const TableImage& meta, bool half,
+                                int rowsPerBlock, const TableRowFill& fill) {
+  TableFormatRules rules;
+  rules.halfRange = half;
+  rules.isReservedAttribute = exr::isStructuralAttribute;
+  rules.formatName = "OpenEXR";
+  validateTableHeader(path, meta, rules);
+  if (rowsPerBlock < 1) rowsPerBlock = meta.height;
 
   // Everything that can fail for reasons other than the file system is prepared first.
-  Imf::Header header(img.width, img.height);
-  std::vector<std::vector<Imath::half>> halfPlanes;
-  Imf::FrameBuffer fb;
+  Imf::Header header(meta.width, meta.height);
+  const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
   try {
     header.compression() = Imf::ZIP_COMPRESSION;
     header.zipCompressionLevel() = kZipLevel;
     header.lineOrder() = Imf::INCREASING_Y;
-    for (const auto& kv : img.strings) header.insert(kv.first, Imf::StringAttribute(kv.second));
-    for (const auto& kv : img.v2f)
+    for (const auto& kv : meta.strings) header.insert(kv.first, Imf::StringAttribute(kv.second));
+    for (const auto& kv : meta.v2f)
       header.insert(kv.first, Imf::V2fAttribute(Imath::V2f(kv.second.first, kv.second.second)));
-    for (const auto& kv : img.floats) header.insert(kv.first, Imf::FloatAttribute(kv.second));
-
-    const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
-    const size_t w = static_cast<size_t>(img.width);
-    if (half) halfPlanes.resize(img.channels.size());
-    for (size_t ci = 0; ci < img.channels.size(); ++ci) {
-      const std::string& c = img.channels[ci];
-      header.channels().insert(c, Imf::Channel(type));
-      if (half) {
-        std::vector<Imath::half>& hp = halfPlanes[ci];
-        hp.reserve(img.planes[ci].size());
-        for (float v : img.planes[ci]) hp.emplace_back(v);
-        fb.insert(c, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(hp.data()),
-                                sizeof(Imath::half), sizeof(Imath::half) * w));
-      } else {
-        // OpenEXR only reads through the pointer when writing.
-        char* base = reinterpret_cast<char*>(const_cast<float*>(img.planes[ci].data()));
-        fb.insert(c, Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * w));
-      }
-    }
+    for (const auto& kv : meta.floats) header.insert(kv.first, Imf::FloatAttribute(kv.second));
+    for (const std::string& c : meta.channels) header.channels().insert(c, Imf::Channel(type));
   } catch (const std::exception& e) {
     throw Error(kExitIoErr, "cannot write " + path + ": " + e.what());
   }
@@ -167,14 +167,42 @@ void writeTableExrTemporary(const std::string& tmp, const std::string& path, con
   }
   TempFileGuard guard(tmp, fd);
 
+  const size_t w = static_cast<size_t>(meta.width);
   try {
     FdOStream os(fd, tmp);
     {
       Imf::OutputFile out(os, header, /*numThreads=*/0);
-      out.setFrameBuffer(fb);
-      out.writePixels(img.height);
+      std::vector<std::vector<float>> planes;
+      std::vector<std::vector<Imath::half>> halfPlanes(half ? meta.channels.size() : 0);
+      for (int y0 = 0; y0 < meta.height; y0 += rowsPerBlock) {
+        const int rows = std::min(rowsPerBlock, meta.height - y0);
+        planes.clear();
+        fill(y0, rows, planes);
+        validateTableRows(path, meta, planes, y0, rows, rules);
+        // OpenEXR addresses texel (x, y) at base + x xStride + y yStride: the block's base is
+        // shifted back by its first row
+        Imf::FrameBuffer fb;
+        for (size_t ci = 0; ci < meta.channels.size(); ++ci) {
+          char* base;
+          size_t stride;
+          if (half) {
+            halfPlanes[ci].assign(planes[ci].begin(), planes[ci].end());
+            base = reinterpret_cast<char*>(halfPlanes[ci].data());
+            stride = sizeof(Imath::half);
+          } else {
+            base = reinterpret_cast<char*>(planes[ci].data());
+            stride = sizeof(float);
+          }
+          base -= static_cast<std::ptrdiff_t>(y0) * static_cast<std::ptrdiff_t>(stride * w);
+          fb.insert(meta.channels[ci], Imf::Slice(type, base, stride, stride * w));
+        }
+        out.setFrameBuffer(fb);
+        out.writePixels(rows);
+      }
     }  // the destructor writes the line offset table
     if (os.error() != 0) throw Iex::IoExc(errnoText(os.error()));
+  } catch (const Error&) {
+    throw;  // a value the format cannot hold (validateTableRows), or the fill's own error
   } catch (const std::exception& e) {
     throw Error(kExitIoErr, "cannot write " + path + ": " + e.what());
   }

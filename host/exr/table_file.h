@@ -9,7 +9,9 @@
 // temporaryPathFor), exr_reader.cpp (readTableExr, tableExrIsHalf) and
 // exr_describe.cpp (describeTableExr).
 #pragma once
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "formats/table_image.h"
 
@@ -42,6 +44,14 @@ void writeTableExr(const std::string& path, const TableImage& img, bool half);
 // validates, writes `tmp` (the temporary for `path`, named in messages) and fsyncs it; no rename.
 // On failure `tmp` is removed and Error is thrown as above.
 void writeTableExrTemporary(const std::string& tmp, const std::string& path, const TableImage& img, bool half);
+// The same for a table written in blocks of rows, never whole in memory (3D tables): `meta` has
+// the size, channels and attributes (its planes unused); fill(y0, rows, planes) puts rows
+// y0 .. y0 + rows - 1 of every channel in planes[c] (rows * width values), block after block.
+// Each block is validated as it comes (values, HALF range); an Error the fill throws passes
+// through with its code. Same bytes as writeTableExrTemporary for the same values.
+using TableRowFill = std::function<void(int y0, int rows, std::vector<std::vector<float>>& planes)>;
+void writeTableExrRowsTemporary(const std::string& tmp, const std::string& path, const TableImage& meta, bool half,
+                                int rowsPerBlock, const TableRowFill& fill);
 // `<dir>/.<name>.tmp-<pid>` for `path`; throws kExitCantCreat when path names no file.
 std::string temporaryPathFor(const std::string& path);
 

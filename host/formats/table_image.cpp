@@ -25,14 +25,11 @@ int tableChannelRank(const std::string& name) {
   return -1;
 }
 
-void validateTableImage(const std::string& path, const TableImage& img, const TableFormatRules& rules) {
+void validateTableHeader(const std::string& path, const TableImage& img, const TableFormatRules& rules) {
   if (img.width < 1 || img.height < 1)
     dataError(path, "invalid table size " + std::to_string(img.width) + "x" +
                         std::to_string(img.height));
   if (img.channels.empty()) dataError(path, "no channels");
-  if (img.planes.size() != img.channels.size())
-    dataError(path, std::to_string(img.channels.size()) + " channels but " +
-                        std::to_string(img.planes.size()) + " planes");
   int lastRank = -1;
   for (const std::string& c : img.channels) {
     const int rank = tableChannelRank(c);
@@ -40,31 +37,6 @@ void validateTableImage(const std::string& path, const TableImage& img, const Ta
     if (rank <= lastRank)
       dataError(path, "channel " + c + " is duplicated or out of R, G, B, A order");
     lastRank = rank;
-  }
-
-  const size_t w = static_cast<size_t>(img.width);
-  const size_t count = w * static_cast<size_t>(img.height);
-  for (size_t ci = 0; ci < img.channels.size(); ++ci) {
-    const std::string& c = img.channels[ci];
-    const std::vector<float>& plane = img.planes[ci];
-    if (plane.size() != count)
-      dataError(path, "channel " + c + " has " + std::to_string(plane.size()) +
-                          " values, expected " + std::to_string(img.width) + "*" +
-                          std::to_string(img.height) + " = " + std::to_string(count));
-    for (size_t i = 0; i < count; ++i) {
-      const float v = plane[i];
-      const char* problem = nullptr;
-      if (std::isnan(v))
-        problem = "is NaN";
-      else if (std::isinf(v))
-        problem = "is infinite";
-      else if (rules.halfRange && std::fabs(v) > kHalfMax)
-        problem = "exceeds the HALF range (|v| <= 65504)";
-      if (problem)
-        dataError(path, "channel " + c + " texel (x=" + std::to_string(i % w) +
-                            ", y=" + std::to_string(i / w) + ") value " + fmtG9(v) + " " +
-                            problem);
-    }
   }
 
   // Checked name by name, strings then v2f then floats, so the first offending name
@@ -80,6 +52,42 @@ void validateTableImage(const std::string& path, const TableImage& img, const Ta
   for (const auto& kv : img.strings) checkName(kv.first);
   for (const auto& kv : img.v2f) checkName(kv.first);
   for (const auto& kv : img.floats) checkName(kv.first);
+}
+
+void validateTableRows(const std::string& path, const TableImage& img, const std::vector<std::vector<float>>& planes,
+                       int y0, int rows, const TableFormatRules& rules) {
+  if (planes.size() != img.channels.size())
+    dataError(path, std::to_string(img.channels.size()) + " channels but " +
+                        std::to_string(planes.size()) + " planes");
+  const size_t w = static_cast<size_t>(img.width);
+  const size_t count = w * static_cast<size_t>(rows);
+  for (size_t ci = 0; ci < img.channels.size(); ++ci) {
+    const std::string& c = img.channels[ci];
+    const std::vector<float>& plane = planes[ci];
+    if (plane.size() != count)
+      dataError(path, "channel " + c + " has " + std::to_string(plane.size()) +
+                          " values, expected " + std::to_string(img.width) + "*" +
+                          std::to_string(rows) + " = " + std::to_string(count));
+    for (size_t i = 0; i < count; ++i) {
+      const float v = plane[i];
+      const char* problem = nullptr;
+      if (std::isnan(v))
+        problem = "is NaN";
+      else if (std::isinf(v))
+        problem = "is infinite";
+      else if (rules.halfRange && std::fabs(v) > kHalfMax)
+        problem = "exceeds the HALF range (|v| <= 65504)";
+      if (problem)
+        dataError(path, "channel " + c + " texel (x=" + std::to_string(i % w) +
+                            ", y=" + std::to_string(y0 + i / w) + ") value " + fmtG9(v) + " " +
+                            problem);
+    }
+  }
+}
+
+void validateTableImage(const std::string& path, const TableImage& img, const TableFormatRules& rules) {
+  validateTableHeader(path, img, rules);
+  validateTableRows(path, img, img.planes, 0, img.height, rules);
 }
 
 }  // namespace brdfbake

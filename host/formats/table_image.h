@@ -43,5 +43,11 @@ struct TableFormatRules {
 // is NaN or infinite, or (rules.halfRange) |value| > 65504.  Attribute names must be
 // non-empty, unique across the three maps and not reserved by the format.
 void validateTableImage(const std::string& path, const TableImage& img, const TableFormatRules& rules);
+// The two halves of validateTableImage, for tables written in blocks of rows: the size, channels
+// and attribute names of `img` (its planes unused); then the values of rows y0 .. y0 + rows - 1,
+// planes[c] holding rows * width values (texels named by their row in the whole table).
+void validateTableHeader(const std::string& path, const TableImage& img, const TableFormatRules& rules);
+void validateTableRows(const std::string& path, const TableImage& img, const std::vector<std::vector<float>>& planes,
+                       int y0, int rows, const TableFormatRules& rules);
 
 }  // namespace brdfbake

@@ -1,6 +1,8 @@
 #include "plan/plan.h"
 
 #include <algorithm>
+#include <cmath>
+#include <tuple>
 
 #include "common/brdf_host.h"
 #include "common/errors.h"
@@ -19,6 +21,87 @@ std::string fileName(const TableJob& job) {
   return t + "_" + ndfNames()[job.ndf] + "_" + gafNames()[job.gaf] +
          (plain ? "" : "_" + fresnelNames()[job.fresnel.model]) + ".exr";
 }
+
+std::string fileName(const VolumeJob& job) {
+  const Brdf3dSpec& s = job.spec;
+  std::string name = "brdf3d_" + ndfNames()[s.ndf] + "_" + gafNames()[s.gaf];
+  if (!s.fresnel.isOne()) name += "_" + fresnelNames()[s.fresnel.model];
+  if (s.diffuse >= 0) name += "_" + diffuseNames()[s.diffuse];
+  if (job.merl) return name + ".binary";
+  return name + (s.param == Brdf3dParam::Angles ? "_angles" : "_rusinkiewicz") + ".exr";
+}
+
+std::pair<int, int> atlasGrid(int depth) {
+  for (int rows = static_cast<int>(std::sqrt(static_cast<double>(depth))); rows >= 1; --rows) {
+    if (depth % rows != 0) continue;
+    int cols = depth / rows;
+    if (cols <= 4 * rows) return {cols, rows};
+    break;
+  }
+  int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(depth))));
+  return {cols, (depth + cols - 1) / cols};
+}
+
+namespace {
+// The brdf3d jobs of a request: one per NDF/GAF pair.
+void planVolumes(const BakeRequest& req, Plan& plan) {
+  const auto& v = req.volume;
+  for (int ndf : req.ndfs) {
+    for (int gaf : req.gafs) {
+      VolumeJob job;
+      Brdf3dSpec& s = job.spec;
+      s.ndf = ndf;
+      s.gaf = gaf;
+      s.roughness = v.roughness;
+      s.fresnel = req.fresnel;
+      s.diffuse = req.diffuse;
+      s.rho = v.rho;
+      // the diffuse model's own parameter: F0 (the Shirley forms: the specular's, else 0.04),
+      // sigma (oren-nayar, --sigma, default 0.5) or the specular's roughness (burley)
+      if (req.diffuse == DIFFUSE_OREN_NAYAR || req.diffuse == DIFFUSE_OREN_NAYAR_AS_PRINTED)
+        s.diffuseParam = req.sigma ? *req.sigma : 0.5;
+      else if (req.diffuse == DIFFUSE_BURLEY)
+        s.diffuseParam = v.roughness;
+      else
+        s.diffuseParam = req.fresnel.f0.empty() ? DIFFUSE_DEFAULT_F0 : req.fresnel.f0[0];
+      s.param = v.param;
+      s.thetaHSqrt = v.thetaHSqrt;
+      s.timesCos = v.timesCos;
+      job.merl = v.merl;
+      job.half = req.half;
+      if (v.merl) {
+        s.grid = Brdf3dGrid::CellStart;
+        s.nx = 90;
+        s.ny = 90;
+        s.nz = 180;
+      } else {
+        s.grid = req.nodeGrid ? Brdf3dGrid::Node : Brdf3dGrid::TexelCenter;
+        if (req.size && *req.size > kMaxVolumeSize)
+          throw Error(kExitUsage, "--size: each axis of a brdf3d table must be an integer in 1.." +
+                                      std::to_string(kMaxVolumeSize) + ", got " + std::to_string(*req.size));
+        std::array<int, 3> n = v.size ? *v.size : std::array<int, 3>{{req.size ? *req.size : 32, req.size ? *req.size : 32,
+                                                                      req.size ? *req.size : 32}};
+        if (req.nodeGrid && std::min({n[0], n[1], n[2]}) < 2)
+          throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
+        s.nx = n[0];
+        s.ny = n[1];
+        s.nz = n[2];
+        std::tie(job.cols, job.rows) = v.atlas ? *v.atlas : atlasGrid(s.nz);
+        if (static_cast<long>(job.cols) * job.rows < s.nz)
+          throw Error(kExitUsage, "--atlas " + std::to_string(job.cols) + "x" + std::to_string(job.rows) + " holds " +
+                                      std::to_string(job.cols * job.rows) + " slices, fewer than the table's " +
+                                      std::to_string(s.nz));
+        if (static_cast<long>(job.cols) * s.nx > 65536 || static_cast<long>(job.rows) * s.ny > 65536)
+          throw Error(kExitUsage, "--atlas: the atlas would be " + std::to_string(static_cast<long>(job.cols) * s.nx) + "x" +
+                                      std::to_string(static_cast<long>(job.rows) * s.ny) +
+                                      " texels; at most 65536 per side (choose fewer columns or rows)");
+      }
+      job.path = req.outDir + "/" + fileName(job);
+      plan.volumes.push_back(job);
+    }
+  }
+}
+}  // namespace
 
 Plan makePlan(const BakeRequest& req) {
   Plan plan;
@@ -68,10 +151,11 @@ Plan makePlan(const BakeRequest& req) {
       plan.jobs.push_back(job);
     }
   }
+  if (std::find(req.tables.begin(), req.tables.end(), TableKind::Brdf3d) != req.tables.end()) planVolumes(req, plan);
   for (int ndf : req.ndfs) {
     for (TableKind kind : req.tables) {
       if (req.diffuse >= 0 && kind == TableKind::Albedo) continue;  // baked once above
-      if (kind == TableKind::FresnelAvg) continue;                      // likewise
+      if (kind == TableKind::FresnelAvg || kind == TableKind::Brdf3d) continue;  // likewise
       int n = req.size ? *req.size : defaultSize(kind);
       if (req.nodeGrid && n < 2)
         throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");

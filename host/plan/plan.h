@@ -22,10 +22,20 @@ struct TableJob {
   int diffuse = -1;       // albedo: a diffuse model's albedo (ndf, gaf unused); splitsum: burley in B
 };
 
+// A 3D table (--table brdf3d): one per NDF/GAF pair, baked and written slab by slab.
+struct VolumeJob {
+  Brdf3dSpec spec;
+  std::string path;
+  bool half = false;
+  bool merl = false;      // MERL's binary layout instead of an EXR atlas
+  int cols = 1, rows = 1; // the EXR atlas: slices left to right, then top to bottom
+};
+
 struct Plan {
   std::string outDir;
   std::string device;
   std::vector<TableJob> jobs;
+  std::vector<VolumeJob> volumes;
 };
 
 // Throws Error(kExitUsage) for combinations that have no finite table (gaf none on a node grid,
@@ -33,5 +43,9 @@ struct Plan {
 Plan makePlan(const BakeRequest& req);
 
 std::string fileName(const TableJob& job);
+std::string fileName(const VolumeJob& job);
+// The atlas grid for `depth` slices: an exact columns x rows split no wider than 4:1 when there is
+// one (180 -> 15x12, 512 -> 32x16), else ceil(sqrt(depth)) columns and as many rows as needed.
+std::pair<int, int> atlasGrid(int depth);
 
 }  // namespace brdfbake

@@ -11,10 +11,12 @@
  * it is the limit approached from inside for the GAFs whose G/((n.i)(n.o)) stays bounded (the
  * Smith family, schlick-*, implicit, kelemen, cook-torrance) and a large finite value (~1/cos)
  * for those where it does not (none; neumann and ashikhmin-premoze with both directions grazing).
- * Directions below the horizon (n.i <= 0 or n.o <= 0 before the floor) give f = 0.
+ * Directions below the horizon give f = 0; n.i or n.o within BRDF_HORIZON of 0 counts as on it (an
+ * exact 0 that the directions' rounding moved by an ulp, to either side) and takes the floor.
  */
 #ifndef BRDF_LANE_PASS
 #define BRDF_MIN_COS RC(1e-6)
+#define BRDF_HORIZON RC(1e-9)
 
 typedef struct BrdfGeometry {
   real ni, no;    /* n.i, n.o */
@@ -34,13 +36,31 @@ typedef struct BrdfMaterial {
   real dparam;
 } BrdfMaterial;
 
+/* The specular lobe's parameters from perceptual roughness r (MODELS.md "Roughness axes"): alpha =
+ * r^2 and Schlick's k; inv_kp = 1/k_p of the raw shape, which only the gaussian's D needs (it has
+ * no closed form: integrate/hemisphere.h brdf_params computes it, the 3D tables take it from the
+ * host). The weight fields name no split (F = 1). */
+BRDF_FN BrdfParams brdf_params_kp(int gaf, real r, real inv_kp) {
+  BrdfParams p;
+  p.r = r;
+  p.alpha = r * r;
+  p.k = gaf_schlick_k(gaf, r, p.alpha);
+  p.inv_kp = inv_kp;
+  p.moments = HEMI_SPLIT;
+  p.fresnel = FRESNEL_ONE;
+  p.fr_x = RC(0.0);
+  p.fr_y = RC(0.0);
+  return p;
+}
+
 /* f(i, o) of one colour channel: Fresnel parameters (fx, fy) as fresnel_F takes them and the
  * diffuse albedo rho. */
 BRDF_FN real brdf_f(BrdfMaterial m, BrdfGeometry g, real fx, real fy, real rho) {
-  if (g.ni <= RC(0.0) || g.no <= RC(0.0)) return RC(0.0);
-  real ni = fmax(g.ni, BRDF_MIN_COS), no = fmax(g.no, BRDF_MIN_COS);
-  real s2i = fmin(g.s2i, (RC(1.0) - ni) * (RC(1.0) + ni));
-  real s2o = fmin(g.s2o, (RC(1.0) - no) * (RC(1.0) + no));
+  if (g.ni < -BRDF_HORIZON || g.no < -BRDF_HORIZON) return RC(0.0);
+  /* rounding can put a cosine an ulp past 1 (and 1 - cos^2 below 0): clamp both */
+  real ni = fmin(fmax(g.ni, BRDF_MIN_COS), RC(1.0)), no = fmin(fmax(g.no, BRDF_MIN_COS), RC(1.0));
+  real s2i = fmax(fmin(g.s2i, (RC(1.0) - ni) * (RC(1.0) + ni)), RC(0.0));
+  real s2o = fmax(fmin(g.s2o, (RC(1.0) - no) * (RC(1.0) + no)), RC(0.0));
   /* f_s = F D (G/(n.o)) / (4 n.i): G/(n.o) as gaf.h computes it, finite at n.o -> 0 */
   real spec = RC(0.0);
   if (g.oh > RC(0.0)) {

@@ -26,9 +26,20 @@
 
 #ifdef __OPENCL_C_VERSION__
 #define BRDF_FN static inline __attribute__((overloadable))
+#if defined(BRDF_DEVICE_DOUBLE) && defined(cl_khr_fp64)
+/* Programs that evaluate the models at points rather than integrate them (kernels/brdf3d.cl) ask
+ * for `real` = double where the device has it: one pass, no lanes. */
+#pragma OPENCL EXTENSION cl_khr_fp64 : enable
+#define RC(x) x
+#define real double
+typedef double param_t;
+#define BRDF_REAL_IS_DOUBLE 1
+#else
 #define RC(x) x##f
 #define real float
 typedef float param_t;
+#define BRDF_REAL_IS_DOUBLE 0
+#endif
 #define BRDF_LANES 16
 typedef float16 lane_t;
 #define lane_load(tab, k) vload16(0, (tab) + (k))
@@ -51,6 +62,9 @@ typedef float acc_t;
 #define BRDF_TABLE constant /* a parameter pointing into a BRDF_CONST table */
 /* tab_at(tab, i): tab[i] for an index held in a real (an integer value), gathered lane by lane */
 static inline __attribute__((overloadable)) float tab_at(constant float* t, float i) { return t[(int)i]; }
+#if BRDF_REAL_IS_DOUBLE
+static inline __attribute__((overloadable)) double tab_at(constant float* t, double i) { return (double)t[(int)i]; }
+#endif
 static inline __attribute__((overloadable)) float16 tab_at(constant float* t, float16 i) {
   int16 k = convert_int16(i);
   return (float16)(t[k.s0], t[k.s1], t[k.s2], t[k.s3], t[k.s4], t[k.s5], t[k.s6], t[k.s7], t[k.s8], t[k.s9],

@@ -54,9 +54,9 @@ BRDF_FN real ndf_p(int ndf, BrdfParams p, real c, real s2) {
   } else if (a2 <= RC(0.0)) {
     v = RC(0.0); /* a delta at h = n: 0 off the normal */
   } else if (ndf == NDF_BECKMANN) {
-    /* exp(-tan^2/alpha^2)/c^4 */
+    /* exp(-tan^2/alpha^2)/c^4; its limit 0 on the horizon (c = 0), where the quotient is 0/0 */
     real c2 = c * c;
-    v = exp(-s2 / (c2 * a2)) / (c2 * c2);
+    v = c2 > RC(0.0) ? exp(-s2 / (c2 * a2)) / (c2 * c2) : RC(0.0);
   } else if (ndf == NDF_BLINN_PHONG) {
     /* c^e with e = 2/alpha^2 - 2 (Walter 2007), in log space: log c = log1p(-s2)/2 */
     real e = RC(2.0) / a2 - RC(2.0);

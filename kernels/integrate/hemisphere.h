@@ -260,15 +260,7 @@ BRDF_FN real ndf_kp(int ndf, BrdfParams p, real* err) {
 /* Per-texel parameters from perceptual roughness r: alpha = r^2, Schlick's k, and for the gaussian
  * 1/k_p (computed, no closed form; its error is folded into the estimate's by the caller). */
 BRDF_FN BrdfParams brdf_params(int ndf, int gaf, real r) {
-  BrdfParams p;
-  p.r = r;
-  p.alpha = r * r;
-  p.k = gaf_schlick_k(gaf, r, p.alpha);
-  p.inv_kp = RC(0.0);
-  p.moments = HEMI_SPLIT;
-  p.fresnel = FRESNEL_ONE;
-  p.fr_x = RC(0.0);
-  p.fr_y = RC(0.0);
+  BrdfParams p = brdf_params_kp(gaf, r, RC(0.0));
   if (ndf == NDF_GAUSSIAN && p.alpha > RC(0.0)) {
     real e;
     p.inv_kp = RC(1.0) / ndf_kp(ndf, p, &e);
