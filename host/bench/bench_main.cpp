@@ -120,6 +120,7 @@ KernelTable bakeOne(KernelRunner& runner, const BenchTable& t) {
       return runner.albedoAvg(t.ndf, t.gaf, t.size, false);
     case TableKind::Kp:
     case TableKind::FresnelAvg:  // not in the bench's sets (host-side, no kernel)
+    case TableKind::AshikhminShirley:
       break;
   }
   return runner.kp(t.ndf, t.size, false);

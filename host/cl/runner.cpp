@@ -174,6 +174,7 @@ void KernelRunner::prepare(TableKind kind, int ndf, int gaf) {
       else compiled(ndf, GAF_NONE, kKp);
       break;
     case TableKind::FresnelAvg:  // computed on the host
+    case TableKind::AshikhminShirley:
       break;
   }
 }
