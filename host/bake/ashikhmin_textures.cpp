@@ -14,19 +14,19 @@ namespace brdfbake {
 
 namespace {
 
-// Half's largest finite value: Tex1's corner texel, 1/(u v) = 4 n^2, must stay below it.
+// Half's largest finite value: Tex1's corner texel, 1/(u v) = n^2, must stay below it.
 constexpr double kHalfMax = 65504.0;
-constexpr int kHalfMaxSize = 127;  // 4 * 127^2 = 64516; 4 * 128^2 = 65536 > 65504
+constexpr int kHalfMaxSize = 255;  // 255^2 = 65025; 256^2 = 65536 > 65504
 
 // The exact value of texture `t`'s channel `c` at (u, v) from the seed's formulas as printed (the
-// naive power for Tex2: u <= 1 - 1/16384 on any texel centre, where long double has digits to spare).
+// naive power for Tex2, 1 - u^2 factored so that it is exact; u = 1, a node, takes the limit exp(-v^2/2)).
 long double exactValue(int t, int c, long double u, long double v) {
   if (t == 0) return (1 - std::pow(1 - u / 2, 5.0L)) * (1 - std::pow(1 - v / 2, 5.0L));
   if (t == 1) {
     long double w = std::pow(1 - u, 5.0L);
     return (c == 0 ? 1 - w : c == 1 ? w : 1.0L) / (u * v);
   }
-  return std::pow(u, v * v / (1 - u * u));
+  return u == 1 ? std::exp(-v * v / 2) : std::pow(u, v * v / ((1 - u) * (1 + u)));
 }
 
 double value(int t, int c, double u, double v) {
@@ -51,19 +51,23 @@ const char* const kChannels[kAsTextures] = {
 
 }  // namespace
 
+bool ashikhminNodeGrid(int texture) { return texture != 1; }
+double ashikhminCoord(int texture, int i, int n) { return texture != 1 ? i / (n - 1.0) : (i + 1.0) / n; }
+
 std::string ashikhminFileName(int texture) { return "as_tex" + std::to_string(texture) + ".exr"; }
 
 void checkAshikhminRequest(int size, bool half, bool nodeGrid) {
   if (nodeGrid)
-    throw Error(kExitUsage, "--grid node: Tex1 = F/(u v) of --table ashikhmin-shirley is infinite at u = 0 and v = 0, "
-                            "the grid's first row and column; use --grid texel-center");
+    throw Error(kExitUsage, "--grid node: --table ashikhmin-shirley sets its own grids (Tex0 and Tex2 node, so that "
+                            "u = 1 holds Tex2's limit; Tex1 upper-node, (i+1)/n, as it is infinite at u = 0 and v = 0); "
+                            "bake it without --grid");
   if (size < 2)
     throw Error(kExitUsage, "--size must be an integer in 2..8192 for --table ashikhmin-shirley, got " +
                                 std::to_string(size));
   if (half && size > kHalfMaxSize)
     throw Error(kExitUsage, "--size must be an integer in 2.." + std::to_string(kHalfMaxSize) +
-                                " for --table ashikhmin-shirley with --half (Tex1 = F/(u v) reaches 4 n^2 at the corner "
-                                "texel, above half's 65504), got " + std::to_string(size));
+                                " for --table ashikhmin-shirley with --half (Tex1 = F/(u v) reaches n^2 at the corner "
+                                "texel, above half's 65504 from 256), got " + std::to_string(size));
 }
 
 TableImage ashikhminTexture(int t, int n, bool half) {
@@ -71,12 +75,13 @@ TableImage ashikhminTexture(int t, int n, bool half) {
   img.width = img.height = n;
   img.channels = {"R", "G", "B"};
   const int planes = t == 1 ? 3 : 1;
+  const bool node = ashikhminNodeGrid(t);  // else Tex1's upper-node grid
   std::vector<std::vector<float>> p(planes, std::vector<float>(static_cast<size_t>(n) * n));
   double worst = 0;
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
-      // texel centres; Tex2's y is t, its argument v = scale (t - offset)
-      double u = (i + 0.5) / n, y = (j + 0.5) / n;
+      // Tex0 and Tex2 at nodes i/(n-1), Tex1 at (i+1)/n; Tex2's y is t, its argument v = scale (t - offset)
+      double u = ashikhminCoord(t, i, n), y = ashikhminCoord(t, j, n);
       double v = t == 2 ? kAsTex2Scale * (y - kAsTex2Offset) : y;
       for (int c = 0; c < planes; ++c) {
         double x = value(t, c, u, v);
@@ -100,7 +105,7 @@ TableImage ashikhminTexture(int t, int n, bool half) {
   img.strings["brdf.texture"] = "tex" + std::to_string(t);
   img.strings["brdf.formula"] = kFormula[t];
   img.strings["brdf.axes"] = kAxes[t];
-  img.strings["brdf.grid"] = "texel-center";
+  img.strings["brdf.grid"] = node ? "node" : "upper-node";
   img.strings["brdf.channels"] = kChannels[t];
   img.v2f["brdf.u.range"] = {0.0f, 1.0f};
   if (t == 2) {
@@ -114,7 +119,7 @@ TableImage ashikhminTexture(int t, int n, bool half) {
   } else {
     img.v2f["brdf.v.range"] = {0.0f, 1.0f};
     img.strings["brdf.lookup"] = t == 0 ? "texture(tex0, vec2(n.l, n.v)).r"
-                                        : "dot(texture(tex1, vec2(h.l, max(n.l, n.v))).rg, vec2(R_s, 1))";
+                                        : "dot(texture(tex1, vec2(h.l, max(n.l, n.v)) - 0.5/n).rg, vec2(R_s, 1))";
   }
   img.strings["brdf.method"] = "closed form in double (kernels/brdf/anisotropic.h), Tex2 without the seed's switch-over "
                                "at u > 1-1/256, Tex1 without its epsilon; error: the largest difference of a stored "

@@ -16,15 +16,23 @@ constexpr double kAsTex2Scale = 10.0;
 constexpr double kAsTex2Offset = 0.5;
 constexpr int kAsTextures = 3;
 
+// Grids (brdf.grid). Tex0 and Tex2 `node`: texel i at i/(n-1), so u = 1 holds Tex2's limit exactly
+// and a shader's n.h -> 1 reads it rather than a clamped last texel centre (whose error is first
+// order in 1/n); sample at (0.5 + (n-1) q)/n. Tex1 `upper-node`: texel i at (i+1)/n, so u = 1 and
+// v = 1 (the highlight of a view along n) are texels while u = 0 and v = 0, where Tex1 is
+// infinite, are not; sample at q - 0.5/n (GL clamps below 1/n to the first texel).
+bool ashikhminNodeGrid(int texture);
+double ashikhminCoord(int texture, int i, int n);  // the value of texel i's axis coordinate
+
 // "as_tex0.exr", "as_tex1.exr", "as_tex2.exr".
 std::string ashikhminFileName(int texture);
 
 // Throws Error(kExitUsage) naming the flag and the accepted range when the textures cannot be
-// baked as asked: size below 2, HALF with size above 127 (Tex1 = F/(u v) reaches 4 n^2 at the
-// corner texel, above half's 65504), the node grid (Tex1 is infinite at u = 0 and v = 0).
+// baked as asked: size below 2, HALF with size above 255 (Tex1 = F/(u v) reaches n^2 at the
+// corner texel, above half's 65504), --grid node (the textures' grids are fixed, see below).
 void checkAshikhminRequest(int size, bool half, bool nodeGrid);
 
-// Texture 0, 1 or 2 on an n x n texel-centre grid, with its metadata; brdf.error is the largest
+// Texture 0, 1 or 2 on its n x n grid, with its metadata; brdf.error is the largest
 // error of any stored value (after rounding to FLOAT or HALF) against the exact value evaluated
 // in long double from the seed's formula, relative to max(1, |value|). Throws Error(kExitSoftware)
 // if a texel is not finite.
