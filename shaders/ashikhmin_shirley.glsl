@@ -6,11 +6,11 @@
 //
 // One source for GLSL and C++ (like multiscatter.glsl): the common subset of GLSL (ES 3.00 / 3.30
 // and later) and C++17 with GLM (`using namespace glm;`); scalar expressions meet vectors only
-// through float variables. The including code provides the lookups (plain bilinear, clamp-to-edge
-// texture() calls on the texel-centre tables):
-//   float asTex0(float nl, float nv);  texture(tex0, vec2(n.l, n.v)).r
-//   vec2  asTex1(float hl, float m);   texture(tex1, vec2(h.l, m)).rg, m = max(n.l, n.v)
-//   float asTex2(float nh, float t);   texture(tex2, vec2(n.h, t)).r
+// through float variables. The including code provides the lookups: bilinear, clamp-to-edge
+// texture() calls, each with its file's grid (brdf.grid; n = the texture's size):
+//   float asTex0(float nl, float nv);  node:       texture(tex0, (0.5 + (n-1) vec2(n.l, n.v))/n).r
+//   vec2  asTex1(float hl, float m);   upper-node: texture(tex1, vec2(h.l, m) - 0.5/n).rg, m = max(n.l, n.v)
+//   float asTex2(float nh, float t);   node:       texture(tex2, (0.5 + (n-1) vec2(n.h, t))/n).r
 float asTex0(float nl, float nv);
 vec2 asTex1(float hl, float m);
 float asTex2(float nh, float t);
