@@ -114,11 +114,11 @@ TableImage ashikhminTexture(int t, int n, bool half) {
     img.floats["brdf.offset"] = static_cast<float>(kAsTex2Offset);
     img.v2f["brdf.v.range"] = {static_cast<float>(-kAsTex2Scale * kAsTex2Offset),
                                static_cast<float>(kAsTex2Scale * (1 - kAsTex2Offset))};
-    img.strings["brdf.lookup"] = "texture(tex2, vec2(n.h, sqrt(n_u) h.x/" + fmtG(kAsTex2Scale) + " + " +
-                                 fmtG(kAsTex2Offset) + ")).r";
+    img.strings["brdf.lookup"] = "texture(tex2, (0.5 + (n-1) vec2(n.h, sqrt(n_u) h.x/" + fmtG(kAsTex2Scale) + " + " +
+                                 fmtG(kAsTex2Offset) + "))/n).r";
   } else {
     img.v2f["brdf.v.range"] = {0.0f, 1.0f};
-    img.strings["brdf.lookup"] = t == 0 ? "texture(tex0, vec2(n.l, n.v)).r"
+    img.strings["brdf.lookup"] = t == 0 ? "texture(tex0, (0.5 + (n-1) vec2(n.l, n.v))/n).r"
                                         : "dot(texture(tex1, vec2(h.l, max(n.l, n.v)) - 0.5/n).rg, vec2(R_s, 1))";
   }
   img.strings["brdf.method"] = "closed form in double (kernels/brdf/anisotropic.h), Tex2 without the seed's switch-over "
