@@ -1,6 +1,6 @@
 // Tables read back by readers other than ours: FreeImage (Debian libfreeimage3, behind many tools
-// and engine importers) and OpenImageIO. Every table kind, FLOAT and HALF, must read back with the
-// values our own reader sees, in R, G and B.
+// and engine importers) and OpenImageIO. Every table kind (the 3D table's atlas too), FLOAT and
+// HALF, must read back with the values our own reader sees, in R, G and B.
 #include <FreeImage.h>
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* kFiles[] = {"splitsum_ggx_smith-correlated.exr", "albedo_ggx_smith-correlated.exr",
-                        "albedo-avg_ggx_smith-correlated.exr", "kp_ggx.exr"};
+                        "albedo-avg_ggx_smith-correlated.exr", "kp_ggx.exr",
+                        "brdf3d_ggx_smith-correlated_angles.exr"};  // the 3D table's atlas
 
 fs::path bake(bool half) {
   fs::path d = fs::path(testing::TempDir()) / ("brdfbake_readers_" + std::to_string(half) + "_" + std::to_string(getpid()));
@@ -25,6 +26,10 @@ fs::path bake(bool half) {
   std::string cmd = std::string("'") + BRDFBAKE_EXE + "' --size 16 " + (half ? "--half " : "") + "-o '" + d.string() +
                     "' > /dev/null";
   EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  // a 3D table (16^3, as a 4 x 4 atlas of slices) in the same directory, beside the default set
+  std::string vol = std::string("'") + BRDFBAKE_EXE + "' --table brdf3d --size 16 --roughness 0.4 " +
+                    (half ? "--half " : "") + "-o '" + d.string() + "' > /dev/null";
+  EXPECT_EQ(std::system(vol.c_str()), 0) << vol;
   return d;
 }
 

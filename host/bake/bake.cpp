@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "bake/ashikhmin_textures.h"
 #include "bake/output_set.h"
 #include "bake/volume.h"
 #include "cl/device.h"
@@ -99,6 +100,12 @@ double storageError(const std::vector<float>& v, bool half) {
 }  // namespace
 
 TableImage computeTable(KernelRunner& runner, const TableJob& job, double* seconds) {
+  if (job.kind == TableKind::AshikhminShirley) {  // closed forms on the host, their own metadata
+    auto t0 = std::chrono::steady_clock::now();
+    TableImage img = ashikhminTexture(job.texture, job.width, job.half);
+    *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return img;
+  }
   if (job.ndf >= 0) runner.prepare(job.kind, job.ndf, job.gaf);
   auto t0 = std::chrono::steady_clock::now();
   KernelTable kt;
@@ -205,6 +212,8 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       fresnel = fresnelNames()[fc.model];
       break;
     }
+    case TableKind::AshikhminShirley:  // returned above
+      break;
   }
   // One-value tables repeat it in R, G and B: a lone R channel reads back as zeros through
   // FreeImage, and three.js's EXRLoader takes only R, G, B, A and Y; R, G, B reads everywhere.

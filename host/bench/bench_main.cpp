@@ -122,6 +122,7 @@ KernelTable bakeOne(KernelRunner& runner, const BenchTable& t) {
     case TableKind::Kp:
     case TableKind::FresnelAvg:  // not in the bench's sets (host-side, no kernel)
     case TableKind::Brdf3d:      // --volume
+    case TableKind::AshikhminShirley:
       break;
   }
   return runner.kp(t.ndf, t.size, false);

@@ -205,6 +205,7 @@ void KernelRunner::prepare(TableKind kind, int ndf, int gaf) {
       compiled(ndf, gaf + kVolumeProgram, kBrdf3d);
       break;
     case TableKind::FresnelAvg:  // computed on the host
+    case TableKind::AshikhminShirley:
       break;
   }
 }

@@ -13,6 +13,7 @@
 namespace brdfbake {
 
 int defaultSize(TableKind kind) {
+  if (kind == TableKind::AshikhminShirley) return 128;
   return kind == TableKind::SplitSum || kind == TableKind::FresnelAvg ? 128 : 32;
 }
 
@@ -51,8 +52,10 @@ std::string usageText() {
          "                    (default smith-correlated)\n"
          "  --table KIND      " + joinNames(tableNames()) + "\n"
          "                    (default: the first four; fresnel-avg: F_avg over eta, with --fresnel\n"
-         "                    dielectric or schlick-tir)\n"
-         "  --size N          texels per axis, 1..8192 (default 128 for splitsum, 32 otherwise)\n"
+         "                    dielectric or schlick-tir; ashikhmin-shirley: the three factorised\n"
+         "                    textures of the anisotropic Ashikhmin-Shirley BRDF, as_tex0..2.exr)\n"
+         "  --size N          texels per axis, 1..8192 (default 128 for splitsum and\n"
+         "                    ashikhmin-shirley, 32 otherwise)\n"
          "  --grid G          texel-center (default: value at (i+0.5)/n) or node (at i/(n-1), n >= 2)\n"
          "  --half            store HALF channels instead of FLOAT\n"
          "  -o, --output DIR  output directory, created with its parents (default out)\n"

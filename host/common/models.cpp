@@ -19,7 +19,8 @@ const std::vector<std::string>& gafNames() {
 }
 
 const std::vector<std::string>& tableNames() {
-  static const std::vector<std::string> n = {"splitsum", "albedo", "albedo-avg", "kp", "fresnel-avg", "brdf3d"};
+  static const std::vector<std::string> n = {"splitsum", "albedo", "albedo-avg", "kp", "fresnel-avg", "brdf3d",
+                                             "ashikhmin-shirley"};
   return n;
 }
 

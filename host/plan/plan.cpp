@@ -4,6 +4,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "bake/ashikhmin_textures.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 
@@ -11,6 +12,7 @@ namespace brdfbake {
 
 std::string fileName(const TableJob& job) {
   const std::string& t = tableName(job.kind);
+  if (job.kind == TableKind::AshikhminShirley) return ashikhminFileName(job.texture);
   if (job.kind == TableKind::FresnelAvg) return t + "_" + fresnelNames()[job.fresnel.model] + ".exr";
   if (job.kind == TableKind::Albedo && job.diffuse >= 0) return t + "_" + diffuseNames()[job.diffuse] + ".exr";
   if (job.kind == TableKind::SplitSum && job.diffuse >= 0)
@@ -112,6 +114,9 @@ Plan makePlan(const BakeRequest& req) {
     // where the chosen Fresnel makes no sense
     const std::string f = "--fresnel " + fresnelNames()[req.fresnel.model];
     for (TableKind kind : req.tables) {
+      if (kind == TableKind::AshikhminShirley)
+        throw Error(kExitUsage, f + ": --table ashikhmin-shirley holds Schlick's F split as R_s R + G (R_s enters in "
+                                    "the shader); bake it without --fresnel");
       if (kind == TableKind::Kp)
         throw Error(kExitUsage, f + ": --table kp is the NDF's normalisation, which has no Fresnel; bake it without --fresnel");
       if (kind == TableKind::SplitSum && req.fresnel.model != FRESNEL_SCHLICK && req.fresnel.model != FRESNEL_F82_TINT)
@@ -130,9 +135,22 @@ Plan makePlan(const BakeRequest& req) {
     job.path = req.outDir + "/" + fileName(job);
     plan.jobs.push_back(job);
   }
+  if (std::find(req.tables.begin(), req.tables.end(), TableKind::AshikhminShirley) != req.tables.end()) {
+    // closed forms on the host (bake/ashikhmin_textures.h): no NDF, GAF or program; one file per texture
+    int n = req.size ? *req.size : defaultSize(TableKind::AshikhminShirley);
+    checkAshikhminRequest(n, req.half, req.nodeGrid);
+    for (int t = 0; t < kAsTextures; ++t) {
+      TableJob job{TableKind::AshikhminShirley, -1, -1, n, n, false, req.half, "", {}, -1, t};
+      job.path = req.outDir + "/" + fileName(job);
+      plan.jobs.push_back(job);
+    }
+  }
   if (req.diffuse >= 0) {
     const std::string d = "--diffuse " + diffuseNames()[req.diffuse];
     for (TableKind kind : req.tables) {
+      if (kind == TableKind::AshikhminShirley)
+        throw Error(kExitUsage, d + ": --table ashikhmin-shirley has its own diffuse texture (Tex0); bake it "
+                                    "without --diffuse");
       if (kind == TableKind::AlbedoAvg || kind == TableKind::Kp)
         throw Error(kExitUsage, d + ": --table " + tableName(kind) + " has no diffuse form; a diffuse model bakes "
                                     "--table albedo (its albedo) or splitsum (burley in channel B)");
@@ -155,7 +173,8 @@ Plan makePlan(const BakeRequest& req) {
   for (int ndf : req.ndfs) {
     for (TableKind kind : req.tables) {
       if (req.diffuse >= 0 && kind == TableKind::Albedo) continue;  // baked once above
-      if (kind == TableKind::FresnelAvg || kind == TableKind::Brdf3d) continue;  // likewise
+      if (kind == TableKind::FresnelAvg || kind == TableKind::Brdf3d || kind == TableKind::AshikhminShirley)
+        continue;  // likewise
       int n = req.size ? *req.size : defaultSize(kind);
       if (req.nodeGrid && n < 2)
         throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");

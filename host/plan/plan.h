@@ -20,6 +20,7 @@ struct TableJob {
   std::string path;  // output file
   FresnelChoice fresnel;  // albedo, albedo-avg: the model in B (one: F = 1); splitsum: schlick or f82-tint
   int diffuse = -1;       // albedo: a diffuse model's albedo (ndf, gaf unused); splitsum: burley in B
+  int texture = -1;       // ashikhmin-shirley: Tex0, Tex1 or Tex2 (one file each)
 };
 
 // A 3D table (--table brdf3d): one per NDF/GAF pair, baked and written slab by slab.

@@ -1,8 +1,15 @@
 cmake_minimum_required(VERSION 3.20)
-# Pastes shaders/multiscatter.glsl into tests/glsl/multiscatter_check.frag.in under each #version
-# a renderer may use and compiles it with glslangValidator (-DVALIDATOR, -DROOT, -DOUT_DIR).
-file(READ ${ROOT}/shaders/multiscatter.glsl SHADER)
-file(READ ${ROOT}/tests/glsl/multiscatter_check.frag.in TEMPLATE)
+# Pastes shaders/NAME.glsl into tests/glsl/CHECK_check.frag.in under each #version a renderer may
+# use and compiles it with glslangValidator (-DVALIDATOR, -DROOT, -DOUT_DIR; -DNAME and -DCHECK,
+# default multiscatter).
+if(NOT NAME)
+  set(NAME multiscatter)
+endif()
+if(NOT CHECK)
+  set(CHECK ${NAME})
+endif()
+file(READ ${ROOT}/shaders/${NAME}.glsl SHADER)
+file(READ ${ROOT}/tests/glsl/${CHECK}_check.frag.in TEMPLATE)
 string(REPLACE "@SHADER@" "${SHADER}" BODY "${TEMPLATE}")
 foreach(version "300 es" "310 es" "330" "450")
   string(REPLACE " " "_" tag "${version}")
@@ -10,11 +17,11 @@ foreach(version "300 es" "310 es" "330" "450")
   if(version MATCHES "es")
     string(APPEND header "precision highp float;\n")
   endif()
-  set(file ${OUT_DIR}/multiscatter_${tag}.frag)
+  set(file ${OUT_DIR}/${NAME}_${tag}.frag)
   file(WRITE ${file} "${header}${BODY}")
   execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "GLSL ${version}: shaders/multiscatter.glsl does not compile:\n${out}")
+    message(FATAL_ERROR "GLSL ${version}: shaders/${NAME}.glsl does not compile:\n${out}")
   endif()
   message(STATUS "GLSL ${version}: ok")
 endforeach()
