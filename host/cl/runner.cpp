@@ -71,6 +71,7 @@ const char* const kBuildOptions = "-cl-std=CL1.2 -w";
 
 KernelRunner::KernelRunner(const cl::Device& device) : device_(device) {
   cpu_ = (device_.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
+  fp64_ = device_.getInfo<CL_DEVICE_EXTENSIONS>().find("cl_khr_fp64") != std::string::npos;
   slots_.push_back(std::make_unique<Slot>(device_));
 }
 
@@ -90,17 +91,18 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
     k.setArg(15, -1);
   } else if (name == kBrdf3d) {
     k.setArg(0, dummy);
-    for (int i = 1; i < 9; ++i) k.setArg(i, 0);
-    k.setArg(9, 0.5f);
-    k.setArg(10, 0.0f);
-    k.setArg(11, 0);
+    k.setArg(1, dummy);
+    for (int i = 2; i < 8; ++i) k.setArg(i, 0);
+    k.setArg(8, 0.5f);
+    k.setArg(9, 0.0f);
+    k.setArg(10, 0);
     cl_float4 zero = {{0, 0, 0, 0}};
+    k.setArg(11, zero);
     k.setArg(12, zero);
-    k.setArg(13, zero);
-    k.setArg(14, -1);
-    k.setArg(15, 0.0f);
-    k.setArg(16, zero);
-    k.setArg(17, 0);
+    k.setArg(13, -1);
+    k.setArg(14, 0.0f);
+    k.setArg(15, zero);
+    k.setArg(16, 0);
   } else {
     k.setArg(0, dummy);
     k.setArg(1, dummy);

@@ -111,6 +111,7 @@ class KernelRunner {
 
   cl::Device device_;
   bool cpu_ = false;
+  bool fp64_ = false;  // the device has cl_khr_fp64: the 3D tables' programs compute in double
   bool planned_ = false;  // prepareAll() has run
   int buildThreads_ = 0;
   std::vector<std::unique_ptr<Slot>> slots_;  // [0]: the main context

@@ -188,10 +188,20 @@ std::vector<std::vector<float>> KernelRunner::brdf3dSlab(const Brdf3dSpec& spec,
     fy.s[ch] = static_cast<float>(y);
     if (!spec.rho.empty()) rho.s[ch] = static_cast<float>(spec.rho[spec.rho.size() == 3 ? ch : 0]);
   }
+  // the axes' cosines and sines, in the program's `real` (double where the device has fp64)
+  std::vector<double> trig = axisTrig(spec);
+  cl::Buffer trigBuf;
+  if (fp64_) {
+    trigBuf = cl::Buffer(s.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, trig.size() * sizeof(double), trig.data());
+  } else {
+    std::vector<float> tf(trig.begin(), trig.end());
+    trigBuf = cl::Buffer(s.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, tf.size() * sizeof(float), tf.data());
+  }
   cl::Kernel k(c.program, kBrdf3d);
   int a = 0;
   k.setArg(a++, out);
-  for (int v : {spec.nx, spec.ny, spec.nz, z0, zn, spec.kernelParam(), spec.kernelGrid(), spec.timesCos ? 1 : 0})
+  k.setArg(a++, trigBuf);
+  for (int v : {spec.nx, spec.ny, z0, zn, spec.param == Brdf3dParam::Angles ? 0 : 1, spec.timesCos ? 1 : 0})
     k.setArg(a++, v);
   float r = static_cast<float>(spec.roughness);
   k.setArg(a++, r);

@@ -41,6 +41,35 @@ double gridFraction(Brdf3dGrid grid, int i, int n) {
   }
 }
 
+std::vector<double> axisTrig(const Brdf3dSpec& s) {
+  std::vector<double> out;
+  int n[3] = {s.nx, s.ny, s.nz};
+  for (int a = 0; a < 3; ++a) {
+    for (int i = 0; i < n[a]; ++i) {
+      // t = num/den and 1 - t = (den - num)/den, from integers
+      double num, den;
+      switch (s.grid) {
+        case Brdf3dGrid::TexelCenter: num = 2.0 * i + 1; den = 2.0 * n[a]; break;
+        case Brdf3dGrid::Node: num = i; den = n[a] > 1 ? n[a] - 1.0 : 1.0; break;
+        default: num = i; den = n[a];
+      }
+      double u = num / den, uc = (den - num) / den;
+      if (a == 0 && s.param == Brdf3dParam::Rusinkiewicz && s.thetaHSqrt) {
+        u = (num * num) / (den * den);
+        uc = ((den - num) * (den + num)) / (den * den);  // 1 - t^2, exact in integers
+      }
+      if (a == 2) {  // the azimuth, pi t
+        out.push_back(std::cos(kPi * u));
+        out.push_back(std::sin(kPi * u));
+      } else {
+        out.push_back(std::sin(kHalfPi * uc));
+        out.push_back(std::sin(kHalfPi * u));
+      }
+    }
+  }
+  return out;
+}
+
 glm::dvec3 texelAngles(const Brdf3dSpec& s, int x, int y, int z) {
   auto ax = s.axes();
   double t[3] = {gridFraction(s.grid, x, s.nx), gridFraction(s.grid, y, s.ny), gridFraction(s.grid, z, s.nz)};

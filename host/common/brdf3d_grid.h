@@ -42,6 +42,11 @@ struct Brdf3dSpec {
   std::array<Axis, 3> axes() const;
 };
 
+// The kernel's input: each axis's samples as (cos, sin) pairs, x then y then z, in double. Angles
+// pi/2 u for the theta axes (u = t, or t^2 for MERL's theta_h index), pi t for the azimuth. The
+// cosine of pi/2 u is the sine of pi/2 (1 - u), with 1 - u formed from the grid's integers, so
+// that it keeps its relative precision near grazing.
+std::vector<double> axisTrig(const Brdf3dSpec& s);
 // Fraction t in [0, 1] of sample i of n on the spec's grid.
 double gridFraction(Brdf3dGrid grid, int i, int n);
 // The spec's three coordinates (radians) of texel (x, y, z).
