@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "bake/merl_bake.h"
 #include "bake/output_set.h"
 #include "cl/device.h"
 #include "cl/runner.h"
@@ -266,6 +267,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
 }
 
 std::vector<TableReport> runPlan(const Plan& plan) {
+  if (isMerlPlan(plan)) return runMerlPlan(plan);  // a measured material: host only
   // Nothing is created before every table is computed and checked: a bad -o, a missing device
   // or an interrupt leaves the file system as it was.
   checkOutputDir(plan.outDir);

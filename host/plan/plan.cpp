@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "bake/merl_bake.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 
@@ -21,6 +22,7 @@ std::string fileName(const TableJob& job) {
 }
 
 Plan makePlan(const BakeRequest& req) {
+  if (!req.merl.empty()) return makeMerlPlan(req);
   Plan plan;
   plan.outDir = req.outDir;
   plan.device = req.device;
