@@ -346,6 +346,9 @@ std::string energyWarnings(const TableImage& t) {
     if (mx > 1 + tol) {
       char b[64];
       std::snprintf(b, sizeof b, "%.4g", mx);
+      if (str("brdf.material").rfind("merl:", 0) == 0)  // measured data: the file, not a model
+        return "warning: " + name + " exceeds 1 (max " + b + "): " + str("brdf.material") +
+               " reflects more than it receives (a measurement or calibration error in the data)\n";
       if (!str("brdf.diffuse").empty() && table == "albedo") {
         std::string d = str("brdf.diffuse");
         std::string why = d == "burley" ? " (a known property of Burley's model: rough surfaces at grazing angles)"

@@ -143,10 +143,19 @@ std::array<double, 3> hSpaceIntegral(const RusinkiewiczFn& f, double mu, HSpaceR
   double lost = 0;
   std::vector<double> br;
   br.reserve(2 * (kMerlThetaD + kMerlPhiD) + 8);
-  for (int k = 0; k < kMerlThetaH; ++k) {
+  // theta_h panels: the bins, cut where the horizon's curve turns in theta_h (its ends at phi_h = 0
+  // and pi: theta_h = pi/4 +- theta_o/2), where the inner integral's derivative is singular
+  std::vector<double> ub;
+  for (int k = 0; k <= kMerlThetaH; ++k) ub.push_back(k);
+  const double thetaO = std::acos(mu);
+  for (double t : {kPi / 4 + thetaO / 2, kPi / 4 - thetaO / 2}) ub.push_back(std::sqrt(t / (kPi / 2)) * kMerlThetaH);
+  std::sort(ub.begin(), ub.end());
+  for (size_t k = 0; k + 1 < ub.size(); ++k) {
+    const double u0 = ub[k], ulen = ub[k + 1] - ub[k];
+    if (ulen <= 1e-12) continue;
     for (size_t q = 0; q < gu.x.size(); ++q) {
-      const double u = k + gu.x[q], t = u / kMerlThetaH, th = t * t * kPi / 2;
-      const double dth = kPi * t / kMerlThetaH * gu.w[q];  // d theta_h / du times the node's weight
+      const double u = u0 + ulen * gu.x[q], t = u / kMerlThetaH, th = t * t * kPi / 2;
+      const double dth = kPi * t / kMerlThetaH * gu.w[q] * ulen;  // d theta_h / du times the node's weight
       const double sh = std::sin(th), ch = std::cos(th);
       const double a = so * sh, b = co * ch;
       if (2 * (a + b) * ch - co <= 0) continue;  // i below the horizon all round
@@ -271,7 +280,7 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
   img.strings["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
   const std::string rule =
       "h-space quadrature of the MERL table's trilinear interpolant (sqrt theta_h bins, phi_d period pi, unmeasured "
-      "and below-horizon bins left out of the weights): theta_h by Gauss-Legendre 6 per bin, phi_h by Gauss-Legendre "
+      "and below-horizon bins left out of the weights): theta_h by Gauss-Legendre 6 per bin (bins cut where the horizon turns), phi_h by Gauss-Legendre "
       "5 per piece between the theta_d and phi_d bin edges and the horizon; error |rule - (4, 3) rule| + storage rounding";
   if (kind == TableKind::AlbedoAvg) {
     img.strings["brdf.axes"] = "none";

@@ -3,6 +3,7 @@
 // files"): E(mu) = int f(i, o) (n.i) dw_i over the hemisphere of i, o at n.o = mu, integrated over
 // the half vector h (dw_i = 4 (o.h) dw_h):
 //   theta_h: one Gauss-Legendre panel per sqrt-spaced bin (u = sqrt(theta_h/(pi/2)) 90 in [k, k+1]),
+//            cut where the horizon's curve turns in theta_h (theta_h = pi/4 +- theta_o/2),
 //   phi_h:   at each theta_h node, the circle cut where theta_d or phi_d crosses a bin edge and where
 //            i crosses the horizon (all closed forms), Gauss-Legendre on every piece;
 // so every kink of the trilinear interpolant (and every step of MERL's nearest-bin lookup) is a
