@@ -21,6 +21,7 @@
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "exr/table_file.h"
+#include "formats/merl.h"
 #include "plan/plan.h"
 #include "test_device.h"
 
@@ -235,6 +236,35 @@ TEST(Brdf3d, AtlasRoundTrip) {
   fs::path whole = dir / "whole.exr";
   writeTableExr(whole.string(), img, false);
   EXPECT_EQ(bytes(whole), bytes(file)) << "streamed and whole writes differ";
+}
+
+// --format merl: the kernel's table in MERL's layout equals the host's evaluation of the same
+// material written by the host (formats/merl.h merlPlanesFromSpec) to float precision, in every bin.
+TEST(Brdf3d, MerlFormatFromTheKernelMatchesTheHostWriter) {
+  fs::path dir = freshDir("merl");
+  CmdResult r = run("bake --table brdf3d --format merl --fresnel conductor --eta 0.2,0.92,1.1 --k 3.9,2.45,2.14 "
+                    "--roughness 0.4 -o '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  fs::path file = dir / "brdf3d_ggx_smith-correlated_conductor.binary";
+  ASSERT_EQ(fs::file_size(file), kMerlFileBytes);
+  Brdf3dSpec s = spec(NDF_GGX, GAF_SMITH_CORRELATED, Brdf3dParam::Rusinkiewicz, true, Brdf3dGrid::CellStart, 0, 0.4);
+  s.fresnel.model = FRESNEL_CONDUCTOR;
+  s.fresnel.eta = {0.2, 0.92, 1.1};
+  s.fresnel.k = {3.9, 2.45, 2.14};
+  validateFresnel(s.fresnel);
+  s = merlSpec(s);
+  fs::path hostFile = dir / "host.binary";
+  writeMerl(hostFile.string(), merlPlanesFromSpec(s));
+  MerlData kernel = readMerl(file.string()), host = readMerl(hostFile.string());
+  double worst = 0;
+  for (int c = 0; c < 3; ++c)
+    for (size_t b = 0; b < kMerlBins; ++b)
+      worst = std::max(worst, std::fabs(kernel.f[c][b] - host.f[c][b]) / std::max(1.0, std::fabs(host.f[c][b])));
+  EXPECT_LT(worst, 2e-7) << "largest difference between the kernel's and the host's MERL file";
+  // bad combinations with --format merl
+  CmdResult bad = run("bake --table brdf3d,albedo --format merl -o '" + (dir / "x").string() + "'");
+  EXPECT_EQ(bad.code, 64) << bad.out;
+  EXPECT_FALSE(fs::exists(dir / "x"));
 }
 
 TEST(Brdf3d, AtlasGrid) {

@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "bake/ashikhmin_textures.h"
+#include "bake/merl_bake.h"
 #include "bake/output_set.h"
 #include "bake/volume.h"
 #include "cl/device.h"
@@ -278,6 +279,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
 }
 
 std::vector<TableReport> runPlan(const Plan& plan) {
+  if (isMerlPlan(plan)) return runMerlPlan(plan);  // a measured material: host only
   // Nothing is created before every table is computed and checked: a bad -o, a missing device
   // or an interrupt leaves the file system as it was.
   checkOutputDir(plan.outDir);
@@ -378,6 +380,9 @@ std::string energyWarnings(const TableImage& t) {
     if (mx > 1 + tol) {
       char b[64];
       std::snprintf(b, sizeof b, "%.4g", mx);
+      if (str("brdf.material").rfind("merl:", 0) == 0)  // measured data: the file, not a model
+        return "warning: " + name + " exceeds 1 (max " + b + "): " + str("brdf.material") +
+               " reflects more than it receives (a measurement or calibration error in the data)\n";
       if (!str("brdf.diffuse").empty() && table == "albedo") {
         std::string d = str("brdf.diffuse");
         std::string why = d == "burley" ? " (a known property of Burley's model: rough surfaces at grazing angles)"

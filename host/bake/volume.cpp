@@ -13,10 +13,7 @@
 #include "common/format.h"
 #include "common/models.h"
 #include "exr/table_file.h"
-#if __has_include("formats/merl.h")
 #include "formats/merl.h"
-#define BRDFBAKE_HAVE_MERL 1
-#endif
 #include "version.h"
 
 namespace brdfbake {
@@ -147,7 +144,6 @@ OutputFile volumeOutput(KernelRunner& runner, const VolumeJob& job, const TableI
     if (peakSlab) *peakSlab = std::max<uint64_t>(*peakSlab, planes.size() * planes[0].size() * sizeof(float));
     return planes;
   };
-#ifdef BRDFBAKE_HAVE_MERL
   if (job.merl) {
     f.write = [timed, s, path = job.path](const std::string& tmp) {
       // 90 x 90 x 180 x 3 floats: small enough to bake whole (17 MB)
@@ -155,7 +151,6 @@ OutputFile volumeOutput(KernelRunner& runner, const VolumeJob& job, const TableI
     };
     return f;
   }
-#endif
   const int cols = job.cols;
   f.write = [timed, s, cols, header, half = job.half, path = job.path](const std::string& tmp) {
     // one atlas row of slices per block: slices z0 .. z0 + cols - 1, ny scanlines

@@ -88,8 +88,12 @@ std::string usageText() {
          "  --atlas CxR       slices per atlas row and column (default: near-square, see README)\n"
          "  --format F        exr (default) or merl (MERL's binary layout: rusinkiewicz, 90x90x180)\n"
          "\n"
+         "Measured material (host only; tables over mu alone, RGB; default tables albedo, albedo-avg):\n"
+         "  --brdf merl:FILE  a MERL .binary file as the material of --table albedo, albedo-avg (1x1), splitsum\n"
+         "                    (its directional albedo as the split sum's second factor); no --ndf/--gaf/--fresnel\n"
+         "\n"
          "Models, formulas and table conventions: docs/MODELS.md in the source tree.\n"
-         "Exit codes: 0 ok, 64 usage, 66 unreadable input, 69 no OpenCL device, 70 internal error,\n"
+         "Exit codes: 0 ok, 64 usage, 65 bad input data, 66 unreadable input, 69 no OpenCL device, 70 internal error,\n"
          "73 cannot create output, 74 write error (e.g. disk full), 128+N interrupted by signal N.\n";
 }
 
@@ -292,6 +296,12 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         ladder.push_back(static_cast<int>(v));
       }
       (lv ? req.levels : req.samples) = ladder;
+    } else if (opt == "--brdf") {
+      once(opt, "--brdf");
+      const std::string& v = value();
+      if (v.rfind("merl:", 0) != 0 || v.size() == 5)
+        throw Error(kExitUsage, "--brdf must be merl:FILE.binary (a measured material in MERL's layout), got '" + v + "'");
+      req.merl = v.substr(5);
     } else if (opt == "--diffuse") {
       once(opt, "--diffuse");
       req.diffuse = diffuseId(value());
@@ -309,6 +319,19 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   }
   BakeRequest def = defaultRequest();
   const bool modelsGiven = !req.ndfs.empty() || !req.gafs.empty() || req.diffuse >= 0;
+  if (!req.merl.empty()) {
+    // a measured material: the data is the whole material, and only the 2D tables' kinds have a form
+    if (cmd.kind != Command::Kind::Bake) throw Error(kExitUsage, "--brdf: only bake takes a measured material");
+    if (modelsGiven || req.fresnelGiven || !req.fresnel.f0.empty() || !req.fresnel.eta.empty() ||
+        !req.fresnel.k.empty() || !req.fresnel.f82.empty())
+      throw Error(kExitUsage, "--brdf merl:" + req.merl + ": the measured data is the whole material; --ndf, --gaf, "
+                              "--fresnel, --diffuse and their parameters do not apply");
+    if (req.tables.empty()) req.tables = {TableKind::Albedo, TableKind::AlbedoAvg};
+    for (TableKind t : req.tables)
+      if (t != TableKind::Albedo && t != TableKind::AlbedoAvg && t != TableKind::SplitSum)
+        throw Error(kExitUsage, "--brdf merl:" + req.merl + ": --table " + tableName(t) +
+                                    " has no measured form; a measured material bakes albedo, albedo-avg or splitsum");
+  }
   if (req.ndfs.empty()) req.ndfs = def.ndfs;
   if (req.gafs.empty()) req.gafs = def.gafs;
   if (cmd.kind == Command::Kind::Energy) {

@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "bake/ashikhmin_textures.h"
+#include "bake/merl_bake.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 
@@ -106,6 +107,7 @@ void planVolumes(const BakeRequest& req, Plan& plan) {
 }  // namespace
 
 Plan makePlan(const BakeRequest& req) {
+  if (!req.merl.empty()) return makeMerlPlan(req);
   Plan plan;
   plan.outDir = req.outDir;
   plan.device = req.device;

@@ -37,6 +37,7 @@ struct Plan {
   std::string device;
   std::vector<TableJob> jobs;
   std::vector<VolumeJob> volumes;
+  std::string merl;  // a measured material's MERL file, the jobs' material (bake/merl_bake.h); "" = none
 };
 
 // Throws Error(kExitUsage) for combinations that have no finite table (gaf none on a node grid,

@@ -1,0 +1,66 @@
+#include "bake/merl_bake.h"
+
+#include <chrono>
+
+#include "bake/output_set.h"
+#include "common/errors.h"
+#include "formats/merl.h"
+#include "materials/merl_albedo.h"
+
+namespace brdfbake {
+
+std::string merlMaterialName(const std::string& path) {
+  size_t slash = path.find_last_of('/');
+  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::string ext = ".binary";
+  if (name.size() > ext.size() && name.compare(name.size() - ext.size(), ext.size(), ext) == 0)
+    name.resize(name.size() - ext.size());
+  return name;
+}
+
+Plan makeMerlPlan(const BakeRequest& req) {
+  Plan plan;
+  plan.outDir = req.outDir;
+  plan.device = req.device;
+  plan.merl = req.merl;
+  for (TableKind kind : req.tables) {
+    if (kind != TableKind::Albedo && kind != TableKind::AlbedoAvg && kind != TableKind::SplitSum)
+      throw Error(kExitUsage, "--brdf merl:" + req.merl + ": --table " + tableName(kind) +
+                                  " has no measured form; a measured material bakes albedo, albedo-avg or splitsum");
+    int n = kind == TableKind::AlbedoAvg ? 1 : req.size ? *req.size : defaultSize(kind);
+    if (req.nodeGrid && kind != TableKind::AlbedoAvg && n < 2)
+      throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
+    TableJob job{kind, -1, -1, n, 1, req.nodeGrid, req.half, "", {}, -1};
+    job.path = req.outDir + "/" + tableName(kind) + "_merl-" + merlMaterialName(req.merl) + ".exr";
+    plan.jobs.push_back(job);
+  }
+  return plan;
+}
+
+bool isMerlPlan(const Plan& plan) { return !plan.merl.empty(); }
+
+std::vector<TableReport> runMerlPlan(const Plan& plan) {
+  checkOutputDir(plan.outDir);
+  MerlData data = readMerl(plan.merl);
+  guardInterrupts("abandoned " + std::to_string(plan.jobs.size()) + " table(s) for " + plan.outDir + "/");
+  std::vector<TableImage> images;
+  std::vector<TableReport> reports;
+  for (const TableJob& job : plan.jobs) {
+    auto t0 = std::chrono::steady_clock::now();
+    images.push_back(merlTable(data, merlMaterialName(plan.merl), job.kind, job.width, job.nodeGrid, job.half));
+    TableReport r;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.path = job.path;
+    r.table = tableName(job.kind);
+    r.width = job.width;
+    r.height = job.height;
+    r.errorBound = images.back().floats["brdf.error"];
+    reports.push_back(r);
+  }
+  std::vector<OutputFile> files;
+  for (size_t i = 0; i < plan.jobs.size(); ++i) files.push_back({plan.jobs[i].path, &images[i], plan.jobs[i].half, {}});
+  commitOutputs(plan.outDir, files);
+  return reports;
+}
+
+}  // namespace brdfbake

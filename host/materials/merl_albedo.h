@@ -1,0 +1,55 @@
+// Directional and average albedo of a tabulated isotropic BRDF (a MERL file), on the host in
+// double, by a quadrature that follows the table's piecewise structure (docs/MODELS.md, "MERL
+// files"): E(mu) = int f(i, o) (n.i) dw_i over the hemisphere of i, o at n.o = mu, integrated over
+// the half vector h (dw_i = 4 (o.h) dw_h):
+//   theta_h: one Gauss-Legendre panel per sqrt-spaced bin (u = sqrt(theta_h/(pi/2)) 90 in [k, k+1]),
+//            cut where the horizon's curve turns in theta_h (theta_h = pi/4 +- theta_o/2),
+//   phi_h:   at each theta_h node, the circle cut where theta_d or phi_d crosses a bin edge and where
+//            i crosses the horizon (all closed forms), Gauss-Legendre on every piece;
+// so every kink of the trilinear interpolant (and every step of MERL's nearest-bin lookup) is a
+// panel edge. The error estimate is the difference between two such rules (4 x 3 and 6 x 5 nodes
+// per piece); the finer one's value is returned.
+#pragma once
+#include <array>
+#include <functional>
+#include <string>
+
+#include "exr/table_file.h"
+#include "formats/merl.h"
+#include "common/models.h"
+
+namespace brdfbake {
+
+// f at (theta_h, theta_d, phi_d) for R, G, B; false where it has no value (f is then 0 there).
+using RusinkiewiczFn = std::function<bool(double thetaH, double thetaD, double phiD, double f[3])>;
+RusinkiewiczFn merlFunction(const MerlData& d, bool nearestBin = false);  // trilinear, or MERL's lookup
+RusinkiewiczFn analyticFunction(const Brdf3dSpec& s);                      // hostBrdf (for checks)
+
+struct HSpaceRule {
+  int thetaNodes = 4;  // Gauss-Legendre nodes per theta_h bin
+  int phiNodes = 3;    // Gauss-Legendre nodes per phi_h piece
+};
+
+struct AlbedoEstimate {
+  std::array<double, 3> e{}, err{};  // per channel: value and |fine - coarse| (+ inner bounds for E_avg)
+  double unsupported = 0;            // share of int (n.i) dw_i / pi where f had no value
+};
+
+// One rule's E(mu) per channel; *unsupported (optional) as in AlbedoEstimate.
+std::array<double, 3> hSpaceIntegral(const RusinkiewiczFn& f, double mu, HSpaceRule rule, double* unsupported = nullptr);
+// E(mu) by the fine rule {6, 5}, err = |fine - coarse {4, 3}|.
+AlbedoEstimate hSpaceAlbedo(const RusinkiewiczFn& f, double mu);
+// E_avg = 2 int_0^1 E(mu) mu dmu: Gauss-Legendre on the mu panels [0, .05, .2, .5, 1], 8 nodes each
+// (err: |8 - 5 nodes| + the nodes' own err); `threads` workers (0 = hardware).
+AlbedoEstimate hSpaceAlbedoAvg(const RusinkiewiczFn& f, int threads = 0, const std::string& progress = "");
+
+// The table of a measured material, RGB, no roughness axis, with its metadata:
+//   albedo, splitsum: E(mu) per channel over `width` mu texels (height 1; mu at texel centres or,
+//     nodeGrid, at i/(width-1)); splitsum holds the same numbers as albedo, labelled as the split
+//     sum's whole second factor (README, "MERL in and out");
+//   albedo-avg: 1 x 1, E_avg per channel.
+// `name` is the material's name (brdf.material = "merl:<name>"); progress lines go to stderr when
+// a table takes more than two seconds.
+TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind, int width, bool nodeGrid, bool half);
+
+}  // namespace brdfbake
