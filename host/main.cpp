@@ -38,6 +38,11 @@ int main(int argc, char** argv) {
         std::cout << describeTableExr(cmd.file);
         std::cout << energyWarnings(readTableExr(cmd.file));
         return kExitOk;
+      case Command::Kind::ScenePlan:
+        return runScenePlan(cmd.scene);
+      case Command::Kind::SceneBake:
+        if (!cmd.scene.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.scene.cacheDir.c_str(), 1);
+        return runSceneBake(cmd.scene);
       case Command::Kind::Sample:
         std::cout << sampleReport(cmd.file, cmd.at);
         return kExitOk;

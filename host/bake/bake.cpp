@@ -309,13 +309,22 @@ std::vector<TableReport> runPlan(const Plan& plan) {
     r.errorBound = images.back().floats["brdf.error"];
     reports.push_back(r);
   }
+  auto extras = [&](const std::string& path, TableImage& img) {
+    auto it = plan.extraStrings.find(path);
+    if (it != plan.extraStrings.end())
+      for (const auto& [k, v] : it->second) img.strings[k] = v;
+  };
   std::vector<OutputFile> files;
-  for (size_t i = 0; i < plan.jobs.size(); ++i) files.push_back({plan.jobs[i].path, &images[i], plan.jobs[i].half, {}});
+  for (size_t i = 0; i < plan.jobs.size(); ++i) {
+    extras(plan.jobs[i].path, images[i]);
+    files.push_back({plan.jobs[i].path, &images[i], plan.jobs[i].half, {}});
+  }
   // 3D tables: baked slab by slab while their files are written (never whole in memory)
   std::vector<TableImage> headers;
   headers.reserve(plan.volumes.size());
   for (const VolumeJob& v : plan.volumes) {
     headers.push_back(volumeHeader(v));
+    extras(v.path, headers.back());
     TableReport r;
     r.path = v.path;
     r.table = v.merl ? "brdf3d (merl)" : "brdf3d";

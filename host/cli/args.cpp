@@ -1,4 +1,5 @@
 #include "cli/args.h"
+#include "cli/scene_args.h"
 #include "cli/volume_args.h"
 
 #include <algorithm>
@@ -29,6 +30,10 @@ std::string usageText() {
   return "usage:\n"
          "  brdfbake [options]            bake (the default set: ggx + smith-correlated, every table, into out/)\n"
          "  brdfbake bake [options]       the same, spelled out\n"
+         "  brdfbake plan SCENE           the tables a scene (.toml manifest, .gltf/.glb) needs, why, their cost,\n"
+         "                                what is up to date; [-o DIR] [--shard I/N] [--list: output paths only]\n"
+         "  brdfbake bake SCENE           bake what is new or changed; [-o DIR] [--shard I/N] [--force] [--prune]\n"
+         "                                [--stamp FILE] [--device TEXT] [--cache-dir DIR]\n"
          "  brdfbake devices              list OpenCL platforms and devices\n"
          "  brdfbake info FILE.exr        print a table's metadata and value range\n"
          "  brdfbake sample FILE.exr --at A,B,C\n"
@@ -160,6 +165,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     cmd.kind = Command::Kind::Devices;
     return cmd;
   }
+  if (parseSceneCommand(args, cmd)) return cmd;
   if (first == "sample") {
     // sample FILE --at A,B,C
     if (args.size() != 4 || args[2] != "--at")
@@ -204,7 +210,8 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     i = 1;
     cmd.kind = Command::Kind::Convergence;
   } else if (first.rfind("-", 0) != 0) {
-    throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, energy, verify, stress, convergence, devices, info (see --help)");
+    throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, plan, energy, verify, stress, convergence, "
+                            "devices, info, sample (see --help)");
   }
   // `brdfbake [options]` is `brdfbake bake [options]`: every bake option works at the top level.
   std::vector<std::string> seen;  // scalar options given so far: each at most once

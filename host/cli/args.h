@@ -8,6 +8,7 @@
 #include "common/brdf3d_grid.h"
 #include "common/material.h"
 #include "common/models.h"
+#include "scene/scene_run.h"
 
 namespace brdfbake {
 
@@ -44,10 +45,11 @@ struct BakeRequest {
 };
 
 struct Command {
-  enum class Kind { Bake, Energy, Verify, Stress, Convergence, Devices, Info, Sample, Help, Version } kind = Kind::Bake;
+  enum class Kind { Bake, Energy, Verify, Stress, Convergence, Devices, Info, Sample, ScenePlan, SceneBake, Help, Version } kind = Kind::Bake;
   BakeRequest bake;
   std::string file;  // for Info, Sample
   std::array<double, 3> at{};  // Sample: --at, in degrees
+  SceneOptions scene;          // ScenePlan, SceneBake
 };
 
 constexpr int kMinSize = 1;

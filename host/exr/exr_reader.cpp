@@ -145,3 +145,18 @@ bool tableExrIsHalf(const std::string& path) {
 }
 
 }  // namespace brdfbake
+
+namespace brdfbake {
+
+std::optional<std::string> readExrStringAttribute(const std::string& path, const std::string& name) {
+  try {
+    std::unique_ptr<Imf::InputFile> file = openExr(path);
+    const Imf::StringAttribute* a = file->header().findTypedAttribute<Imf::StringAttribute>(name);
+    if (!a) return std::nullopt;
+    return a->value();
+  } catch (const std::exception&) {
+    return std::nullopt;  // not an EXR we can read: no attribute
+  }
+}
+
+}  // namespace brdfbake

@@ -10,6 +10,7 @@
 // exr_describe.cpp (describeTableExr).
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,10 @@ std::string temporaryPathFor(const std::string& path);
 // Throws Error(kExitNoInput, "cannot read <path>: <reason>") on a missing or
 // unreadable file, or one that has none of the channels R, G, B, A.
 TableImage readTableExr(const std::string& path);
+
+// One string attribute of an EXR's header, read without its pixels; nullopt when the file is
+// missing, not a readable EXR, or has no such string attribute. (Incremental bakes read brdf.hash.)
+std::optional<std::string> readExrStringAttribute(const std::string& path, const std::string& name);
 
 // True when the R/G/B/A channels of the file are stored as HALF (all of them); false
 // when any is FLOAT or UINT.  Throws like readTableExr.

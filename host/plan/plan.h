@@ -2,6 +2,7 @@
 // attributes that do not depend on the baked values. Validation of combinations happens here, so
 // nothing is computed or written for a request that cannot be honoured.
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,8 @@ struct Plan {
   std::string device;
   std::vector<TableJob> jobs;
   std::vector<VolumeJob> volumes;
+  // Extra string attributes of the file at a path (scenes: brdf.hash, brdf.scene).
+  std::map<std::string, std::map<std::string, std::string>> extraStrings;
   std::string merl;  // a measured material's MERL file, the jobs' material (bake/merl_bake.h); "" = none
 };
 

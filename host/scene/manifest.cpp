@@ -1,0 +1,299 @@
+// The TOML scene manifest (toml++, Debian libtomlplusplus-dev): every key checked, every message
+// with file, line and column. The keys are documented in README.md ("Scenes").
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "cli/args.h"
+#include "common/brdf_host.h"
+#include "common/errors.h"
+#include "common/format.h"
+#include "scene/scene.h"
+
+namespace brdfbake {
+
+std::string SourcePos::str() const {
+  return file + ":" + std::to_string(line) + ":" + std::to_string(column);
+}
+
+std::string closestName(const std::string& word, const std::vector<std::string>& valid) {
+  std::string best;
+  size_t bestD = std::string::npos;
+  for (const auto& v : valid) {
+    // Levenshtein distance
+    std::vector<size_t> prev(v.size() + 1), cur(v.size() + 1);
+    for (size_t j = 0; j <= v.size(); ++j) prev[j] = j;
+    for (size_t i = 1; i <= word.size(); ++i) {
+      cur[0] = i;
+      for (size_t j = 1; j <= v.size(); ++j)
+        cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (word[i - 1] == v[j - 1] ? 0 : 1)});
+      std::swap(prev, cur);
+    }
+    if (prev[v.size()] < bestD) {
+      bestD = prev[v.size()];
+      best = v;
+    }
+  }
+  return bestD <= std::max<size_t>(2, word.size() / 3) ? best : std::string();
+}
+
+namespace {
+
+struct Reader {
+  std::string file;
+
+  SourcePos pos(const toml::node& n) const {
+    return {file, static_cast<int>(n.source().begin.line), static_cast<int>(n.source().begin.column)};
+  }
+  [[noreturn]] void fail(const toml::node& n, const std::string& what) const {
+    throw Error(kExitDataErr, pos(n).str() + ": " + what);
+  }
+  // Every key of `t` must be one of `valid`.
+  void keysIn(const toml::table& t, const std::string& where, const std::vector<std::string>& valid) const {
+    for (auto&& [k, v] : t) {
+      std::string key(k.str());
+      if (std::find(valid.begin(), valid.end(), key) != valid.end()) continue;
+      std::string near = closestName(key, valid);
+      throw Error(kExitDataErr, SourcePos{file, static_cast<int>(k.source().begin.line),
+                                          static_cast<int>(k.source().begin.column)}.str() +
+                                    ": unknown key '" + key + "' in " + where +
+                                    (near.empty() ? "" : " (did you mean '" + near + "'?)") + "; valid: " +
+                                    joinNames(valid));
+    }
+  }
+  const toml::table& table(const toml::node& n, const std::string& what) const {
+    if (!n.is_table()) fail(n, what + " must be a table");
+    return *n.as_table();
+  }
+  bool boolean(const toml::node& n, const std::string& what) const {
+    if (!n.is_boolean()) fail(n, what + " must be true or false");
+    return n.as_boolean()->get();
+  }
+  std::string string(const toml::node& n, const std::string& what) const {
+    if (!n.is_string()) fail(n, what + " must be a string");
+    return n.as_string()->get();
+  }
+  double number(const toml::node& n, const std::string& what, double lo, double hi) const {
+    double v;
+    if (n.is_integer()) v = static_cast<double>(n.as_integer()->get());
+    else if (n.is_floating_point()) v = n.as_floating_point()->get();
+    else fail(n, what + " must be a number in [" + fmtG(lo) + ", " + fmtG(hi) + "]");
+    if (!(v >= lo && v <= hi)) fail(n, what + " must be in [" + fmtG(lo) + ", " + fmtG(hi) + "], got " + fmtG(v));
+    return v;
+  }
+  int integer(const toml::node& n, const std::string& what, int lo, int hi) const {
+    if (!n.is_integer()) fail(n, what + " must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
+    int64_t v = n.as_integer()->get();
+    if (v < lo || v > hi)
+      fail(n, what + " must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " +
+                  std::to_string(v));
+    return static_cast<int>(v);
+  }
+  // One number, or three (R, G, B).
+  std::vector<double> values(const toml::node& n, const std::string& what, double lo, double hi) const {
+    if (!n.is_array()) return {number(n, what, lo, hi)};
+    const toml::array& a = *n.as_array();
+    if (a.size() != 1 && a.size() != 3) fail(n, what + " must be one number or three (R, G, B), got " + std::to_string(a.size()));
+    std::vector<double> v;
+    for (const auto& x : a) v.push_back(number(x, what, lo, hi));
+    return v;
+  }
+  // A name from `names`, by id.
+  int name(const toml::node& n, const std::string& what, const std::vector<std::string>& names) const {
+    std::string s = string(n, what);
+    for (size_t i = 0; i < names.size(); ++i)
+      if (names[i] == s) return static_cast<int>(i);
+    std::string near = closestName(s, names);
+    fail(n, "unknown " + what + " '" + s + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") + "; valid: " +
+                joinNames(names));
+  }
+};
+
+void readOutput(const Reader& r, const toml::table& t, SceneOutput& out) {
+  r.keysIn(t, "[output]", {"dir", "precision", "grid", "size"});
+  if (auto* n = t.get("dir")) {
+    out.dir = r.string(*n, "output.dir");
+    if (out.dir.empty()) r.fail(*n, "output.dir must not be empty");
+  }
+  if (auto* n = t.get("precision")) {
+    std::string p = r.string(*n, "output.precision");
+    if (p != "float" && p != "half") r.fail(*n, "output.precision must be \"float\" or \"half\", got \"" + p + "\"");
+    out.half = p == "half";
+  }
+  if (auto* n = t.get("grid")) {
+    std::string g = r.string(*n, "output.grid");
+    if (g != "texel-center" && g != "node") r.fail(*n, "output.grid must be \"texel-center\" or \"node\", got \"" + g + "\"");
+    out.nodeGrid = g == "node";
+  }
+  if (auto* n = t.get("size")) {
+    const toml::table& s = r.table(*n, "output.size");
+    std::vector<std::string> kinds = {"splitsum", "albedo", "albedo-avg", "kp", "brdf3d"};
+    r.keysIn(s, "[output.size]", kinds);
+    for (auto&& [k, v] : s) {
+      std::string kind(k.str());
+      if (kind == "brdf3d") {
+        if (v.is_array()) {
+          const toml::array& a = *v.as_array();
+          if (a.size() != 3) r.fail(v, "output.size.brdf3d must be N or [X, Y, Z]");
+          std::array<int, 3> n3{};
+          for (int i = 0; i < 3; ++i) n3[i] = r.integer(a[i], "output.size.brdf3d", 1, kMaxVolumeSize);
+          out.brdf3dSize = n3;
+        } else {
+          int n1 = r.integer(v, "output.size.brdf3d", 1, kMaxVolumeSize);
+          out.brdf3dSize = std::array<int, 3>{n1, n1, n1};
+        }
+      } else {
+        out.size[tableKind(kind)] = r.integer(v, "output.size." + kind, kMinSize, kMaxSize);
+      }
+    }
+  }
+}
+
+void readLighting(const Reader& r, const toml::table& t, SceneLighting& l) {
+  r.keysIn(t, "[lighting]", {"ibl", "analytic", "multiscatter"});
+  if (auto* n = t.get("ibl")) l.ibl = r.boolean(*n, "lighting.ibl");
+  if (auto* n = t.get("analytic")) l.analytic = r.boolean(*n, "lighting.analytic");
+  if (auto* n = t.get("multiscatter")) l.multiscatter = r.boolean(*n, "lighting.multiscatter");
+}
+
+SceneMaterial readMaterial(const Reader& r, const toml::table& t, int index) {
+  static const std::vector<std::string> keys = {"name", "ndf", "gaf", "fresnel", "f0", "eta", "k", "f82", "diffuse",
+                                                "sigma", "rho", "roughness", "coupling", "brdf3d"};
+  r.keysIn(t, "[[material]]", keys);
+  SceneMaterial m;
+  m.pos = r.pos(t);
+  if (auto* n = t.get("name")) {
+    m.name = r.string(*n, "material.name");
+    if (m.name.empty()) r.fail(*n, "material.name must not be empty");
+  } else {
+    r.fail(t, "material " + std::to_string(index + 1) + " has no name (name = \"...\")");
+  }
+  if (auto* n = t.get("ndf")) m.ndf = r.name(*n, "NDF", ndfNames());
+  if (auto* n = t.get("gaf")) m.gaf = r.name(*n, "GAF", gafNames());
+  m.fresnel.model = FRESNEL_SCHLICK;  // glTF's and most engines' default: F0 0.04
+  if (auto* n = t.get("fresnel")) m.fresnel.model = r.name(*n, "Fresnel model", fresnelNames());
+  const std::pair<const char*, std::vector<double>*> params[] = {
+      {"f0", &m.fresnel.f0}, {"eta", &m.fresnel.eta}, {"k", &m.fresnel.k}, {"f82", &m.fresnel.f82}};
+  for (auto [key, slot] : params)
+    if (auto* n = t.get(key)) *slot = r.values(*n, std::string("material.") + key, 0.0, 100.0);
+  try {
+    validateFresnel(m.fresnel);
+  } catch (const Error& e) {
+    // the CLI's message names the flag (--eta ...); here the key
+    std::string msg = e.what();
+    for (std::string flag : {"--f0", "--eta", "--k", "--f82", "--fresnel"}) {
+      size_t at;
+      while ((at = msg.find(flag)) != std::string::npos) msg.replace(at, flag.size(), flag.substr(2));
+    }
+    // point at the key the message is about
+    const toml::node* at = t.get("fresnel");
+    for (const char* key : {"f0", "eta", "k", "f82"})
+      if (msg.rfind(std::string(key) + " ", 0) == 0 && t.get(key)) at = t.get(key);
+    r.fail(at ? *at : static_cast<const toml::node&>(t), "material '" + m.name + "': " + msg);
+  }
+  if (auto* n = t.get("diffuse")) m.diffuse = r.name(*n, "diffuse model", diffuseNames());
+  if (auto* n = t.get("sigma")) {
+    m.sigma = r.number(*n, "material.sigma", 0.0, 1.5707963267948966);
+    if (m.diffuse != DIFFUSE_OREN_NAYAR && m.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
+      r.fail(*n, "material.sigma: only diffuse = \"oren-nayar\" (or oren-nayar-as-printed) takes it");
+  }
+  if (auto* n = t.get("rho")) m.rho = r.values(*n, "material.rho", 0.0, 1.0);
+  if (auto* n = t.get("roughness")) {
+    if (n->is_array()) {
+      const toml::array& a = *n->as_array();
+      if (a.size() != 2) r.fail(*n, "material.roughness must be a number or a range [lo, hi]");
+      m.roughnessLo = r.number(a[0], "material.roughness", 0.0, 1.0);
+      m.roughnessHi = r.number(a[1], "material.roughness", 0.0, 1.0);
+      if (m.roughnessLo > m.roughnessHi) r.fail(*n, "material.roughness range [lo, hi] must have lo <= hi");
+    } else {
+      m.roughnessLo = m.roughnessHi = r.number(*n, "material.roughness", 0.0, 1.0);
+    }
+  }
+  if (auto* n = t.get("coupling")) {
+    m.coupling = r.string(*n, "material.coupling");
+    if (m.coupling != "sum" && m.coupling != "albedo-scaling")
+      r.fail(*n, "material.coupling must be \"sum\" or \"albedo-scaling\", got \"" + m.coupling + "\"");
+    if (m.coupling == "albedo-scaling" && m.diffuse < 0)
+      r.fail(*n, "material.coupling = \"albedo-scaling\" scales a diffuse lobe: give the material a diffuse model");
+  }
+  if (auto* n = t.get("brdf3d")) {
+    m.brdf3d = r.boolean(*n, "material.brdf3d");
+    if (m.brdf3d && (m.roughnessLo != m.roughnessHi || m.roughnessLo < kMinVolumeRoughness))
+      r.fail(*n, "material '" + m.name + "': brdf3d = true needs one roughness in [0.01, 1] (roughness = R), got " +
+                     (m.roughnessLo == m.roughnessHi ? fmtG(m.roughnessLo) : "a range"));
+  }
+  return m;
+}
+
+}  // namespace
+
+Scene parseManifest(const std::string& text, const std::string& name) {
+  Reader r{name};
+  toml::table root;
+  try {
+    root = toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    throw Error(kExitDataErr, SourcePos{name, static_cast<int>(e.source().begin.line),
+                                        static_cast<int>(e.source().begin.column)}.str() +
+                                  ": TOML syntax: " + std::string(e.description()));
+  }
+  Scene s;
+  r.keysIn(root, "the manifest", {"scene", "output", "lighting", "material"});
+  if (auto* n = root.get("scene")) {
+    const toml::table& t = r.table(*n, "[scene]");
+    r.keysIn(t, "[scene]", {"name"});
+    if (auto* nm = t.get("name")) s.name = r.string(*nm, "scene.name");
+  }
+  if (auto* n = root.get("output")) readOutput(r, r.table(*n, "[output]"), s.output);
+  if (auto* n = root.get("lighting")) readLighting(r, r.table(*n, "[lighting]"), s.lighting);
+  if (auto* n = root.get("material")) {
+    if (!n->is_array_of_tables()) r.fail(*n, "material must be an array of tables ([[material]] sections)");
+    const toml::array& a = *n->as_array();
+    std::map<std::string, SourcePos> seen;
+    for (size_t i = 0; i < a.size(); ++i) {
+      SceneMaterial m = readMaterial(r, *a[i].as_table(), static_cast<int>(i));
+      auto [it, fresh] = seen.emplace(m.name, m.pos);
+      if (!fresh)
+        throw Error(kExitDataErr, m.pos.str() + ": duplicate material name '" + m.name + "' (first at " +
+                                      it->second.str() + ")");
+      s.materials.push_back(m);
+    }
+  }
+  if (s.materials.empty())
+    throw Error(kExitDataErr, name + ":1:1: the scene has no materials ([[material]] with name, ndf, gaf, ...)");
+  return s;
+}
+
+Scene readManifest(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(kExitNoInput, "cannot read scene " + path + ": " + std::strerror(errno));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw Error(kExitNoInput, "cannot read scene " + path);
+  Scene s = parseManifest(ss.str(), path);
+  s.path = path;
+  size_t slash = path.find_last_of('/');
+  s.baseDir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
+  if (s.name.empty()) {
+    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+    s.name = base.substr(0, base.find_last_of('.'));
+  }
+  return s;
+}
+
+Scene readScene(const std::string& path) {
+  auto ends = [&](const std::string& e) {
+    return path.size() >= e.size() && std::equal(e.rbegin(), e.rend(), path.rbegin(),
+                                                 [](char a, char b) { return std::tolower(a) == std::tolower(b); });
+  };
+  if (ends(".gltf") || ends(".glb")) return readGltfScene(path);
+  return readManifest(path);
+}
+
+}  // namespace brdfbake

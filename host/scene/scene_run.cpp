@@ -1,0 +1,190 @@
+#include "scene/scene_run.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "bake/bake.h"
+#include "common/errors.h"
+#include "exr/table_file.h"
+#include "scene/scene_plan.h"
+
+namespace brdfbake {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+enum class Status { New, Changed, UpToDate };
+
+Status statusOf(const PlannedTable& t) {
+  std::optional<std::string> h = readExrStringAttribute(t.path, "brdf.hash");
+  if (!h) return fs::exists(t.path) ? Status::Changed : Status::New;
+  return *h == t.hash ? Status::UpToDate : Status::Changed;
+}
+
+const char* statusName(Status s) { return s == Status::New ? "new" : s == Status::Changed ? "changed" : "up to date"; }
+
+// EXR files in the output directory that this scene baked (brdf.scene) and no longer plans.
+std::vector<std::string> staleTables(const ScenePlan& whole) {
+  std::vector<std::string> stale;
+  std::error_code ec;
+  if (!fs::is_directory(whole.plan.outDir, ec)) return stale;
+  std::vector<std::string> planned;
+  for (const auto& t : whole.tables) planned.push_back(fs::weakly_canonical(t.path, ec).string());
+  for (const auto& e : fs::directory_iterator(whole.plan.outDir, ec)) {
+    if (!e.is_regular_file() || e.path().extension() != ".exr") continue;
+    std::optional<std::string> scene = readExrStringAttribute(e.path().string(), "brdf.scene");
+    if (!scene || *scene != whole.scene) continue;
+    std::string canon = fs::weakly_canonical(e.path(), ec).string();
+    if (std::find(planned.begin(), planned.end(), canon) == planned.end()) stale.push_back(e.path().string());
+  }
+  std::sort(stale.begin(), stale.end());
+  return stale;
+}
+
+struct Loaded {
+  ScenePlan whole, part;
+};
+
+Loaded load(const SceneOptions& o) {
+  Scene scene = readScene(o.file);
+  Loaded l;
+  l.whole = planScene(scene, o.outDir);
+  l.whole.plan.device = o.device;
+  l.part = o.shards > 1 ? shardOf(l.whole, o.shard, o.shards) : l.whole;
+  return l;
+}
+
+std::string fmtSeconds(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, s < 0.1 ? "%.3f" : "%.1f", s);
+  return b;
+}
+
+// Writes `text` to `path` through a temporary and a rename.
+void writeAtomically(const std::string& path, const std::string& text) {
+  std::string tmp = temporaryPathFor(path);
+  int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw Error(kExitCantCreat, "cannot create " + path + ": " + std::strerror(errno));
+  bool ok = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) && ::fsync(fd) == 0;
+  ok = (::close(fd) == 0) && ok;
+  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    ::unlink(tmp.c_str());
+    throw Error(kExitIoErr, "cannot write " + path);
+  }
+}
+
+}  // namespace
+
+int runScenePlan(const SceneOptions& o) {
+  Loaded l = load(o);
+  const ScenePlan& p = l.part;
+  if (o.list) {
+    std::error_code ec;
+    for (const auto& t : p.tables) std::cout << fs::absolute(t.path, ec).string() << "\n";
+    return kExitOk;
+  }
+  double cost = 0, toBake = 0;
+  int stale = 0, fresh = 0;
+  std::vector<Status> st;
+  for (const auto& t : p.tables) {
+    st.push_back(statusOf(t));
+    cost += t.cost;
+    if (st.back() != Status::UpToDate) {
+      toBake += t.cost;
+      ++stale;
+    } else {
+      ++fresh;
+    }
+  }
+  std::cout << "scene " << p.scene << " (" << o.file << ")"
+            << (o.shards > 1 ? ", shard " + std::to_string(o.shard) + "/" + std::to_string(o.shards) : "") << ": "
+            << p.tables.size() << " table(s) into " << p.plan.outDir << "/, " << stale << " to bake (about "
+            << fmtSeconds(toBake) << " s), " << fresh << " up to date\n";
+  size_t wt = 5, wf = 4;
+  for (const auto& t : p.tables) {
+    wt = std::max(wt, t.table.size());
+    wf = std::max(wf, t.path.size());
+  }
+  char line[1024];
+  std::snprintf(line, sizeof line, "  %-*s  %-12s  %10s  %7s  %-10s  %s\n", int(wt), "table", "size", "texels", "est. s",
+                "status", "file");
+  std::cout << line;
+  for (size_t i = 0; i < p.tables.size(); ++i) {
+    const auto& t = p.tables[i];
+    std::snprintf(line, sizeof line, "  %-*s  %-12s  %10.0f  %7s  %-10s  %s\n", int(wt), t.table.c_str(), t.size.c_str(),
+                  t.texels, fmtSeconds(t.cost).c_str(), statusName(st[i]), t.path.c_str());
+    std::cout << line << "    " << t.models << "\n";
+    for (const auto& r : t.reasons) std::cout << "    for " << r << "\n";
+  }
+  if (!p.leftOut.empty()) {
+    std::cout << "left out:\n";
+    for (const auto& s : p.leftOut) std::cout << "  " << s << "\n";
+  }
+  if (!p.notes.empty()) {
+    std::cout << "notes:\n";
+    for (const auto& s : p.notes) std::cout << "  " << s << "\n";
+  }
+  std::vector<std::string> old = staleTables(l.whole);
+  if (!old.empty()) {
+    std::cout << "no longer needed by this scene (bake --prune removes them):\n";
+    for (const auto& s : old) std::cout << "  " << s << "\n";
+  }
+  return kExitOk;
+}
+
+int runSceneBake(const SceneOptions& o) {
+  Loaded l = load(o);
+  ScenePlan& p = l.part;
+  Plan todo;
+  todo.outDir = p.plan.outDir;
+  todo.device = p.plan.device;
+  int upToDate = 0;
+  for (const auto& t : p.tables) {
+    if (!o.force && statusOf(t) == Status::UpToDate) {
+      ++upToDate;
+      continue;
+    }
+    if (t.volume) todo.volumes.push_back(p.plan.volumes[t.index]);
+    else todo.jobs.push_back(p.plan.jobs[t.index]);
+    todo.extraStrings[t.path] = {{"brdf.hash", t.hash}, {"brdf.scene", p.scene}};
+  }
+  std::string label = "scene " + p.scene + (o.shards > 1 ? " (shard " + std::to_string(o.shard) + "/" +
+                                                               std::to_string(o.shards) + ")" : "");
+  if (todo.jobs.empty() && todo.volumes.empty()) {
+    std::cout << label << ": all " << upToDate << " table(s) up to date in " << p.plan.outDir << "/; nothing written\n";
+  } else {
+    std::vector<TableReport> reports = runPlan(todo);
+    std::cout << formatReport(reports);
+    std::cout << label << ": baked " << reports.size() << " table(s)";
+    if (upToDate) std::cout << ", " << upToDate << " up to date (not rewritten)";
+    std::cout << "\n";
+  }
+  std::vector<std::string> old = staleTables(l.whole);
+  if (!old.empty()) {
+    std::cout << (o.prune ? "removed, no longer needed by this scene:\n" : "no longer needed by this scene (--prune removes them):\n");
+    for (const auto& s : old) {
+      if (o.prune && ::unlink(s.c_str()) != 0)
+        throw Error(kExitIoErr, "--prune: cannot remove " + s + ": " + std::strerror(errno));
+      std::cout << "  " << s << "\n";
+    }
+  }
+  if (!o.stamp.empty()) {
+    std::string text = "# brdfbake " + label + ": the tables of the last successful bake\n";
+    std::error_code ec;
+    for (const auto& t : p.tables) text += fs::absolute(t.path, ec).string() + "\n";
+    fs::path parent = fs::path(o.stamp).parent_path();
+    if (!parent.empty()) fs::create_directories(parent, ec);
+    writeAtomically(o.stamp, text);
+  }
+  return kExitOk;
+}
+
+}  // namespace brdfbake

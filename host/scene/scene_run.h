@@ -1,0 +1,25 @@
+// `brdfbake plan SCENE` and `brdfbake bake SCENE`: print the plan, bake what changed.
+#pragma once
+#include <string>
+
+namespace brdfbake {
+
+struct SceneOptions {
+  std::string file;        // .toml manifest or .gltf/.glb
+  std::string outDir;      // -o: overrides the scene's output.dir
+  int shard = 1, shards = 1;
+  bool force = false;      // rebake every table
+  bool prune = false;      // remove tables of this scene that it no longer needs
+  bool list = false;       // plan: only the output paths, absolute, one per line
+  std::string stamp;       // bake: written (atomically) after a successful bake, listing the outputs
+  std::string device, cacheDir;
+};
+
+// Prints the plan: each table, why, its size and estimated cost, whether it is new, changed or up to
+// date; what was left out and why; tables of this scene that are no longer needed. Exit 0.
+int runScenePlan(const SceneOptions& o);
+// Bakes the tables that are new or changed (all with --force), says which are up to date, lists
+// (and with --prune removes) the stale ones. Writes nothing and says so when nothing changed.
+int runSceneBake(const SceneOptions& o);
+
+}  // namespace brdfbake
