@@ -1,0 +1,253 @@
+// Scenes (host/scene): the example manifests plan their expected tables; a second bake writes
+// nothing; editing one material rebakes only its tables; --force, --prune; bad manifests give
+// file:line:column messages and exit 65 (66 when missing) and write nothing; shards are
+// deterministic and cover the plan once; glTF files (written here) plan glTF's tables.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "common/errors.h"
+#include "scene/scene.h"
+#include "scene/scene_plan.h"
+
+namespace fs = std::filesystem;
+namespace {
+using namespace brdfbake;
+
+struct CmdResult {
+  int code;
+  std::string out;
+};
+CmdResult run(const std::string& args) {
+  std::string cmd = "'" BRDFBAKE_EXE "' " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+  int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+fs::path freshDir(const std::string& name) {
+  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_scene_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream f(p, std::ios::binary);
+  f << text;
+}
+std::string read(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+std::vector<std::string> lines(const std::string& s) {
+  std::vector<std::string> v;
+  std::stringstream ss(s);
+  for (std::string l; std::getline(ss, l);)
+    if (!l.empty()) v.push_back(l);
+  return v;
+}
+std::set<std::string> names(const std::vector<std::string>& paths) {
+  std::set<std::string> n;
+  for (const auto& p : paths) n.insert(fs::path(p).filename().string());
+  return n;
+}
+std::map<std::string, fs::file_time_type> mtimes(const fs::path& dir) {
+  std::map<std::string, fs::file_time_type> m;
+  for (const auto& e : fs::directory_iterator(dir)) m[e.path().filename().string()] = e.last_write_time();
+  return m;
+}
+const std::string kExamples = std::string(BRDFBAKE_SOURCE_DIR) + "/examples/scenes/";
+
+TEST(Scene, ExampleScenesPlanTheirTables) {
+  fs::path d = freshDir("examples");
+  CmdResult r = run("plan '" + kExamples + "pbr-desktop.toml' -o '" + d.string() + "' --list");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(names(lines(r.out)),
+            (std::set<std::string>{"splitsum_ggx_smith-correlated.exr", "albedo_ggx_smith-correlated.exr",
+                                   "albedo-avg_ggx_smith-correlated.exr", "splitsum_ggx_smith-correlated_f82-tint.exr",
+                                   "splitsum_ggx_smith-correlated_burley.exr",
+                                   "albedo_ggx_smith-correlated_dielectric.exr"}));
+  for (const auto& l : lines(r.out)) EXPECT_TRUE(fs::path(l).is_absolute()) << l;
+  r = run("plan '" + kExamples + "forward-mobile.toml' -o '" + d.string() + "' --list");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(names(lines(r.out)),
+            (std::set<std::string>{"albedo_ggx_smith-correlated.exr", "albedo-avg_ggx_smith-correlated.exr"}));
+  // the human plan says why, and what was left out
+  r = run("plan '" + kExamples + "forward-mobile.toml' -o '" + d.string() + "'");
+  EXPECT_NE(r.out.find("splitsum: image-based lighting is off"), std::string::npos) << r.out;
+  r = run("plan '" + kExamples + "pbr-desktop.toml' -o '" + d.string() + "'");
+  EXPECT_NE(r.out.find("material 'gold' adds no table"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("for water: image-based lighting (dielectric has no Schlick split"), std::string::npos) << r.out;
+}
+
+TEST(Scene, SecondBakeWritesNothingAndAnEditRebakesOnlyItsTables) {
+  fs::path d = freshDir("incremental");
+  fs::path scene = d / "scene.toml";
+  write(scene, read(kExamples + "pbr-desktop.toml"));
+  fs::path out = d / "tables";
+  CmdResult r = run("bake '" + scene.string() + "' -o '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  auto first = mtimes(out);
+  ASSERT_EQ(first.size(), 6u);
+  r = run("bake '" + scene.string() + "' -o '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("all 6 table(s) up to date"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("nothing written"), std::string::npos) << r.out;
+  EXPECT_EQ(mtimes(out), first);
+  // water's IOR changes: only its Fresnel-weighted albedo is rebaked
+  std::string text = read(scene);
+  text.replace(text.find("eta = 1.33"), 10, "eta = 1.5 ");
+  write(scene, text);
+  r = run("bake '" + scene.string() + "' -o '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("baked 1 table(s), 5 up to date"), std::string::npos) << r.out;
+  auto second = mtimes(out);
+  for (const auto& [name, t] : first)
+    if (name == "albedo_ggx_smith-correlated_dielectric.exr") EXPECT_NE(second[name], t) << name;
+    else EXPECT_EQ(second[name], t) << name;
+  // --force rebakes everything
+  r = run("bake '" + scene.string() + "' -o '" + out.string() + "' --force");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("baked 6 table(s)"), std::string::npos) << r.out;
+  // water becomes Schlick: its table is no longer needed, listed, then pruned
+  text = read(scene);
+  text.replace(text.find("fresnel = \"dielectric\""), 22, "fresnel = \"schlick\"   ");
+  text.replace(text.find("eta = 1.5"), 9, "f0 = 0.02");
+  write(scene, text);
+  r = run("plan '" + scene.string() + "' -o '" + out.string() + "'");
+  EXPECT_NE(r.out.find("no longer needed by this scene"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("albedo_ggx_smith-correlated_dielectric.exr"), std::string::npos) << r.out;
+  r = run("bake '" + scene.string() + "' -o '" + out.string() + "' --prune");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("removed, no longer needed"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out / "albedo_ggx_smith-correlated_dielectric.exr"));
+  EXPECT_EQ(mtimes(out).size(), 5u);
+}
+
+TEST(Scene, BadManifestsNameFileLineColumnAndWriteNothing) {
+  fs::path d = freshDir("bad");
+  struct Case {
+    std::string text, message;
+  } cases[] = {
+      {"[output]\ndri = \"x\"\n", "bad.toml:2:1: unknown key 'dri' in [output] (did you mean 'dir'?)"},
+      {"[[material]]\nname = \"a\"\nndf = \"ggz\"\n", "bad.toml:3:7: unknown NDF 'ggz' (did you mean 'ggx'?)"},
+      {"[[material]]\nname = \"a\"\n[[material]]\nname = \"a\"\n", "duplicate material name 'a' (first at"},
+      {"[[material]]\nname = \"a\"\nf0 = 2\n", "bad.toml:3:6: material 'a': f0 must be in [0, 1], got 2"},
+      {"[[material]]\nname = \"a\"\nroughness = \"high\"\n", "bad.toml:3:13: material.roughness must be a number"},
+      {"[[material]\nname = \"a\"\n", "bad.toml:1:12: TOML syntax:"},
+      {"[output]\ngrid = \"node\"\n[[material]]\nname = \"a\"\ngaf = \"none\"\n",
+       "material 'a': image-based lighting (split-sum DFG) needs a table that cannot be built"},
+      {"[output.size]\nsplitsum = 0\n[[material]]\nname = \"a\"\n", "output.size.splitsum must be an integer in 1..8192"},
+      {"[lighting]\nibl = 1\n[[material]]\nname = \"a\"\n", "bad.toml:2:7: lighting.ibl must be true or false"},
+      {"[[material]]\nndf = \"ggx\"\n", "material 1 has no name"},
+      {"[scene]\nname = \"x\"\n", "the scene has no materials"},
+      {"[[material]]\nname = \"a\"\nbrdf3d = true\nroughness = [0.1, 0.5]\n", "brdf3d = true needs one roughness"},
+      {"[[material]]\nname = \"a\"\ndiffuse = \"lambert\"\nsigma = 0.3\n", "material.sigma: only diffuse = \"oren-nayar\""},
+  };
+  fs::path out = d / "out";
+  for (const Case& c : cases) {
+    write(d / "bad.toml", c.text);
+    for (const char* verb : {"plan", "bake"}) {
+      CmdResult r = run(std::string(verb) + " '" + (d / "bad.toml").string() + "' -o '" + out.string() + "'");
+      EXPECT_EQ(r.code, 65) << c.text << "\n" << r.out;
+      EXPECT_NE(r.out.find(c.message), std::string::npos) << c.text << "\n" << r.out;
+      EXPECT_FALSE(fs::exists(out)) << c.text;
+    }
+  }
+  CmdResult r = run("bake '" + (d / "missing.toml").string() + "'");
+  EXPECT_EQ(r.code, 66) << r.out;
+  r = run("plan '" + kExamples + "pbr-desktop.toml' --shard 4/3");
+  EXPECT_EQ(r.code, 64) << r.out;
+  EXPECT_NE(r.out.find("--shard must be I/N with 1 <= I <= N"), std::string::npos) << r.out;
+  r = run("bake '" + kExamples + "pbr-desktop.toml' --table albedo");
+  EXPECT_EQ(r.code, 64) << r.out;
+  EXPECT_NE(r.out.find("unknown option '--table'"), std::string::npos) << r.out;
+}
+
+// Shards: the same split every time, every table in exactly one part, loads near-equal (no part
+// above the mean by more than the costliest table).
+TEST(Scene, ShardsAreDeterministicAndCoverThePlanOnce) {
+  Scene s = readScene(kExamples + "pbr-desktop.toml");
+  ScenePlan whole = planScene(s, "out");
+  for (int n : {1, 2, 3, 4, 7}) {
+    std::multiset<std::string> seen;
+    double total = 0, costliest = 0;
+    for (const auto& t : whole.tables) {
+      total += t.cost;
+      costliest = std::max(costliest, t.cost);
+    }
+    for (int i = 1; i <= n; ++i) {
+      ScenePlan a = shardOf(whole, i, n), b = shardOf(whole, i, n);
+      ASSERT_EQ(a.tables.size(), b.tables.size());
+      double load = 0;
+      for (size_t k = 0; k < a.tables.size(); ++k) {
+        EXPECT_EQ(a.tables[k].path, b.tables[k].path);
+        seen.insert(a.tables[k].path);
+        load += a.tables[k].cost;
+      }
+      EXPECT_EQ(a.plan.jobs.size() + a.plan.volumes.size(), a.tables.size());
+      EXPECT_LE(load, total / n + costliest + 1e-12) << i << "/" << n;
+    }
+    std::multiset<std::string> all;
+    for (const auto& t : whole.tables) all.insert(t.path);
+    EXPECT_EQ(seen, all) << n;
+  }
+  EXPECT_THROW(shardOf(whole, 0, 2), Error);
+}
+
+// glTF: materials become GGX + height-correlated Smith + Schlick (glTF 2.0 appendix B); IOR and
+// specular change F0 only (the same split-sum table); a .glb and a .gltf plan the same.
+TEST(Scene, GltfFilesPlanGltfTables) {
+  fs::path d = freshDir("gltf");
+  std::string json = R"({"asset":{"version":"2.0"},"extensionsUsed":["KHR_materials_ior","KHR_materials_sheen"],
+    "materials":[{"name":"paint","pbrMetallicRoughness":{"roughnessFactor":0.4}},
+                 {"name":"glass","extensions":{"KHR_materials_ior":{"ior":1.45}}},
+                 {"name":"velvet","extensions":{"KHR_materials_sheen":{"sheenRoughnessFactor":0.5}}}]})";
+  write(d / "model.gltf", json);
+  // GLB: header, then one JSON chunk padded with spaces to 4 bytes
+  std::string body = json;
+  while (body.size() % 4) body += ' ';
+  auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  write(d / "model.glb", "glTF" + u32(2) + u32(static_cast<uint32_t>(12 + 8 + body.size())) +
+                             u32(static_cast<uint32_t>(body.size())) + "JSON" + body);
+  for (const char* file : {"model.gltf", "model.glb"}) {
+    CmdResult r = run("plan '" + (d / file).string() + "' -o '" + (d / "out").string() + "' --list");
+    ASSERT_EQ(r.code, 0) << file << "\n" << r.out;
+    EXPECT_EQ(names(lines(r.out)), (std::set<std::string>{"splitsum_ggx_smith-correlated.exr"})) << file;
+    r = run("plan '" + (d / file).string() + "' -o '" + (d / "out").string() + "'");
+    EXPECT_NE(r.out.find("for paint: image-based lighting"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("KHR_materials_ior: ior 1.45"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("KHR_materials_sheen needs the Charlie sheen tables"), std::string::npos) << r.out;
+  }
+  write(d / "broken.gltf", "{\"asset\":{\"version\":\"2.0\"},\"materials\":[{\"name\":\"m\"");
+  CmdResult r = run("plan '" + (d / "broken.gltf").string() + "'");
+  EXPECT_EQ(r.code, 65) << r.out;
+  EXPECT_NE(r.out.find("not a glTF 2.0 file tinygltf can parse"), std::string::npos) << r.out;
+  // no materials: glTF's default material
+  write(d / "empty.gltf", R"({"asset":{"version":"2.0"}})");
+  r = run("plan '" + (d / "empty.gltf").string() + "' --list");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(names(lines(r.out)), (std::set<std::string>{"splitsum_ggx_smith-correlated.exr"}));
+}
+
+TEST(Scene, ClosestNameSuggestsTypos) {
+  EXPECT_EQ(closestName("smith-corelated", gafNames()), "smith-correlated");
+  EXPECT_EQ(closestName("precison", {"dir", "precision", "grid", "size"}), "precision");
+  EXPECT_EQ(closestName("zzzzzzzz", {"dir", "grid"}), "");
+}
+
+}  // namespace
