@@ -244,6 +244,28 @@ TEST(Scene, GltfFilesPlanGltfTables) {
   EXPECT_EQ(names(lines(r.out)), (std::set<std::string>{"splitsum_ggx_smith-correlated.exr"}));
 }
 
+// The fuzzer's corpus (tools/fuzz_manifest.sh, libFuzzer): every input parses or is rejected with
+// a message (brdfbake::Error), never anything else; crashers found while fuzzing stay in it.
+TEST(Scene, FuzzCorpusParsesOrIsRejected) {
+  fs::path corpus = fs::path(BRDFBAKE_SOURCE_DIR) / "tests" / "fuzz" / "corpus";
+  size_t files = 0, parsed = 0;
+  for (const auto& e : fs::directory_iterator(corpus)) {
+    ++files;
+    try {
+      parseManifest(read(e.path()), e.path().filename().string());
+      ++parsed;
+    } catch (const Error& err) {
+      EXPECT_EQ(err.code(), kExitDataErr) << e.path() << ": " << err.what();
+      EXPECT_NE(std::string(err.what()).find(e.path().filename().string() + ":"), std::string::npos)
+          << e.path() << ": the message names no position: " << err.what();
+    } catch (const std::exception& x) {
+      ADD_FAILURE() << e.path() << ": not a brdfbake::Error: " << x.what();
+    }
+  }
+  EXPECT_GE(files, 3u);
+  EXPECT_GE(parsed, 2u);  // the example scenes at least
+}
+
 TEST(Scene, ClosestNameSuggestsTypos) {
   EXPECT_EQ(closestName("smith-corelated", gafNames()), "smith-correlated");
   EXPECT_EQ(closestName("precison", {"dir", "precision", "grid", "size"}), "precision");

@@ -111,4 +111,14 @@ Scene readGltfScene(const std::string& path) {
   return s;
 }
 
+// A scene file by its extension: .gltf/.glb, else a TOML manifest.
+Scene readScene(const std::string& path) {
+  auto ends = [&](const std::string& e) {
+    return path.size() >= e.size() && std::equal(e.rbegin(), e.rend(), path.rbegin(),
+                                                 [](char a, char b) { return std::tolower(a) == std::tolower(b); });
+  };
+  if (ends(".gltf") || ends(".glb")) return readGltfScene(path);
+  return readManifest(path);
+}
+
 }  // namespace brdfbake

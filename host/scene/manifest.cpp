@@ -231,10 +231,62 @@ SceneMaterial readMaterial(const Reader& r, const toml::table& t, int index) {
   return m;
 }
 
+// TOML 1.0 allows characters outside ASCII only inside strings and comments. toml++ 3.3 (Debian's)
+// reaches an "unreachable" branch (undefined behaviour) when it classifies some of them as
+// whitespace elsewhere (found by fuzzing: U+00A1..U+0499 and U+FC96..U+FEFE), so they are rejected
+// here first, with the same verdict TOML gives and a position.
+void screenNonAscii(const std::string& text, const std::string& file) {
+  enum { Normal, Comment, Basic, Literal, MlBasic, MlLiteral } st = Normal;
+  int line = 1, col = 0;
+  size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // a UTF-8 byte order mark
+  for (size_t i = start; i < text.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(text[i]);
+    ++col;
+    auto at = [&](const char* s) { return text.compare(i, std::strlen(s), s) == 0; };
+    if (c == '\n') {
+      if (st == Comment || st == Basic || st == Literal) st = Normal;
+      ++line;
+      col = 0;
+      continue;
+    }
+    if (c >= 0x80 && (st == Normal)) {
+      throw Error(kExitDataErr, file + ":" + std::to_string(line) + ":" + std::to_string(col) +
+                                    ": TOML syntax: a character outside ASCII is allowed only inside a string or a "
+                                    "comment");
+    }
+    switch (st) {
+      case Normal:
+        if (c == '#') st = Comment;
+        else if (at("\"\"\"")) { st = MlBasic; i += 2; col += 2; }
+        else if (at("'''")) { st = MlLiteral; i += 2; col += 2; }
+        else if (c == '"') st = Basic;
+        else if (c == '\'') st = Literal;
+        break;
+      case Basic:
+        if (c == '\\') { ++i; ++col; }
+        else if (c == '"') st = Normal;
+        break;
+      case MlBasic:
+        if (c == '\\') { ++i; ++col; }
+        else if (at("\"\"\"")) { st = Normal; i += 2; col += 2; }
+        break;
+      case Literal:
+        if (c == '\'') st = Normal;
+        break;
+      case MlLiteral:
+        if (at("'''")) { st = Normal; i += 2; col += 2; }
+        break;
+      default:
+        break;
+    }
+  }
+}
+
 }  // namespace
 
 Scene parseManifest(const std::string& text, const std::string& name) {
   Reader r{name};
+  screenNonAscii(text, name);
   toml::table root;
   try {
     root = toml::parse(text, name);
@@ -285,15 +337,6 @@ Scene readManifest(const std::string& path) {
     s.name = base.substr(0, base.find_last_of('.'));
   }
   return s;
-}
-
-Scene readScene(const std::string& path) {
-  auto ends = [&](const std::string& e) {
-    return path.size() >= e.size() && std::equal(e.rbegin(), e.rend(), path.rbegin(),
-                                                 [](char a, char b) { return std::tolower(a) == std::tolower(b); });
-  };
-  if (ends(".gltf") || ends(".glb")) return readGltfScene(path);
-  return readManifest(path);
 }
 
 }  // namespace brdfbake
