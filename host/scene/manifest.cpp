@@ -231,10 +231,11 @@ SceneMaterial readMaterial(const Reader& r, const toml::table& t, int index) {
   return m;
 }
 
-// TOML 1.0 allows characters outside ASCII only inside strings and comments. toml++ 3.3 (Debian's)
-// reaches an "unreachable" branch (undefined behaviour) when it classifies some of them as
-// whitespace elsewhere (found by fuzzing: U+00A1..U+0499 and U+FC96..U+FEFE), so they are rejected
-// here first, with the same verdict TOML gives and a position.
+// TOML 1.0 allows characters outside ASCII only inside strings and comments, no control characters
+// but tab (and CR before LF), and only UTF-8. toml++ 3.3 (Debian's) reaches an "unreachable" branch
+// (undefined behaviour) when it classifies some non-ASCII characters as whitespace (found by
+// fuzzing: U+00A1..U+0499 and U+FC96..U+FEFE, outside strings, or after a control character in
+// one), so such input is rejected here first, with the verdict TOML gives and a position.
 void screenNonAscii(const std::string& text, const std::string& file) {
   enum { Normal, Comment, Basic, Literal, MlBasic, MlLiteral } st = Normal;
   int line = 1, col = 0;
@@ -248,6 +249,21 @@ void screenNonAscii(const std::string& text, const std::string& file) {
       ++line;
       col = 0;
       continue;
+    }
+    if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7F)
+      throw Error(kExitDataErr, file + ":" + std::to_string(line) + ":" + std::to_string(col) +
+                                    ": TOML syntax: control character " + std::to_string(c) + " (TOML allows none but tab)");
+    if (c == '\r' && (i + 1 >= text.size() || text[i + 1] != '\n'))
+      throw Error(kExitDataErr, file + ":" + std::to_string(line) + ":" + std::to_string(col) +
+                                    ": TOML syntax: a carriage return not followed by a line feed");
+    if (c >= 0x80) {
+      // one UTF-8 sequence: its length from the lead byte, continuation bytes 10xxxxxx
+      int len = c >= 0xF0 && c <= 0xF4 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 && c <= 0xDF ? 2 : 0;
+      bool ok = len > 0 && i + len <= text.size();
+      for (int k = 1; ok && k < len; ++k) ok = (static_cast<unsigned char>(text[i + k]) & 0xC0) == 0x80;
+      if (!ok)
+        throw Error(kExitDataErr, file + ":" + std::to_string(line) + ":" + std::to_string(col) +
+                                      ": not UTF-8 (TOML files are UTF-8)");
     }
     if (c >= 0x80 && (st == Normal)) {
       throw Error(kExitDataErr, file + ":" + std::to_string(line) + ":" + std::to_string(col) +
