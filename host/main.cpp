@@ -8,7 +8,9 @@
 #include <iostream>
 
 #include "bake/bake.h"
+#include "bake/output_set.h"
 #include "bake/volume.h"
+#include "shader/shader_gen.h"
 #include "cl/device.h"
 #include "cli/args.h"
 #include "common/errors.h"
@@ -43,6 +45,12 @@ int main(int argc, char** argv) {
       case Command::Kind::SceneBake:
         if (!cmd.scene.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.scene.cacheDir.c_str(), 1);
         return runSceneBake(cmd.scene);
+      case Command::Kind::Shader: {
+        std::string code = shaderForFiles(cmd.files, cmd.hlsl ? ShaderLang::Hlsl : ShaderLang::Glsl);
+        if (cmd.file.empty()) std::cout << code;
+        else writeTextFile(cmd.file, code);
+        return kExitOk;
+      }
       case Command::Kind::Sample:
         std::cout << sampleReport(cmd.file, cmd.at);
         return kExitOk;

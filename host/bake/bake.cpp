@@ -11,6 +11,7 @@
 
 #include "bake/ashikhmin_textures.h"
 #include "bake/merl_bake.h"
+#include "bake/interp_estimate.h"
 #include "bake/output_set.h"
 #include "bake/volume.h"
 #include "cl/device.h"
@@ -275,6 +276,10 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   }
   if (axes == "mu,r") img.v2f["brdf.mu.range"] = {0.0f, 1.0f};
   img.floats["brdf.error"] = static_cast<float>(bound);
+  // what the resolution costs a bilinear lookup (estimated from the table; brdf3d tables measure it)
+  InterpEstimate ie = estimateInterpolation(img, job.nodeGrid);
+  img.floats["brdf.interp-error"] = static_cast<float>(ie.total());
+  img.floats["brdf.interp-error.interior"] = static_cast<float>(ie.interior);
   return img;
 }
 

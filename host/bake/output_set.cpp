@@ -228,4 +228,35 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files)
   if (!failure.empty()) throw Error(code, failure + "; nothing was written");
 }
 
+void writeTextFile(const std::string& path, const std::string& text) {
+  std::string tmp = temporaryPathFor(path);
+  int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw Error(kExitCantCreat, "cannot create " + path + ": " + errnoText(errno));
+  size_t done = 0;
+  bool ok = true;
+  while (ok && done < text.size()) {
+    ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    ok = n > 0;
+    if (ok) done += static_cast<size_t>(n);
+  }
+  int err = ok ? 0 : errno;
+  if (ok && ::fsync(fd) != 0) {
+    ok = false;
+    err = errno;
+  }
+  if (::close(fd) != 0 && ok) {
+    ok = false;
+    err = errno;
+  }
+  if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) {
+    ok = false;
+    err = errno;
+  }
+  if (!ok) {
+    ::unlink(tmp.c_str());
+    throw Error(kExitIoErr, "cannot write " + path + ": " + errnoText(err));
+  }
+}
+
 }  // namespace brdfbake

@@ -35,4 +35,8 @@ void guardInterrupts(const std::string& what);
 // nothing is left behind and files that were there before are unchanged.
 void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files);
 
+// One text file (generated shader code, a bake's stamp), written through a synced temporary and a
+// rename: the file is whole or untouched. Error(kExitCantCreat) / Error(kExitIoErr) naming it.
+void writeTextFile(const std::string& path, const std::string& text);
+
 }  // namespace brdfbake

@@ -34,6 +34,8 @@ std::string usageText() {
          "                                what is up to date; [-o DIR] [--shard I/N] [--list: output paths only]\n"
          "  brdfbake bake SCENE           bake what is new or changed; [-o DIR] [--shard I/N] [--force] [--prune]\n"
          "                                [--stamp FILE] [--device TEXT] [--cache-dir DIR]\n"
+         "  brdfbake shader --lang glsl|hlsl FILE... [-o OUT]\n"
+         "                                lookup functions for the tables (grid, axes, atlas and channels built in)\n"
          "  brdfbake devices              list OpenCL platforms and devices\n"
          "  brdfbake info FILE.exr        print a table's metadata and value range\n"
          "  brdfbake sample FILE.exr --at A,B,C\n"
@@ -166,6 +168,30 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     return cmd;
   }
   if (parseSceneCommand(args, cmd)) return cmd;
+  if (first == "shader") {
+    // shader --lang glsl|hlsl FILE... [-o OUT]
+    cmd.kind = Command::Kind::Shader;
+    bool langGiven = false;
+    for (size_t k = 1; k < args.size(); ++k) {
+      if (args[k] == "--lang") {
+        if (langGiven || k + 1 >= args.size()) throw Error(kExitUsage, "--lang: give it once, glsl or hlsl");
+        langGiven = true;
+        const std::string& l = args[++k];
+        if (l != "glsl" && l != "hlsl") throw Error(kExitUsage, "--lang must be glsl or hlsl, got '" + l + "'");
+        cmd.hlsl = l == "hlsl";
+      } else if (args[k] == "-o" || args[k] == "--output") {
+        if (!cmd.file.empty() || k + 1 >= args.size()) throw Error(kExitUsage, args[k] + ": give one output file, once");
+        cmd.file = args[++k];
+      } else if (!args[k].empty() && args[k][0] == '-') {
+        throw Error(kExitUsage, "shader: unknown option '" + args[k] + "'; valid: --lang glsl|hlsl, -o FILE");
+      } else {
+        cmd.files.push_back(args[k]);
+      }
+    }
+    if (!langGiven) throw Error(kExitUsage, "shader: --lang glsl or --lang hlsl is required");
+    if (cmd.files.empty()) throw Error(kExitUsage, "shader: expected one or more table files (brdfbake shader --lang glsl FILE...)");
+    return cmd;
+  }
   if (first == "sample") {
     // sample FILE --at A,B,C
     if (args.size() != 4 || args[2] != "--at")
@@ -211,7 +237,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     cmd.kind = Command::Kind::Convergence;
   } else if (first.rfind("-", 0) != 0) {
     throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, plan, energy, verify, stress, convergence, "
-                            "devices, info, sample (see --help)");
+                            "devices, info, sample, shader (see --help)");
   }
   // `brdfbake [options]` is `brdfbake bake [options]`: every bake option works at the top level.
   std::vector<std::string> seen;  // scalar options given so far: each at most once

@@ -45,11 +45,13 @@ struct BakeRequest {
 };
 
 struct Command {
-  enum class Kind { Bake, Energy, Verify, Stress, Convergence, Devices, Info, Sample, ScenePlan, SceneBake, Help, Version } kind = Kind::Bake;
+  enum class Kind { Bake, Energy, Verify, Stress, Convergence, Devices, Info, Sample, ScenePlan, SceneBake, Shader, Help, Version } kind = Kind::Bake;
   BakeRequest bake;
   std::string file;  // for Info, Sample
   std::array<double, 3> at{};  // Sample: --at, in degrees
   SceneOptions scene;          // ScenePlan, SceneBake
+  std::vector<std::string> files;  // Shader: the tables
+  bool hlsl = false;               // Shader: --lang hlsl (else glsl)
 };
 
 constexpr int kMinSize = 1;

@@ -186,9 +186,10 @@ double trilinear(const Brdf3dSpec& s, const std::vector<float>& plane, glm::dvec
 }
 
 InterpError interpolationError(const Brdf3dSpec& s, int samples) {
-  // Points of the (2, 3, 5) Halton sequence over the table's covered box (between the first and
-  // last samples of each axis, where a lookup interpolates rather than clamps); the 8 corner
-  // values are the exact BRDF at the grid points, which the table holds to float precision.
+  // Points of the (2, 3, 5) Halton sequence spread over each axis' whole range (in the table's own
+  // coordinate: sqrt(theta_h) for MERL's index), where a shader may look up: on texel-center grids
+  // that includes the half texel at each end, where the lookup clamps. The trilinear lookup uses
+  // the exact BRDF at the grid points, which the table holds to float precision.
   auto radical = [](int i, int b) {
     double f = 1, r = 0;
     for (; i > 0; i /= b) {
@@ -198,18 +199,23 @@ InterpError interpolationError(const Brdf3dSpec& s, int samples) {
     return r;
   };
   int n[3] = {s.nx, s.ny, s.nz};
+  auto ax = s.axes();
   InterpError e;
   double sum2 = 0, sum2Interior = 0;
   int interior = 0;
   const double cosInterior = std::cos(kInteriorThetaDeg * kPi / 180);
   for (int k = 1; k <= samples; ++k) {
-    glm::dvec3 idx(radical(k, 2) * (n[0] - 1), radical(k, 3) * (n[1] - 1), radical(k, 5) * (n[2] - 1));
+    double t[3] = {radical(k, 2), radical(k, 3), radical(k, 5)};
+    glm::dvec3 ang;
+    for (int a = 0; a < 3; ++a)
+      ang[a] = ax[a].hi * (a == 0 && s.param == Brdf3dParam::Rusinkiewicz && s.thetaHSqrt ? t[a] * t[a] : t[a]);
     double lookup = 0;
     int lo[3];
     double w[3];
     for (int a = 0; a < 3; ++a) {
-      lo[a] = std::min(static_cast<int>(std::floor(idx[a])), std::max(n[a] - 2, 0));
-      w[a] = n[a] > 1 ? idx[a] - lo[a] : 0.0;
+      double idx = std::clamp(texelIndex(s, a, ang[a]), 0.0, n[a] - 1.0);
+      lo[a] = std::min(static_cast<int>(std::floor(idx)), std::max(n[a] - 2, 0));
+      w[a] = n[a] > 1 ? idx - lo[a] : 0.0;
     }
     for (int c = 0; c < 8; ++c) {
       int dx = c & 1, dy = (c >> 1) & 1, dz = (c >> 2) & 1;
@@ -217,18 +223,6 @@ InterpError interpolationError(const Brdf3dSpec& s, int samples) {
       if (wc != 0)
         lookup += wc * hostBrdf(s, texelDirections(s, std::min(lo[0] + dx, n[0] - 1), std::min(lo[1] + dy, n[1] - 1),
                                                    std::min(lo[2] + dz, n[2] - 1)), 0);
-    }
-    // the exact BRDF at the point those indices name
-    glm::dvec3 ang;
-    for (int a = 0; a < 3; ++a) {
-      double t;
-      switch (s.grid) {
-        case Brdf3dGrid::TexelCenter: t = (idx[a] + 0.5) / n[a]; break;
-        case Brdf3dGrid::Node: t = n[a] > 1 ? idx[a] / (n[a] - 1) : 0.0; break;
-        default: t = idx[a] / n[a];
-      }
-      if (a == 0 && s.param == Brdf3dParam::Rusinkiewicz && s.thetaHSqrt) t = t * t;
-      ang[a] = s.axes()[a].hi * t;
     }
     Directions d = s.param == Brdf3dParam::Angles ? fromAngles(ang.x, ang.y, ang.z) : fromRusinkiewicz(ang.x, ang.y, ang.z);
     double exact = hostBrdf(s, d, 0);

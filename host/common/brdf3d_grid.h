@@ -73,9 +73,10 @@ double hostBrdf(const Brdf3dSpec& s, const Directions& d, int c);
 // texel indices (clamped to the table; z wraps on nothing: phi ends at pi).
 double trilinear(const Brdf3dSpec& s, const std::vector<float>& plane, glm::dvec3 index);
 
-// Interpolation error of the spec's resolution: at `samples` points spread over the table's
-// domain (a fixed low-discrepancy set, so the figure is reproducible), the trilinear lookup of the
-// exact grid values against the exact BRDF, relative to max(1, |f|). Host-side, in double.
+// Interpolation error of the spec's resolution: at `samples` points spread over each axis' whole
+// range (a fixed low-discrepancy set, so the figure is reproducible; on texel-center grids the half
+// texel at each end, where a lookup clamps, included), the trilinear lookup of the exact grid
+// values against the exact BRDF, relative to max(1, |f|). Host-side, in double.
 struct InterpError {
   double max = 0, rms = 0;
   glm::dvec3 worstAt{0.0};  // angles (radians) of the worst point

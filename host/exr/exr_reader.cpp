@@ -110,7 +110,9 @@ std::vector<std::string> tableChannels(const std::string& path, const Imf::Heade
 
 }  // namespace
 
-TableImage readTableExr(const std::string& path) {
+namespace {
+// Size, channels and every table attribute of an open file; planes only when `pixels`.
+TableImage readTable(const std::string& path, bool pixels) {
   std::unique_ptr<Imf::InputFile> file = openExr(path);
   const Imf::Header& h = file->header();
   const Window win = dataWindowOf(path, h);
@@ -119,7 +121,7 @@ TableImage readTableExr(const std::string& path) {
   img.width = win.width;
   img.height = win.height;
   img.channels = tableChannels(path, h);
-  img.planes = readPlanes(path, *file, win, img.channels);
+  if (pixels) img.planes = readPlanes(path, *file, win, img.channels);
 
   for (Imf::Header::ConstIterator it = h.begin(); it != h.end(); ++it) {
     const std::string name = it.name();
@@ -135,6 +137,10 @@ TableImage readTableExr(const std::string& path) {
   }
   return img;
 }
+}  // namespace
+
+TableImage readTableExr(const std::string& path) { return readTable(path, true); }
+TableImage readTableExrHeader(const std::string& path) { return readTable(path, false); }
 
 bool tableExrIsHalf(const std::string& path) {
   std::unique_ptr<Imf::InputFile> file = openExr(path);

@@ -65,6 +65,9 @@ std::string temporaryPathFor(const std::string& path);
 // unreadable file, or one that has none of the channels R, G, B, A.
 TableImage readTableExr(const std::string& path);
 
+// readTableExr without the pixels: size, channels and attributes (planes empty). Throws likewise.
+TableImage readTableExrHeader(const std::string& path);
+
 // One string attribute of an EXR's header, read without its pixels; nullopt when the file is
 // missing, not a readable EXR, or has no such string attribute. (Incremental bakes read brdf.hash.)
 std::optional<std::string> readExrStringAttribute(const std::string& path, const std::string& name);

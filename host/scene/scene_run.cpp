@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "bake/bake.h"
+#include "bake/output_set.h"
 #include "common/errors.h"
 #include "exr/table_file.h"
 #include "scene/scene_plan.h"
@@ -66,19 +67,6 @@ std::string fmtSeconds(double s) {
   char b[32];
   std::snprintf(b, sizeof b, s < 0.1 ? "%.3f" : "%.1f", s);
   return b;
-}
-
-// Writes `text` to `path` through a temporary and a rename.
-void writeAtomically(const std::string& path, const std::string& text) {
-  std::string tmp = temporaryPathFor(path);
-  int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) throw Error(kExitCantCreat, "cannot create " + path + ": " + std::strerror(errno));
-  bool ok = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) && ::fsync(fd) == 0;
-  ok = (::close(fd) == 0) && ok;
-  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    ::unlink(tmp.c_str());
-    throw Error(kExitIoErr, "cannot write " + path);
-  }
 }
 
 }  // namespace
@@ -182,7 +170,7 @@ int runSceneBake(const SceneOptions& o) {
     for (const auto& t : p.tables) text += fs::absolute(t.path, ec).string() + "\n";
     fs::path parent = fs::path(o.stamp).parent_path();
     if (!parent.empty()) fs::create_directories(parent, ec);
-    writeAtomically(o.stamp, text);
+    writeTextFile(o.stamp, text);
   }
   return kExitOk;
 }

@@ -1,0 +1,20 @@
+// The interpolation error a 2D (or 1D) table's resolution costs a bilinear lookup, estimated from
+// the table itself: inside, the leading term of linear interpolation's error, h^2/8 |f''| per axis,
+// from second differences (the error is largest at cell centres); at the edges of a texel-center
+// table the lookup clamps within half a texel of the edge, which costs about half the first
+// difference there. Both counted twice, a margin. Relative to max(1, |value|), every channel. An
+// estimate, not a bound: the tests compare it with lookups against the reference (tests/gl_test.cpp).
+#pragma once
+#include "formats/table_image.h"
+
+namespace brdfbake {
+
+struct InterpEstimate {
+  double interior = 0;  // second-difference term
+  double edge = 0;      // texel-center clamp term (0 on node grids)
+  double total() const { return interior > edge ? interior : edge; }
+};
+
+InterpEstimate estimateInterpolation(const TableImage& img, bool nodeGrid);
+
+}  // namespace brdfbake

@@ -1,0 +1,311 @@
+// A real graphics pipeline: a headless OpenGL ES 3.1 context through EGL on Mesa's software
+// rasteriser (llvmpipe), the tables uploaded as float textures as a renderer would, the GLSL that
+// `brdfbake shader` generates compiled into a compute shader, thousands of random points sampled
+// through texture filtering (the hardware path) and texelFetch (the exact path), read back and
+// compared (1) with a bilinear lookup of the same texels on the host, (2) with 8-bit filter weights
+// emulated on the host (what NVIDIA's hardware documents), and (3) with the independent reference:
+// the error must stay within what the file predicts, brdf.error + brdf.interp-error. No EGL or no
+// GLES 3.1: the test fails (CI installs Mesa's EGL).
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GLES3/gl31.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <random>
+
+#include "common/brdf3d_grid.h"
+#include "bake/volume.h"
+#include "common/models.h"
+#include "exr/table_file.h"
+#include "reference/reference.h"
+#include "shader/shader_gen.h"
+
+namespace fs = std::filesystem;
+namespace {
+using namespace brdfbake;
+
+struct Gl {
+  EGLDisplay display = EGL_NO_DISPLAY;
+  EGLContext context = EGL_NO_CONTEXT;
+  std::string problem;
+  Gl() {
+    auto getDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    if (!getDisplay) { problem = "no eglGetPlatformDisplayEXT"; return; }
+    display = getDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLint major = 0, minor = 0;
+    if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor)) {
+      problem = "no EGL surfaceless display (install libegl-mesa0 and libgl1-mesa-dri)";
+      return;
+    }
+    eglBindAPI(EGL_OPENGL_ES_API);
+    EGLint cfgAttr[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_NONE};
+    EGLConfig cfg = nullptr;
+    EGLint n = 0;
+    eglChooseConfig(display, cfgAttr, &cfg, 1, &n);
+    EGLint ctxAttr[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 1, EGL_NONE};
+    context = eglCreateContext(display, n ? cfg : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, ctxAttr);
+    if (context == EGL_NO_CONTEXT || !eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+      problem = "no OpenGL ES 3.1 context";
+      return;
+    }
+    const char* ext = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
+    if (!ext || !std::strstr(ext, "GL_OES_texture_float_linear")) problem = "no GL_OES_texture_float_linear";
+  }
+};
+Gl& gl() {
+  static Gl g;
+  return g;
+}
+
+fs::path bakeDir() {
+  static fs::path d = [] {
+    fs::path dir = fs::path(testing::TempDir()) / ("brdfbake_gl_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    const std::string exe = std::string("'") + BRDFBAKE_EXE + "' ";
+    for (std::string args : {"--size 24 --table splitsum,albedo,albedo-avg,kp -o '" + (dir / "tc").string() + "'",
+                             "--size 17 --grid node --table splitsum,albedo -o '" + (dir / "node").string() + "'",
+                             "--size 20 --half --table splitsum -o '" + (dir / "half").string() + "'",
+                             "--table brdf3d --size 20,18,9 --roughness 0.5 --value f-cos -o '" + (dir / "vol").string() + "'",
+                             "--table brdf3d --param rusinkiewicz --theta-h sqrt --grid node --size 16,14,10 --roughness 0.6 -o '" +
+                                 (dir / "rus").string() + "'"})
+      EXPECT_EQ(std::system((exe + args + " > /dev/null").c_str()), 0) << args;
+    return dir;
+  }();
+  return d;
+}
+
+// Compiles `src` as a compute shader; the build log on failure.
+GLuint program(const std::string& src, std::string* log) {
+  GLuint sh = glCreateShader(GL_COMPUTE_SHADER);
+  const char* p = src.c_str();
+  glShaderSource(sh, 1, &p, nullptr);
+  glCompileShader(sh);
+  GLint ok = 0;
+  glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
+  char buf[8192];
+  if (!ok) {
+    glGetShaderInfoLog(sh, sizeof buf, nullptr, buf);
+    *log = buf;
+    return 0;
+  }
+  GLuint prog = glCreateProgram();
+  glAttachShader(prog, sh);
+  glLinkProgram(prog);
+  glGetProgramiv(prog, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    glGetProgramInfoLog(prog, sizeof buf, nullptr, buf);
+    *log = buf;
+    return 0;
+  }
+  return prog;
+}
+
+// The table as a texture: RGBA32F (RGBA16F for a HALF file: the same values), linear, clamped.
+GLuint upload(const TableImage& t, bool half) {
+  std::vector<float> px(static_cast<size_t>(t.width) * t.height * 4, 1.0f);
+  for (size_t i = 0; i < px.size() / 4; ++i)
+    for (size_t c = 0; c < 3 && c < t.planes.size(); ++c) px[i * 4 + c] = t.planes[c][i];
+  GLuint tex;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glTexStorage2D(GL_TEXTURE_2D, 1, half ? GL_RGBA16F : GL_RGBA32F, t.width, t.height);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, t.width, t.height, GL_RGBA, GL_FLOAT, px.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return tex;
+}
+
+// Runs the generated lookups of `file` at `points` (x, y, z, unused): per point, the hardware
+// lookup and the exact one, RGBA each.
+std::vector<float> sampleOnGpu(const std::string& file, const TableImage& t, bool half,
+                               const std::vector<float>& points, int dims) {
+  std::string P = shaderPrefix(file);
+  std::string call = dims == 1 ? "p.x" : dims == 2 ? "p.x, p.y" : "p.x, p.y, p.z";
+  std::string src = "#version 310 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n" +
+                    shaderForTable(file, t, ShaderLang::Glsl) +
+                    "layout(local_size_x = 64) in;\n"
+                    "layout(std430, binding = 0) readonly buffer In { vec4 pts[]; };\n"
+                    "layout(std430, binding = 1) writeonly buffer Out { vec4 res[]; };\n"
+                    "uniform sampler2D tab;\nuniform int count;\n"
+                    "void main() {\n  int i = int(gl_GlobalInvocationID.x);\n  if (i >= count) return;\n  vec4 p = pts[i];\n"
+                    "  res[2 * i] = " + P + "_lookup(tab, " + call + ");\n"
+                    "  res[2 * i + 1] = " + P + "_lookupExact(tab, " + call + ");\n}\n";
+  std::string log;
+  GLuint prog = program(src, &log);
+  EXPECT_NE(prog, 0u) << "generated GLSL for " << file << " does not compile:\n" << log;
+  if (!prog) return {};
+  GLuint tex = upload(t, half);
+  int n = static_cast<int>(points.size() / 4);
+  GLuint buf[2];
+  glGenBuffers(2, buf);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf[0]);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, points.size() * sizeof(float), points.data(), GL_STATIC_DRAW);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buf[1]);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<size_t>(n) * 8 * sizeof(float), nullptr, GL_DYNAMIC_READ);
+  glUseProgram(prog);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glUniform1i(glGetUniformLocation(prog, "tab"), 0);
+  glUniform1i(glGetUniformLocation(prog, "count"), n);
+  glDispatchCompute((n + 63) / 64, 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<float> out(static_cast<size_t>(n) * 8);
+  const void* mapped = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, out.size() * sizeof(float), GL_MAP_READ_BIT);
+  EXPECT_NE(mapped, nullptr);
+  if (mapped) std::memcpy(out.data(), mapped, out.size() * sizeof(float));
+  glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+  glDeleteBuffers(2, buf);
+  glDeleteTextures(1, &tex);
+  glDeleteProgram(prog);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  return out;
+}
+
+// The host's bilinear lookup of channel c at fractional texel (px, py) (texel i's centre at i),
+// clamped; with `bits` > 0 the weights are rounded to that many fractional bits (8: NVIDIA's filter).
+double bilinear(const TableImage& t, int c, double px, double py, int bits = 0) {
+  px = std::clamp(px, 0.0, t.width - 1.0);
+  py = std::clamp(py, 0.0, t.height - 1.0);
+  int x0 = std::min(static_cast<int>(px), std::max(t.width - 2, 0)), y0 = std::min(static_cast<int>(py), std::max(t.height - 2, 0));
+  double fx = t.width > 1 ? px - x0 : 0, fy = t.height > 1 ? py - y0 : 0;
+  if (bits > 0) {
+    fx = std::round(std::ldexp(fx, bits)) / std::ldexp(1.0, bits);
+    fy = std::round(std::ldexp(fy, bits)) / std::ldexp(1.0, bits);
+  }
+  int x1 = std::min(x0 + 1, t.width - 1), y1 = std::min(y0 + 1, t.height - 1);
+  auto v = [&](int x, int y) { return static_cast<double>(t.planes[c][static_cast<size_t>(y) * t.width + x]); };
+  return (1 - fy) * ((1 - fx) * v(x0, y0) + fx * v(x1, y0)) + fy * ((1 - fx) * v(x0, y1) + fx * v(x1, y1));
+}
+
+struct Figures {
+  double gpuExact = 0, gpuHardware = 0, weights8 = 0, reference = 0;
+};
+
+// A 2D/1D table: GPU against the host bilinear and against the reference at `n` random points.
+Figures check2d(const std::string& file, int n, int refPoints) {
+  TableImage t = readTableExr(file);
+  bool half = tableExrIsHalf(file), node = t.strings["brdf.grid"] == "node";
+  int dims = t.height == 1 ? 1 : 2;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<float> pts;
+  for (int i = 0; i < n; ++i) pts.insert(pts.end(), {i < 4 ? float(i & 1) : u(rng), i < 4 ? float(i >> 1) : u(rng), 0, 0});
+  std::vector<float> gpu = sampleOnGpu(file, t, half, pts, dims);
+  Figures f;
+  if (gpu.empty()) return f;
+  const std::string table = t.strings["brdf.table"];
+  int ndf = ndfId(t.strings["brdf.ndf"]), gaf = gafId(t.strings["brdf.gaf"]);
+  for (int i = 0; i < n; ++i) {
+    double x = pts[4 * i], y = pts[4 * i + 1];
+    double px = node ? x * (t.width - 1) : x * t.width - 0.5, py = dims == 1 ? 0 : node ? y * (t.height - 1) : y * t.height - 0.5;
+    for (int c = 0; c < 3; ++c) {
+      double host = bilinear(t, c, px, py), scale = std::max(1.0, std::fabs(host));
+      f.gpuExact = std::max(f.gpuExact, std::fabs(gpu[8 * i + 4 + c] - host) / scale);
+      f.gpuHardware = std::max(f.gpuHardware, std::fabs(gpu[8 * i + c] - host) / scale);
+      f.weights8 = std::max(f.weights8, std::fabs(bilinear(t, c, px, py, 8) - host) / scale);
+    }
+    if (i >= refPoints) continue;
+    // the independent reference (adaptive quadrature in double) against the exact GPU path
+    double want[3];
+    if (table == "splitsum" || table == "albedo") {
+      reference::Moments m = reference::albedo(ndf, gaf, y, x);
+      want[0] = table == "albedo" ? m.a + m.b : m.a;
+      want[1] = table == "albedo" ? m.a + m.b : m.b;
+      want[2] = m.a + m.b;
+    } else if (table == "albedo-avg") {
+      want[0] = want[1] = want[2] = reference::albedoAvg(ndf, gaf, x);
+    } else {
+      want[0] = want[1] = want[2] = reference::kp(ndf, x);
+    }
+    for (int c = 0; c < 3; ++c)
+      f.reference = std::max(f.reference, std::fabs(gpu[8 * i + 4 + c] - want[c]) / std::max(1.0, std::fabs(want[c])));
+  }
+  return f;
+}
+
+TEST(GlPipeline, GeneratedGlslSamples2dTablesWithinTheirPredictedError) {
+  ASSERT_TRUE(gl().problem.empty()) << "no usable OpenGL ES through EGL: " << gl().problem;
+  fs::path d = bakeDir();
+  for (std::string file : {"tc/splitsum_ggx_smith-correlated.exr", "tc/albedo_ggx_smith-correlated.exr",
+                           "tc/albedo-avg_ggx_smith-correlated.exr", "tc/kp_ggx.exr", "node/splitsum_ggx_smith-correlated.exr",
+                           "node/albedo_ggx_smith-correlated.exr", "half/splitsum_ggx_smith-correlated.exr"}) {
+    std::string path = (d / file).string();
+    TableImage h = readTableExrHeader(path);
+    Figures f = check2d(path, 4000, 60);
+    double predicted = h.floats["brdf.error"] + h.floats["brdf.interp-error"];
+    std::printf("%-42s exact %.1e  hardware %.1e  8-bit weights %.1e  vs reference %.2e (predicted %.2e)\n",
+                file.c_str(), f.gpuExact, f.gpuHardware, f.weights8, f.reference, predicted);
+    EXPECT_LT(f.gpuExact, 2e-6) << file;     // the same texels and weights, float arithmetic
+    EXPECT_LT(f.gpuHardware, 2e-5) << file;  // llvmpipe filters with float weights
+    EXPECT_LE(f.reference, predicted) << file;
+  }
+}
+
+// 3D tables through the atlas: the generated lookups against the host's trilinear lookup of the
+// same table, and against the exact BRDF within brdf.error + the interpolation error estimate.
+TEST(GlPipeline, GeneratedGlslSamples3dAtlases) {
+  ASSERT_TRUE(gl().problem.empty()) << "no usable OpenGL ES through EGL: " << gl().problem;
+  fs::path d = bakeDir();
+  for (std::string file : {"vol/brdf3d_ggx_smith-correlated_angles.exr", "rus/brdf3d_ggx_smith-correlated_rusinkiewicz.exr"}) {
+    std::string path = (d / file).string();
+    TableImage t = readTableExr(path);
+    int cols = 0, rows = 0;
+    Brdf3dSpec s = specFromHeader(path, t, &cols, &rows);
+    auto planes = volumeFromAtlas(t, s, cols);
+    auto ax = s.axes();
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<float> pts;
+    const int n = 3000;
+    for (int i = 0; i < n; ++i)
+      for (int a = 0; a < 4; ++a) pts.push_back(a < 3 ? static_cast<float>(ax[a].hi * u(rng)) : 0.0f);
+    std::vector<float> gpu = sampleOnGpu(path, t, false, pts, 3);
+    ASSERT_FALSE(gpu.empty());
+    double exact = 0, hardware = 0;
+    int badExact = 0, badHardware = 0;
+    double truth = 0;
+    for (int i = 0; i < n; ++i) {
+      glm::dvec3 idx(texelIndex(s, 0, pts[4 * i]), texelIndex(s, 1, pts[4 * i + 1]), texelIndex(s, 2, pts[4 * i + 2]));
+      double host = trilinear(s, planes[0], idx), scale = std::max(1.0, std::fabs(host));
+      // the shader forms the texel index in float (a few ulps of the index): where f changes fast
+      // from one texel to the next (towards the horizon) that moves the lookup by ~1e-5 of the
+      // change across the cell; spread = the largest difference between the cell's eight texels
+      double lo = 1e300, hi = -1e300;
+      for (int k = 0; k < 8; ++k) {
+        glm::dvec3 corner(std::min(std::floor(idx.x) + (k & 1), s.nx - 1.0), std::min(std::floor(idx.y) + ((k >> 1) & 1), s.ny - 1.0),
+                          std::min(std::floor(idx.z) + ((k >> 2) & 1), s.nz - 1.0));
+        double v = trilinear(s, planes[0], glm::clamp(corner, glm::dvec3(0.0), glm::dvec3(s.nx - 1.0, s.ny - 1.0, s.nz - 1.0)));
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+      // within float arithmetic (2e-6) plus 1e-5 of the cell's spread (the index in float)
+      double dExact = std::fabs(gpu[8 * i + 4] - host), dHard = std::fabs(gpu[8 * i] - host);
+      if (dExact > 2e-6 * scale + 1e-5 * (hi - lo)) ++badExact;
+      if (dHard > 2e-5 * scale + 1e-5 * (hi - lo)) ++badHardware;
+      exact = std::max(exact, dExact / scale);
+      hardware = std::max(hardware, dHard / scale);
+      // and the exact BRDF at the point: what the file says its resolution costs
+      Directions dir = s.param == Brdf3dParam::Angles ? fromAngles(pts[4 * i], pts[4 * i + 1], pts[4 * i + 2])
+                                                      : fromRusinkiewicz(pts[4 * i], pts[4 * i + 1], pts[4 * i + 2]);
+      double f = hostBrdf(s, dir, 0);
+      truth = std::max(truth, std::fabs(gpu[8 * i + 4] - f) / std::max(1.0, std::fabs(f)));
+    }
+    double predicted = t.floats["brdf.error"] + t.floats["brdf.interp-error"];
+    std::printf("%-50s vs the BRDF %.3g (the file's estimate %.3g)\n", file.c_str(), truth, predicted);
+    EXPECT_LE(truth, 1.5 * predicted) << file;
+    std::printf("%-50s exact %.1e  hardware %.1e (relative to max(1, |f|))\n", file.c_str(), exact, hardware);
+    EXPECT_EQ(badExact, 0) << file << ": exact path off the host's trilinear lookup";
+    EXPECT_EQ(badHardware, 0) << file << ": hardware path off the host's trilinear lookup";
+  }
+}
+
+}  // namespace
