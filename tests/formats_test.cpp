@@ -349,7 +349,7 @@ TEST(Formats, BadInputIsRefusedWithExit64AndNothingWritten) {
       {"--table splitsum --size 8 --format exr --precision unorm16", "--format exr stores float32 or float16"},
       {"--table splitsum --size 8 --format png16 --precision float16", "--format png16 stores unorm16 only"},
       {"--table brdf3d --size 8 --format png16", "a 3D table (brdf3d) has no PNG form"},
-      {"--table brdf3d --size 8 --format ktx2 --precision unorm16", "is outside [0, 1], which unorm cannot hold"},
+      {"--table brdf3d --size 8 --format ktx2 --precision unorm16", "is outside [0, 1], which unorm16 cannot hold"},
       {"--table splitsum --format bmp", "--format must be one or more of exr, ktx2, dds, png16, header"},
       {"--table splitsum --precision float64", "--precision must be one of float32, float16, unorm16, unorm8"},
       {"--table splitsum --half --precision float32", "--half is --precision float16; give one of them"},

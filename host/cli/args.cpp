@@ -95,7 +95,7 @@ std::string usageText() {
          "  --rho V           diffuse albedo with --diffuse (one value or R,G,B in [0, 1]; default 1);\n"
          "                    --sigma S for oren-nayar (radians, default 0.5)\n"
          "  --atlas CxR       slices per atlas row and column (default: near-square, see README)\n"
-         "  --format F        exr (default) or merl (MERL's binary layout: rusinkiewicz, 90x90x180)\n"
+         "  --format merl     MERL's binary layout (rusinkiewicz, 90x90x180), alone; ktx2, dds: 3D textures\n"
          "\n"
          "Measured material (host only; tables over mu alone, RGB; default tables albedo, albedo-avg):\n"
          "  --brdf merl:FILE  a MERL .binary file as the material of --table albedo, albedo-avg (1x1), splitsum\n"

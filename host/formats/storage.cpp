@@ -132,15 +132,16 @@ void packTexels(const std::string& path, const std::vector<std::vector<float>>& 
       float v = 1.0f;  // alpha padding
       if (static_cast<size_t>(c) < planes.size()) {
         v = planes[c][i];
-        const char* problem = nullptr;
+        std::string problem;
         ExitCode code = kExitDataErr;
         if (!std::isfinite(v)) problem = std::isnan(v) ? "is NaN" : "is infinite";
         else if (p == Precision::Float16 && std::fabs(v) > 65504.0f) problem = "exceeds the float16 range (|v| <= 65504)";
         else if (isUnorm(p) && !(v >= 0.0f && v <= 1.0f)) {
-          problem = "is outside [0, 1], which unorm cannot hold (use float32 or float16, or png16's mapping for 2D tables)";
+          problem = "is outside [0, 1], which " + precisionName(p) +
+                    " cannot hold (float32 or float16 can; for 2D tables also png16's mapping)";
           code = kExitUsage;
         }
-        if (problem)
+        if (!problem.empty())
           throw Error(code, "cannot write " + path + ": channel " + std::string(1, names[c]) + " texel " +
                                 where(texel0 + i, width, height) + " value " + fmtG9(v) + " " + problem);
       }
