@@ -338,7 +338,7 @@ TEST(Brdf3d, BadInputIsRejectedBeforeAnythingIsWritten) {
       {"--table albedo --param angles", "--param: only --table brdf3d takes it", 64},
       {"--table brdf3d --atlas 2x2 --size 8", "--atlas 2x2 holds 4 slices, fewer than the table's 8", 64},
       {"--table brdf3d --format merl --size 8,8,8", "--format merl has MERL's fixed layout", 64},
-      {"--table brdf3d --format tiff", "--format must be exr or merl", 64},
+      {"--table brdf3d --format tiff", "--format must be one or more of exr, ktx2, dds, png16, header (merl: brdf3d only)", 64},
       {"--table brdf3d --size 4 --grid node --size 4", "--size given twice", 64},
   };
   for (const Case& c : cases) {

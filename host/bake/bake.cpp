@@ -11,6 +11,7 @@
 
 #include "bake/ashikhmin_textures.h"
 #include "bake/merl_bake.h"
+#include "bake/format_outputs.h"
 #include "bake/interp_estimate.h"
 #include "bake/output_set.h"
 #include "bake/volume.h"
@@ -300,49 +301,65 @@ std::vector<TableReport> runPlan(const Plan& plan) {
   for (const VolumeJob& v : plan.volumes) needs.push_back({TableKind::Brdf3d, v.spec.ndf, v.spec.gaf});
   runner.prepareAll(needs);
   std::vector<TableImage> images;
-  std::vector<TableReport> reports;
-  reports.reserve(plan.jobs.size() + plan.volumes.size());  // the volumes' entries are filled while they are written
+  std::vector<TableReport> tables;
+  images.reserve(plan.jobs.size());  // the files point into it
   for (const TableJob& job : plan.jobs) {
     TableReport r;
     images.push_back(computeTable(runner, job, &r.seconds));
-    r.path = job.path;
     r.table = tableName(job.kind);
     r.ndf = job.ndf >= 0 ? ndfNames()[job.ndf] : "";
     r.gaf = job.gaf >= 0 ? gafNames()[job.gaf] : "";
     r.width = job.width;
     r.height = job.height;
-    r.errorBound = images.back().floats["brdf.error"];
-    reports.push_back(r);
+    tables.push_back(r);
   }
   auto extras = [&](const std::string& path, TableImage& img) {
     auto it = plan.extraStrings.find(path);
     if (it != plan.extraStrings.end())
       for (const auto& [k, v] : it->second) img.strings[k] = v;
   };
+  // one file per format of each table, every one checked (unorm ranges) before anything is written
+  std::deque<TableImage> keep;
   std::vector<OutputFile> files;
+  std::vector<TableReport> reports;
   for (size_t i = 0; i < plan.jobs.size(); ++i) {
     extras(plan.jobs[i].path, images[i]);
-    files.push_back({plan.jobs[i].path, &images[i], plan.jobs[i].half, {}});
+    addTableFiles(plan.jobs[i], images[i], tables[i], keep, files, reports);
   }
-  // 3D tables: baked slab by slab while their files are written (never whole in memory)
-  std::vector<TableImage> headers;
-  headers.reserve(plan.volumes.size());
+  // 3D tables: baked slab by slab while their files are written (never whole in memory), once
+  // per file; the reports' kernel seconds accumulate while the set is written
+  std::deque<TableImage> headers;
+  std::deque<double> seconds;
   for (const VolumeJob& v : plan.volumes) {
     headers.push_back(volumeHeader(v));
     extras(v.path, headers.back());
     TableReport r;
-    r.path = v.path;
     r.table = v.merl ? "brdf3d (merl)" : "brdf3d";
     r.ndf = ndfNames()[v.spec.ndf];
     r.gaf = gafNames()[v.spec.gaf];
     r.width = v.spec.nx;
     r.height = v.spec.ny;
     r.depth = v.spec.nz;
-    r.errorBound = headers.back().floats["brdf.error"];
-    reports.push_back(r);
-    files.push_back(volumeOutput(runner, v, headers.back(), &reports.back().seconds));
+    double& secs = seconds.emplace_back(0.0);
+    const bool exr = v.merl || std::find(v.formats.begin(), v.formats.end(), FileFormat::Exr) != v.formats.end();
+    if (exr) {
+      r.path = v.path;
+      r.errorBound = headers.back().floats["brdf.error"];
+      files.push_back(volumeOutput(runner, v, headers.back(), &secs));
+      reports.push_back(r);
+    }
+    for (PlannedFile& pf : volumeFormatOutputs(runner, v, headers.back(), &secs)) {
+      r.path = pf.file.path;
+      r.errorBound = pf.errorBound;
+      files.push_back(std::move(pf.file));
+      reports.push_back(r);
+    }
   }
   commitOutputs(plan.outDir, files);
+  // the kernel time of each 3D table, now that its files are written
+  for (TableReport& r : reports)
+    for (size_t vi = 0; vi < plan.volumes.size(); ++vi)
+      if (r.table.rfind("brdf3d", 0) == 0 && pathStem(plan.volumes[vi].path) == pathStem(r.path)) r.seconds = seconds[vi];
   return reports;
 }
 

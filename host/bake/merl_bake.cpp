@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "bake/format_outputs.h"
 #include "bake/output_set.h"
 #include "common/errors.h"
 #include "formats/merl.h"
@@ -34,6 +35,7 @@ Plan makeMerlPlan(const BakeRequest& req) {
     job.path = req.outDir + "/" + tableName(kind) + "_merl-" + merlMaterialName(req.merl) + ".exr";
     plan.jobs.push_back(job);
   }
+  applyFormats(req, plan);
   return plan;
 }
 
@@ -44,21 +46,22 @@ std::vector<TableReport> runMerlPlan(const Plan& plan) {
   MerlData data = readMerl(plan.merl);
   guardInterrupts("abandoned " + std::to_string(plan.jobs.size()) + " table(s) for " + plan.outDir + "/");
   std::vector<TableImage> images;
-  std::vector<TableReport> reports;
+  std::vector<TableReport> tables;
+  images.reserve(plan.jobs.size());  // the files point into it
   for (const TableJob& job : plan.jobs) {
     auto t0 = std::chrono::steady_clock::now();
     images.push_back(merlTable(data, merlMaterialName(plan.merl), job.kind, job.width, job.nodeGrid, job.half));
     TableReport r;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.path = job.path;
     r.table = tableName(job.kind);
     r.width = job.width;
     r.height = job.height;
-    r.errorBound = images.back().floats["brdf.error"];
-    reports.push_back(r);
+    tables.push_back(r);
   }
+  std::deque<TableImage> keep;
   std::vector<OutputFile> files;
-  for (size_t i = 0; i < plan.jobs.size(); ++i) files.push_back({plan.jobs[i].path, &images[i], plan.jobs[i].half, {}});
+  std::vector<TableReport> reports;
+  for (size_t i = 0; i < plan.jobs.size(); ++i) addTableFiles(plan.jobs[i], images[i], tables[i], keep, files, reports);
   commitOutputs(plan.outDir, files);
   return reports;
 }

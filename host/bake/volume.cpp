@@ -102,8 +102,17 @@ uint64_t volumeBytesBound(const VolumeJob& job) {
   const Brdf3dSpec& s = job.spec;
   if (job.merl) return 12 + 3ull * 90 * 90 * 180 * 8;
   uint64_t w = static_cast<uint64_t>(s.nx) * job.cols, h = static_cast<uint64_t>(s.ny) * job.rows;
-  // raw pixels (ZIP stores a block raw when it does not shrink), the offset table, the header
-  return w * h * 3 * (job.half ? 2 : 4) + (h / 16 + 1) * 16 + 65536;
+  const uint64_t texels = static_cast<uint64_t>(s.nx) * s.ny * s.nz;
+  uint64_t bytes = 0;
+  for (FileFormat f : job.formats) {
+    if (f == FileFormat::Exr)  // raw pixels (ZIP stores a block raw when it does not shrink), the offset table, the header
+      bytes += w * h * 3 * (job.half ? 2 : 4) + (h / 16 + 1) * 16 + 65536;
+    else if (f == FileFormat::Header)  // .h and .mjs: at most 17 characters per value ("-1.23456789e-05f, ")
+      bytes += 2 * (texels * 3 * 18 + 65536);
+    else  // KTX2, DDS: RGBA texels and a header
+      bytes += texels * 4 * bytesPerChannel(job.precision) + 65536;
+  }
+  return bytes;
 }
 
 void checkVolumeSpace(const std::string& dir, const std::vector<VolumeJob>& volumes) {

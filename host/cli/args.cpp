@@ -64,7 +64,11 @@ std::string usageText() {
          "  --size N          texels per axis, 1..8192 (default 128 for splitsum and\n"
          "                    ashikhmin-shirley, 32 otherwise)\n"
          "  --grid G          texel-center (default: value at (i+0.5)/n) or node (at i/(n-1), n >= 2)\n"
-         "  --half            store HALF channels instead of FLOAT\n"
+         "  --format F[,F..]  exr (default), ktx2, dds, png16 (16-bit PNG, 2D), header (C/C++ .h and JavaScript\n"
+         "                    .mjs): one file per format; brdf3d also merl (alone)\n"
+         "  --precision P     float32 (default), float16, unorm16, unorm8 (unorm: tables within [0, 1]);\n"
+         "                    exr stores float32/float16, png16 always unorm16\n"
+         "  --half            --precision float16\n"
          "  -o, --output DIR  output directory, created with its parents (default out)\n"
          "  --device TEXT     use the first OpenCL device whose name or platform contains TEXT\n"
          "                    (default: the first CPU device, e.g. PoCL)\n"
@@ -93,7 +97,7 @@ std::string usageText() {
          "  --rho V           diffuse albedo with --diffuse (one value or R,G,B in [0, 1]; default 1);\n"
          "                    --sigma S for oren-nayar (radians, default 0.5)\n"
          "  --atlas CxR       slices per atlas row and column (default: near-square, see README)\n"
-         "  --format F        exr (default) or merl (MERL's binary layout: rusinkiewicz, 90x90x180)\n"
+         "  --format merl     MERL's binary layout (rusinkiewicz, 90x90x180), alone; ktx2, dds: 3D textures\n"
          "\n"
          "Measured material (host only; tables over mu alone, RGB; default tables albedo, albedo-avg):\n"
          "  --brdf merl:FILE  a MERL .binary file as the material of --table albedo, albedo-avg (1x1), splitsum\n"
@@ -131,6 +135,23 @@ int parseSize(const std::string& text) {
 template <class T>
 void addUnique(std::vector<T>& v, T x) {
   if (std::find(v.begin(), v.end(), x) == v.end()) v.push_back(x);
+}
+
+// --format and --precision together: every format named must hold the precision asked for
+// (png16 is unorm16 with its own mapping; exr stores float32 or float16), and PNG is 2D only.
+void checkFormatOptions(BakeRequest& req) {
+  if (req.formats.empty() && !req.volume.merl) req.formats = {FileFormat::Exr};
+  if (req.precision)
+    for (FileFormat f : req.formats)
+      if (!formatHolds(f, *req.precision))
+        throw Error(kExitUsage, "--precision " + precisionName(*req.precision) + ": --format " + formatName(f) +
+                                    (f == FileFormat::Exr ? " stores float32 or float16 (ktx2, dds and header store all four)"
+                                                          : " stores unorm16 only (its values mapped onto [0, 1]); leave "
+                                                            "--precision out or give unorm16"));
+  const bool png = std::find(req.formats.begin(), req.formats.end(), FileFormat::Png16) != req.formats.end();
+  if (png && std::find(req.tables.begin(), req.tables.end(), TableKind::Brdf3d) != req.tables.end())
+    throw Error(kExitUsage, "--format png16: a 3D table (brdf3d) has no PNG form (PNG is 2D); use ktx2 or dds (3D "
+                            "textures), exr (an atlas of slices) or header");
 }
 
 }  // namespace
@@ -280,9 +301,26 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       if (gridName == "node") req.nodeGrid = true;
       else if (gridName == "texel-center") req.nodeGrid = false;
       else throw Error(kExitUsage, "--grid must be texel-center or node, got '" + gridName + "'");
-    } else if (opt == "--half") {
-      once(opt, "--half");
-      req.half = true;
+    } else if (opt == "--half" || opt == "--precision") {
+      // --half is --precision float16
+      if (std::find(seen.begin(), seen.end(), "--precision") != seen.end())
+        throw Error(kExitUsage, opt + ": --half is --precision float16; give one of them, once");
+      seen.push_back("--precision");
+      if (opt == "--half") seen.push_back("--half");
+      req.precision = opt == "--half" ? Precision::Float16 : parsePrecision(opt, value());
+      req.half = *req.precision == Precision::Float16;
+    } else if (opt == "--format") {
+      once(opt, "--format");
+      for (const auto& n : splitCommas(value())) {
+        if (n == "merl") {
+          req.volume.merl = true;
+          req.volume.flags.push_back("--format merl");
+        } else {
+          addUnique(req.formats, parseFormat(opt, n));
+        }
+      }
+      if (req.volume.merl && !req.formats.empty())
+        throw Error(kExitUsage, "--format merl writes MERL's binary file alone (brdf3d only); give it without other formats");
     } else if (opt == "-o" || opt == "--output") {
       once(opt, "--output");
       req.outDir = value();
@@ -350,6 +388,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       throw Error(kExitUsage, "unknown option '" + opt + "' (see --help)");
     }
   }
+  checkFormatOptions(req);
   BakeRequest def = defaultRequest();
   const bool modelsGiven = !req.ndfs.empty() || !req.gafs.empty() || req.diffuse >= 0;
   if (!req.merl.empty()) {
@@ -369,7 +408,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   if (req.gafs.empty()) req.gafs = def.gafs;
   if (cmd.kind == Command::Kind::Energy) {
     // energy writes nothing: the table options do not apply
-    for (const char* o : {"--table", "--grid", "--half", "--output"})
+    for (const char* o : {"--table", "--grid", "--half", "--precision", "--format", "--output"})
       if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()))
         throw Error(kExitUsage, std::string(o) + ": not an energy option (energy writes no tables)");
     if (req.sigma && req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
@@ -377,14 +416,14 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   }
   if (cmd.kind == Command::Kind::Stress) {
     // stress runs its own fixed sweep of stiff cases: it takes only where to write and what device
-    for (const char* o : {"--table", "--grid", "--half", "--fresnel", "--size"})
+    for (const char* o : {"--table", "--grid", "--half", "--precision", "--format", "--fresnel", "--size"})
       if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()))
         throw Error(kExitUsage, std::string(o) + ": not a stress option (stress sweeps fixed stiff cases: -o, --device)");
     if (modelsGiven)
       throw Error(kExitUsage, "--ndf/--gaf/--diffuse: not stress options (stress sweeps fixed stiff cases: -o, --device)");
   }
   if (cmd.kind == Command::Kind::Convergence) {
-    for (const char* o : {"--table", "--grid", "--half"})
+    for (const char* o : {"--table", "--grid", "--half", "--precision", "--format"})
       if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()))
         throw Error(kExitUsage, std::string(o) + ": not a convergence option (it measures the albedo table of one "
                                                  "--ndf/--gaf/--fresnel; --size, -o)");
@@ -393,7 +432,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   }
   if (cmd.kind == Command::Kind::Verify) {
     // verify checks model pairs: it writes a report page (under -o), no tables
-    for (const char* o : {"--table", "--grid", "--half", "--fresnel", "--diffuse"})
+    for (const char* o : {"--table", "--grid", "--half", "--precision", "--format", "--fresnel", "--diffuse"})
       if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()) ||
           (std::string(o) == "--diffuse" && req.diffuse >= 0))
         throw Error(kExitUsage, std::string(o) + ": not a verify option (verify checks NDF/GAF pairs: --ndf, --gaf, --size, -o)");

@@ -96,12 +96,6 @@ bool parseVolumeOption(const std::string& opt, const std::function<const std::st
       throw Error(kExitUsage, "--atlas must be COLUMNSxROWS, each 1..1024 (e.g. 8x4), got '" + v + "'");
     req.volume.atlas = std::make_pair(static_cast<int>(c), static_cast<int>(r));
     req.volume.flags.push_back(opt);
-  } else if (opt == "--format") {
-    once(opt);
-    std::string v = value();
-    if (v == "merl") req.volume.merl = true;
-    else if (v != "exr") throw Error(kExitUsage, "--format must be exr or merl (brdf3d only), got '" + v + "'");
-    if (req.volume.merl) req.volume.flags.push_back(opt);
   } else {
     return false;
   }
@@ -125,8 +119,8 @@ void validateVolumeOptions(bool bake, BakeRequest& req) {
       if (std::find(v.flags.begin(), v.flags.end(), f) != v.flags.end())
         throw Error(kExitUsage, std::string(f) + ": --format merl has MERL's fixed layout (rusinkiewicz, sqrt theta_h "
                                                  "index, 90x90x180 bins, f); leave it out");
-    if (req.size || req.half || req.nodeGrid)
-      throw Error(kExitUsage, "--size/--half/--grid: --format merl has MERL's fixed layout (90x90x180 doubles, bins "
+    if (req.size || req.half || req.precision || req.nodeGrid)
+      throw Error(kExitUsage, "--size/--half/--precision/--grid: --format merl has MERL's fixed layout (90x90x180 doubles, bins "
                               "sampled at their lower edges); leave them out");
     if (v.param == Brdf3dParam::Angles && std::find(v.flags.begin(), v.flags.end(), "--param") != v.flags.end())
       throw Error(kExitUsage, "--param angles: --format merl is over the Rusinkiewicz angles; leave --param out");

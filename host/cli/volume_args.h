@@ -9,7 +9,7 @@ namespace brdfbake {
 
 // --size NX,NY,NZ (each 1..kMaxVolumeSize) into req.volume.size.
 void parseVolumeSize(const std::string& text, BakeRequest& req);
-// --param, --theta-h, --value, --roughness, --rho, --atlas, --format: true when `opt` is one of
+// --param, --theta-h, --value, --roughness, --rho, --atlas (--format merl: cli/args.cpp): true when `opt` is one of
 // them (its value taken with value()), false otherwise. Throws Error(kExitUsage) naming the flag
 // and its accepted values.
 bool parseVolumeOption(const std::string& opt, const std::function<const std::string&()>& value, BakeRequest& req);

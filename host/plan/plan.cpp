@@ -106,6 +106,20 @@ void planVolumes(const BakeRequest& req, Plan& plan) {
 }
 }  // namespace
 
+void applyFormats(const BakeRequest& req, Plan& plan) {
+  const Precision p = req.precision ? *req.precision : req.half ? Precision::Float16 : Precision::Float32;
+  const std::vector<FileFormat> formats = req.formats.empty() ? std::vector<FileFormat>{FileFormat::Exr} : req.formats;
+  for (TableJob& j : plan.jobs) {
+    j.formats = formats;
+    j.precision = p;
+  }
+  for (VolumeJob& v : plan.volumes) {
+    if (v.merl) continue;
+    v.formats = formats;
+    v.precision = p;
+  }
+}
+
 Plan makePlan(const BakeRequest& req) {
   if (!req.merl.empty()) return makeMerlPlan(req);
   Plan plan;
@@ -194,6 +208,7 @@ Plan makePlan(const BakeRequest& req) {
       }
     }
   }
+  applyFormats(req, plan);
   return plan;
 }
 

@@ -22,6 +22,10 @@ struct TableJob {
   FresnelChoice fresnel;  // albedo, albedo-avg: the model in B (one: F = 1); splitsum: schlick or f82-tint
   int diffuse = -1;       // albedo: a diffuse model's albedo (ndf, gaf unused); splitsum: burley in B
   int texture = -1;       // ashikhmin-shirley: Tex0, Tex1 or Tex2 (one file each)
+  // the files written (path's extension replaced per format) and the precision of their channels;
+  // half == (precision == float16), what the EXR file stores
+  std::vector<FileFormat> formats = {FileFormat::Exr};
+  Precision precision = Precision::Float32;
 };
 
 // A 3D table (--table brdf3d): one per NDF/GAF pair, baked and written slab by slab.
@@ -31,6 +35,8 @@ struct VolumeJob {
   bool half = false;
   bool merl = false;      // MERL's binary layout instead of an EXR atlas
   int cols = 1, rows = 1; // the EXR atlas: slices left to right, then top to bottom
+  std::vector<FileFormat> formats = {FileFormat::Exr};  // ktx2, dds: 3D textures; header; exr: the atlas
+  Precision precision = Precision::Float32;
 };
 
 struct Plan {
@@ -46,6 +52,8 @@ struct Plan {
 // Throws Error(kExitUsage) for combinations that have no finite table (gaf none on a node grid,
 // whose mu = 0 column is infinite).
 Plan makePlan(const BakeRequest& req);
+// The request's formats and precision on every job of `plan` (makePlan and makeMerlPlan call it).
+void applyFormats(const BakeRequest& req, Plan& plan);
 
 std::string fileName(const TableJob& job);
 std::string fileName(const VolumeJob& job);

@@ -1,0 +1,197 @@
+// One table, every requested format: see format_outputs.h.
+#include "bake/format_outputs.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "bake/volume.h"
+#include "cl/runner.h"
+#include "common/errors.h"
+#include "common/format.h"
+#include "formats/writers.h"
+
+namespace brdfbake {
+
+Precision effectivePrecision(FileFormat f, Precision p) { return f == FileFormat::Png16 ? Precision::Unorm16 : p; }
+
+std::string pathStem(const std::string& path) {
+  const size_t dot = path.find_last_of('.'), slash = path.find_last_of('/');
+  return dot == std::string::npos || (slash != std::string::npos && dot < slash) ? path : path.substr(0, dot);
+}
+
+std::vector<std::string> formatPaths(const std::string& stem, FileFormat f) {
+  if (f == FileFormat::Header) return {stem + ".h", stem + ".mjs"};
+  return {stem + formatExtension(f)};
+}
+
+namespace {
+
+// "R16G16B16A16_SFLOAT" (Vulkan) or "R16G16B16A16_FLOAT" (DXGI) for n channels of precision p.
+std::string componentName(int n, Precision p, bool vulkan) {
+  std::string s;
+  const std::string bits = std::to_string(8 * bytesPerChannel(p));
+  for (int c = 0; c < n; ++c) s += std::string(1, "RGBA"[c]) + bits;
+  return s + (isUnorm(p) ? "_UNORM" : vulkan ? "_SFLOAT" : "_FLOAT");
+}
+
+// Texel channels in the binary formats: an RGB table gets A = 1, since no 3-component 16- or
+// 8-bit format is sampleable everywhere (DXGI has none; Vulkan's are optional).
+int binaryChannels(int channels) { return channels == 3 ? 4 : channels; }
+
+// The metadata of the file of `f`: the table's own, plus the format and precision, with
+// brdf.error = the table's error without storage + `storage`.
+TableImage fileMeta(const TableImage& src, FileFormat f, Precision p, double computeError, double storage, int channels) {
+  TableImage m;
+  m.width = src.width;
+  m.height = src.height;
+  m.channels = src.channels;
+  m.strings = src.strings;
+  m.v2f = src.v2f;
+  m.floats = src.floats;
+  const int out = f == FileFormat::Ktx2 || f == FileFormat::Dds ? binaryChannels(channels) : channels;
+  std::string desc = formatName(f);
+  if (f == FileFormat::Ktx2) desc += " VK_FORMAT_" + componentName(out, p, true);
+  if (f == FileFormat::Dds) desc += " DXGI_FORMAT_" + componentName(out, p, false);
+  m.strings["brdf.format"] = desc;
+  m.strings["brdf.precision"] = precisionName(p);
+  if (out > channels) m.strings["brdf.channels"] += "; A=1 (padding)";
+  m.floats["brdf.error"] = static_cast<float>(computeError + storage);
+  m.strings["brdf.error.storage"] = fmtG(storage, 3) + " (" + precisionName(p) + " rounding in " + formatName(f) +
+                                    ", relative to max(1, |v|), included in brdf.error)";
+  return m;
+}
+
+OutputFile writerFile(const std::string& path, FileFormat f, Precision p, const TableImage& meta,
+                      const SliceSource& src, const std::string& stem, bool js) {
+  OutputFile o;
+  o.path = path;
+  const int out = binaryChannels(src.channels);
+  const std::string name = "brdf_" + stem.substr(stem.find_last_of('/') + 1);
+  o.write = [f, p, meta, src, out, name, js, path](const std::string& tmp) {
+    if (f == FileFormat::Ktx2) writeKtx2Temporary(tmp, path, meta, src, out, p);
+    else if (f == FileFormat::Dds) writeDdsTemporary(tmp, path, src, out, p);
+    else writeHeaderTemporary(tmp, path, meta, src, p, name, js);
+  };
+  return o;
+}
+
+}  // namespace
+
+std::vector<PlannedFile> tableOutputs(const TableJob& job, const TableImage& img, std::deque<TableImage>& keep) {
+  const std::string stem = pathStem(job.path);
+  const Precision exrPrecision = job.half ? Precision::Float16 : Precision::Float32;
+  double exrStorage = 0;
+  for (const auto& plane : img.planes) exrStorage = std::max(exrStorage, storageError(plane, exrPrecision));
+  double lo0 = img.planes.empty() || img.planes[0].empty() ? 0 : img.planes[0][0], hi0 = lo0;
+  for (const auto& plane : img.planes)
+    for (float v : plane) lo0 = std::min<double>(lo0, v), hi0 = std::max<double>(hi0, v);
+  const double stated = img.floats.count("brdf.error") ? img.floats.at("brdf.error") : 0.0;
+  const double computeError = std::max(0.0, stated - exrStorage);
+  const std::string table = img.strings.count("brdf.table") ? img.strings.at("brdf.table") : "table";
+  for (FileFormat f : job.formats)
+    if (f != FileFormat::Png16 && f != FileFormat::Exr && isUnorm(job.precision) && (lo0 < 0 || hi0 > 1))
+      throw Error(kExitUsage, stem + formatExtension(f) + ": the " + table + " table's values span [" + fmtG(lo0) + ", " +
+                                  fmtG(hi0) + "], outside [0, 1], which " + precisionName(job.precision) +
+                                  " cannot hold; float32 or float16 (exr, ktx2, dds, header) can, and png16 maps the "
+                                  "range onto its 16 bits; nothing was written");
+
+  std::vector<PlannedFile> files;
+  const int nchan = static_cast<int>(img.channels.size());
+  SliceSource src;
+  src.width = img.width;
+  src.height = img.height;
+  src.channels = nchan;
+  src.fill = [&img](int, int, std::vector<std::vector<float>>& planes) { planes = img.planes; };
+  for (FileFormat f : job.formats) {
+    const Precision p = effectivePrecision(f, job.precision);
+    if (f == FileFormat::Exr) {
+      files.push_back({OutputFile{stem + ".exr", &img, job.half, {}}, stated});
+      continue;
+    }
+    if (f == FileFormat::Png16) {
+      // value = png / 65535 * scale + offset over [min(0, lo), max(1, hi)]: the identity for [0, 1] tables
+      const double offset = std::min(0.0, lo0), scale = std::max(1.0, hi0) - offset;
+      double storage = 0;
+      for (const auto& plane : img.planes)
+        for (float v : plane) {
+          const double back = std::nearbyint((v - offset) / scale * 65535.0) / 65535.0 * scale + offset;
+          storage = std::max(storage, std::fabs(back - v) / std::max(1.0, std::fabs(static_cast<double>(v))));
+        }
+      storage += std::ldexp(1.0, -24);
+      TableImage& m = keep.emplace_back(fileMeta(img, f, p, computeError, storage, nchan));
+      m.planes = img.planes;
+      m.strings["brdf.mapping"] = "value = png / 65535 * scale + offset (scale = brdf.mapping.scale, offset = "
+                                  "brdf.mapping.offset; png the 16-bit sample)";
+      m.strings["brdf.mapping.scale"] = fmtG(scale, 17);
+      m.strings["brdf.mapping.offset"] = fmtG(offset, 17);
+      const std::string path = stem + ".png";
+      OutputFile o;
+      o.path = path;
+      o.write = [&m, path, scale, offset](const std::string& tmp) { writePng16Temporary(tmp, path, m, scale, offset); };
+      files.push_back({o, m.floats["brdf.error"]});
+      continue;
+    }
+    double storage = 0;
+    for (const auto& plane : img.planes) storage = std::max(storage, storageError(plane, p));
+    const TableImage& m = keep.emplace_back(fileMeta(img, f, p, computeError, storage, nchan));
+    const std::vector<std::string> paths = formatPaths(stem, f);
+    for (size_t k = 0; k < paths.size(); ++k)
+      files.push_back({writerFile(paths[k], f, p, m, src, stem, k == 1), m.floats.at("brdf.error")});
+  }
+  return files;
+}
+
+void addTableFiles(const TableJob& job, const TableImage& img, const TableReport& base, std::deque<TableImage>& keep,
+                   std::vector<OutputFile>& files, std::vector<TableReport>& reports) {
+  for (PlannedFile& pf : tableOutputs(job, img, keep)) {
+    TableReport r = base;
+    r.path = pf.file.path;
+    r.errorBound = pf.errorBound;
+    reports.push_back(r);
+    files.push_back(std::move(pf.file));
+  }
+}
+
+std::vector<PlannedFile> volumeFormatOutputs(KernelRunner& runner, const VolumeJob& job, const TableImage& atlasHeader,
+                                             double* seconds) {
+  std::vector<PlannedFile> files;
+  const Brdf3dSpec s = job.spec;
+  const std::string stem = pathStem(job.path);
+  TableImage base = atlasHeader;
+  base.width = s.nx;
+  base.height = s.ny;
+  base.strings.erase("brdf.atlas");
+  base.strings.erase("brdf.atlas.order");
+  const double exrStorage = job.half ? std::ldexp(1.0, -11) : std::ldexp(1.0, -24);
+  const double computeError = std::max(0.0, atlasHeader.floats.at("brdf.error") - exrStorage);
+  SliceSource src;
+  src.width = s.nx;
+  src.height = s.ny;
+  src.depth = s.nz;
+  src.channels = 3;
+  src.slicesPerBlock = std::max(1, job.cols);  // one atlas row's slices: the EXR path's slab
+  src.fill = [&runner, s, seconds](int z0, int zn, std::vector<std::vector<float>>& planes) {
+    auto t0 = std::chrono::steady_clock::now();
+    planes = runner.brdf3dSlab(s, z0, zn);
+    if (seconds) *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (planes.size() == 1) planes = {planes[0], planes[0], planes[0]};  // R=G=B tables
+  };
+  for (FileFormat f : job.formats) {
+    if (f == FileFormat::Exr) continue;  // the atlas, volumeOutput
+    if (f == FileFormat::Png16)
+      throw Error(kExitUsage, "--format png16: a 3D table has no PNG form (PNG is 2D); use ktx2 or dds (3D "
+                              "textures), exr (an atlas) or header");
+    const Precision p = job.precision;
+    TableImage meta = fileMeta(base, f, p, computeError, storageErrorBound(p), 3);
+    meta.strings["brdf.error.storage"] = fmtG(storageErrorBound(p), 3) + " (" + precisionName(p) +
+                                         " rounding, a priori: the values are streamed; relative to max(1, |v|))";
+    meta.strings["brdf.layout"] = "3D texture: x = first axis, y = second, z = third (slices z-major)";
+    const std::vector<std::string> paths = formatPaths(stem, f);
+    for (size_t k = 0; k < paths.size(); ++k)
+      files.push_back({writerFile(paths[k], f, p, meta, src, stem, k == 1), meta.floats.at("brdf.error")});
+  }
+  return files;
+}
+
+}  // namespace brdfbake
