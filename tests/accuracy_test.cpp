@@ -123,8 +123,10 @@ constexpr int kReferenceSweepGafs = GAF_SMITH_CORRELATED + 1;
 
 std::vector<std::pair<int, int>> allPairs() {
   std::vector<std::pair<int, int>> v;
-  for (int n = 0; n < 4; ++n)
-    for (int g = 0; g < kReferenceSweepGafs; ++g) v.push_back({n, g});
+  // (the sheen NDF's pairs are checked against their own, incident-direction reference: sheen_test.cpp)
+  for (int n = 0; n < NDF_COUNT; ++n)
+    for (int g = 0; g < kReferenceSweepGafs; ++g)
+      if (pairSupported(n, g) && !isSheenNdf(n)) v.push_back({n, g});
   return v;
 }
 
@@ -168,6 +170,7 @@ TEST_P(PairTest, EveryEdgeTexelOfA128TableMatchesReference) {
 TEST(Stiff, BlinnPhongHugeExponentsAndGrazingViewsMatchReference) {
   const int n = 64;
   for (int gaf = 0; gaf < GAF_COUNT; ++gaf) {
+    if (!pairSupported(NDF_BLINN_PHONG, gaf)) continue;
     KernelTable t = runner().hemisphere(NDF_BLINN_PHONG, gaf, n, n, false);
     for (size_t k = 0; k < t.planes[2].size(); ++k)
       ASSERT_TRUE(std::isfinite(t.planes[0][k]) && std::isfinite(t.planes[1][k]) && std::isfinite(t.err[k]));

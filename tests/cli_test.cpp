@@ -559,7 +559,7 @@ TEST(CliEvidence, StressIsCleanAndWritesItsPage) {
   fs::path d = freshDir("stress");
   CmdResult r = run("stress -o " + d.string());
   ASSERT_EQ(r.code, 0) << r.out;
-  EXPECT_NE(r.out.find("all 53 points pass: finite, within their bounds, limits met"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("all 81 points pass: finite, within their bounds, limits met"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("blinn-phong exponent 1e+12"), std::string::npos);
   EXPECT_NE(r.out.find("dielectric eta 1.0001"), std::string::npos);
   EXPECT_NE(r.out.find("oren-nayar sigma 1.571"), std::string::npos);

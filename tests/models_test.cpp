@@ -36,7 +36,10 @@ TEST(Ndf, KpClosedForms) {
 }
 
 TEST(Ndf, RawShapesPeakAtOneAndBlinnPhongSurvivesHugeExponents) {
-  for (int ndf = 0; ndf < NDF_COUNT; ++ndf) EXPECT_DOUBLE_EQ(ndf_p(ndf, params(ndf, 0, 0.5), 1.0, 0.0), 1.0);
+  for (int ndf = 0; ndf < NDF_COUNT; ++ndf)  // charlie peaks on the horizon instead (sheen_test.cpp)
+    if (!brdfbake::isSheenNdf(ndf)) {
+      EXPECT_DOUBLE_EQ(ndf_p(ndf, params(ndf, 0, 0.5), 1.0, 0.0), 1.0);
+    }
   // r = 0.01: e = 2e8 - 2; cos^e at theta = 1e-4 is exp(-e theta^2/2) = exp(-1)
   BrdfParams p = params(NDF_BLINN_PHONG, 0, 0.01);
   double th = 1e-4, s2 = std::sin(th) * std::sin(th);
@@ -103,6 +106,7 @@ TEST(Fresnel, DielectricNormalIncidenceAndTotalInternalReflection) {
 TEST(Gaf, ReciprocityAndRange) {
   for (int gaf = 0; gaf < GAF_COUNT; ++gaf)
     for (int ndf = 0; ndf < NDF_COUNT; ++ndf) {
+      if (!brdfbake::pairSupported(ndf, gaf)) continue;
       BrdfParams p = params(ndf, gaf, 0.6);
       double ni = 0.3, no = 0.8, nh = 0.9, oh = 0.7;
       double g1 = gaf_G(gaf, ndf, p, ni, no, nh, oh, 1 - ni * ni, 1 - no * no);
@@ -113,9 +117,10 @@ TEST(Gaf, ReciprocityAndRange) {
         EXPECT_LE(g1, 1.0 + 1e-12) << gafName(gaf) << " with " << ndfName(ndf);
       }
       EXPECT_EQ(gaf_G(gaf, ndf, p, -0.1, no, nh, oh, 0.99, 1 - no * no), 0.0);  // chi+
-      // G/(n.o) stays finite at grazing view for every model but none
+      // G/(n.o) stays finite at grazing view for every model but none and charlie-smith, whose
+      // fitted Lambda stays finite at grazing (so E(0, r) is infinite there: node grids refused)
       double g0 = gaf_G_over_no(gaf, ndf, p, 0.5, 0.0, 0.9, 0.6, 0.75, 1.0);
-      if (gaf != GAF_NONE) {
+      if (gaf != GAF_NONE && gaf != GAF_CHARLIE_SMITH) {
         EXPECT_TRUE(std::isfinite(g0)) << gafName(gaf) << " with " << ndfName(ndf);
       }
     }
@@ -183,6 +188,7 @@ TEST(Gaf, KernelFormsMatchTheReferencesOwnFormulas) {
     double i[3] = {2 * oh * h[0] - o[0], 2 * oh * h[1] - o[1], 2 * oh * h[2] - o[2]};
     for (int ndf = 0; ndf < NDF_COUNT; ++ndf)
       for (int gaf = 0; gaf < GAF_COUNT; ++gaf) {
+        if (!brdfbake::pairSupported(ndf, gaf)) continue;
         // the exact Smith Lambda of Blinn-Phong and the gaussian is tabulated in the kernel
         // (kernels/brdf/smith_tables.h, ~1e-7 of G) and integrated in the reference, two adaptive
         // integrals per configuration (seconds): every 20th trial for those
@@ -211,6 +217,8 @@ TEST(Albedo, MirrorLimitClosedFormsMatchTheIntegralFromInsideAndTheEstimator) {
     for (double mu : {0.1, 0.45, 0.9}) {
       brdfbake::reference::Moments exact = brdfbake::reference::mirrorAlbedo(gaf, mu);
       for (int ndf = 0; ndf < NDF_COUNT; ++ndf) {
+        // charlie's r = 0 is not a mirror (its lobe lies on the horizon: E = 0, sheen_test.cpp)
+        if (!brdfbake::pairSupported(ndf, gaf) || brdfbake::isSheenNdf(ndf)) continue;
         brdfbake::reference::Moments inside = brdfbake::reference::albedo(ndf, gaf, 1e-4, mu);
         EXPECT_NEAR(inside.e(), exact.e(), 1e-4) << ndfName(ndf) << "+" << gafName(gaf) << " mu " << mu;
         EXPECT_NEAR(inside.b, exact.b, 1e-4) << ndfName(ndf) << "+" << gafName(gaf) << " mu " << mu;

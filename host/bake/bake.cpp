@@ -137,6 +137,12 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
         img.planes = {kt.planes[0], kt.planes[1], c.planes[1]};
         fresnel = "f82-tint";
         channels = "R=A,G=B,B=C (F82-tint albedo = F0 A + B - b C, b = F_schlick(1/7)(1-tint)/((1/7)(6/7)^6))";
+      } else if (isSheenNdf(job.ndf)) {
+        // sheen has no Fresnel to split (F = 1): the split sum's second factor is the albedo itself
+        img.planes = {kt.planes[2], kt.planes[2], kt.planes[2]};
+        fresnel = "one";
+        channels = "R=G=B=E (sheen, F = 1: the split sum's second factor is the albedo; Filament's cloth DFG "
+                   "channel dfg.z, the glTF Sample Viewer's charlie LUT .b)";
       } else if (job.diffuse >= 0) {
         // the diffuse albedo over (mu, r) in B, as HDRP's pre-integrated FGD table keeps it
         KernelTable d = runner.diffuseAlbedo(job.diffuse, job.width, job.height, 0.0f, 1.0f, job.nodeGrid);
@@ -422,6 +428,12 @@ std::string energyWarnings(const TableImage& t) {
         return "warning: " + name + " exceeds 1 (max " + b + "): the " + d + " diffuse model does not conserve energy" +
                why + "; see docs/MODELS.md, \"Diffuse models\"\n";
       }
+      if (str("brdf.ndf") == "charlie")
+        return "warning: " + name + " exceeds 1 (max " + b + ") at grazing views of smooth sheens: charlie with " +
+               str("brdf.gaf") +
+               (str("brdf.gaf") == "charlie-smith" ? " (a fitted Lambda, finite at grazing: G/(n.o) grows as mu -> 0)"
+                                                    : " (no masking: E(0, r) grows like 1/r)") +
+               " does not conserve energy there; clamp 1 - E in albedo scaling; see docs/MODELS.md, \"Sheen\"\n";
       return "warning: " + name + " exceeds 1 (max " + b + "): a single-scattering albedo cannot; " + str("brdf.ndf") +
              " with " + str("brdf.gaf") +
              (str("brdf.gaf") == "none" ? " (G = 1, albedo ~ 1/mu at grazing)"

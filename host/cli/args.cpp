@@ -99,6 +99,11 @@ std::string usageText() {
          "  --atlas CxR       slices per atlas row and column (default: near-square, see README)\n"
          "  --format merl     MERL's binary layout (rusinkiewicz, 90x90x180), alone; ktx2, dds: 3D textures\n"
          "\n"
+         "Preset:\n"
+         "  --preset gltf     glTF's reference-shading tables: the GGX split-sum (ggx + smith-correlated), the\n"
+         "                    sheen IBL term (charlie + neubelt, as Filament's cloth DFG) and the sheen albedo-scaling\n"
+         "                    table E(mu, r) (charlie + charlie-smith, KHR_materials_sheen); with --size, --grid, --half, -o\n"
+         "\n"
          "Measured material (host only; tables over mu alone, RGB; default tables albedo, albedo-avg):\n"
          "  --brdf merl:FILE  a MERL .binary file as the material of --table albedo, albedo-avg (1x1), splitsum\n"
          "                    (its directional albedo as the split sum's second factor); no --ndf/--gaf/--fresnel\n"
@@ -367,6 +372,10 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         ladder.push_back(static_cast<int>(v));
       }
       (lv ? req.levels : req.samples) = ladder;
+    } else if (opt == "--preset" && cmd.kind == Command::Kind::Bake) {
+      once(opt, "--preset");
+      req.preset = value();
+      if (req.preset != "gltf") throw Error(kExitUsage, "--preset: unknown preset '" + req.preset + "'; valid: gltf");
     } else if (opt == "--brdf") {
       once(opt, "--brdf");
       const std::string& v = value();
@@ -404,8 +413,31 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         throw Error(kExitUsage, "--brdf merl:" + req.merl + ": --table " + tableName(t) +
                                     " has no measured form; a measured material bakes albedo, albedo-avg or splitsum");
   }
+  if (!req.preset.empty()) {
+    // the preset names its own models and tables (plan/plan.cpp makePresetPlan)
+    if (modelsGiven || req.fresnelGiven || !req.tables.empty() || !req.merl.empty())
+      throw Error(kExitUsage, "--preset " + req.preset + " bakes its own models and tables; --ndf, --gaf, --table, "
+                              "--fresnel, --diffuse and --brdf do not apply (--size, --grid, --half, -o do)");
+    req.ndfs = {NDF_GGX, NDF_CHARLIE};
+    req.gafs = {GAF_SMITH_CORRELATED, GAF_NEUBELT, GAF_CHARLIE_SMITH};
+    req.tables = {TableKind::SplitSum, TableKind::Albedo};
+  }
+  // the sheen NDF alone without --gaf: its own visibility (the default smith-correlated does not pair)
+  if (req.gafs.empty() && !req.ndfs.empty() && std::all_of(req.ndfs.begin(), req.ndfs.end(), isSheenNdf))
+    req.gafs = {GAF_CHARLIE_SMITH};
   if (req.ndfs.empty()) req.ndfs = def.ndfs;
   if (req.gafs.empty()) req.gafs = def.gafs;
+  if (req.preset.empty() && req.merl.empty()) {
+    // every pair of the product must be a model: a sheen visibility with a non-sheen NDF, or charlie
+    // with a microfacet GAF, is refused here, before anything is computed or written
+    for (int n : req.ndfs)
+      for (int g : req.gafs) checkPair(n, g);
+    bool sheen = std::any_of(req.ndfs.begin(), req.ndfs.end(), isSheenNdf);
+    if (sheen && (req.fresnelGiven || req.diffuse >= 0))
+      throw Error(kExitUsage, std::string(req.fresnelGiven ? "--fresnel" : "--diffuse") +
+                                  ": the sheen NDF (charlie) has no Fresnel or diffuse form (KHR_materials_sheen: F = 1, "
+                                  "the sheen colour scales the lobe); bake charlie without it");
+  }
   if (cmd.kind == Command::Kind::Energy) {
     // energy writes nothing: the table options do not apply
     for (const char* o : {"--table", "--grid", "--half", "--precision", "--format", "--output"})

@@ -29,6 +29,7 @@ struct BakeRequest {
   bool fresnelGiven = false;
   int diffuse = -1;                  // --diffuse: DIFFUSE_* id, or -1
   std::string merl;                  // --brdf merl:FILE: a measured material's MERL file, or ""
+  std::string preset;                // --preset gltf: glTF's reference-shading tables (plan/plan.cpp), or ""
   std::optional<double> sigma;       // energy: --sigma for oren-nayar (else swept)
   std::string coupling = "sum";      // energy: --coupling sum | albedo-scaling
   std::vector<int> levels = {0, 1, 2, 3};                           // convergence: quadrature levels

@@ -20,6 +20,7 @@ typedef double real;
 #include "integrate/quadrature.h"
 #include "integrate/azimuth.h"
 #include "integrate/hemisphere.h"
+#include "integrate/sheen.h"
 #include "integrate/albedo_avg.h"
 #include "integrate/diffuse_albedo.h"
 }  // namespace brdf64
@@ -38,6 +39,7 @@ typedef float real;
 #include "integrate/quadrature.h"
 #include "integrate/azimuth.h"
 #include "integrate/hemisphere.h"
+#include "integrate/sheen.h"
 #include "integrate/albedo_avg.h"
 #include "integrate/diffuse_albedo.h"
 }  // namespace brdf32

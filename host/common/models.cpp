@@ -1,11 +1,12 @@
 #include "common/models.h"
 
+#include "common/brdf_host.h"
 #include "common/errors.h"
 
 namespace brdfbake {
 
 const std::vector<std::string>& ndfNames() {
-  static const std::vector<std::string> n = {"ggx", "beckmann", "blinn-phong", "gaussian"};
+  static const std::vector<std::string> n = {"ggx", "beckmann", "blinn-phong", "gaussian", "charlie"};
   return n;
 }
 
@@ -14,7 +15,7 @@ const std::vector<std::string>& gafNames() {
                                              "neumann", "ashikhmin-premoze", "schlick-beckmann",
                                              "schlick-ggx", "schlick-ggx-direct", "smith",
                                              "smith-correlated", "smith-exact",
-                                             "smith-correlated-exact"};
+                                             "smith-correlated-exact", "charlie-smith", "neubelt"};
   return n;
 }
 
@@ -51,8 +52,29 @@ std::string roughnessMapping(int ndf) {
     case 0: return "alpha=r^2";
     case 1: return "alpha=r^2 (Beckmann m=alpha)";
     case 2: return "e=2/alpha^2-2, alpha=r^2";
+    case 4: return "alpha=r^2 (sheenRoughness^2, KHR_materials_sheen; Filament's linear roughness)";
     default: return "c=1/alpha, alpha=r^2";
   }
+}
+
+bool isSheenNdf(int ndf) { return ndf == NDF_CHARLIE; }
+bool isSheenGaf(int gaf) { return gaf == GAF_CHARLIE_SMITH || gaf == GAF_NEUBELT; }
+
+// The sheen visibilities pair with the sheen NDF only; charlie takes them, and the two GAFs without
+// a Lambda of their own (none: G = 1; implicit: G = (n.i)(n.o), the unshadowed sheen f = D/4).
+bool pairSupported(int ndf, int gaf) {
+  if (isSheenGaf(gaf)) return isSheenNdf(ndf);
+  if (isSheenNdf(ndf)) return gaf == GAF_NONE || gaf == GAF_IMPLICIT;
+  return true;
+}
+
+void checkPair(int ndf, int gaf, const std::string& field) {
+  if (pairSupported(ndf, gaf)) return;
+  if (isSheenGaf(gaf))
+    throw Error(kExitUsage, field + ": gaf '" + gafNames()[gaf] + "' is a sheen visibility with a non-sheen NDF ('" +
+                                ndfNames()[ndf] + "'); it pairs with --ndf charlie only");
+  throw Error(kExitUsage, field + ": ndf 'charlie' (sheen) takes the sheen visibilities charlie-smith, neubelt (or none, "
+                              "implicit), not gaf '" + gafNames()[gaf] + "'");
 }
 
 }  // namespace brdfbake

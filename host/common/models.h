@@ -23,4 +23,13 @@ std::string roughnessMapping(int ndf);
 
 std::string joinNames(const std::vector<std::string>& names);
 
+// Sheen models (MODELS.md "Sheen"): the charlie NDF and its visibilities charlie-smith, neubelt.
+bool isSheenNdf(int ndf);
+bool isSheenGaf(int gaf);
+// Whether an NDF/GAF pair is a model: a sheen visibility pairs with charlie only, and charlie with
+// the sheen visibilities, none and implicit. Every sweep over NDFs x GAFs skips the others.
+bool pairSupported(int ndf, int gaf);
+// Throws Error(kExitUsage) naming `field` for a pair that pairSupported refuses.
+void checkPair(int ndf, int gaf, const std::string& field = "--ndf/--gaf");
+
 }  // namespace brdfbake

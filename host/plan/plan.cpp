@@ -120,7 +120,35 @@ void applyFormats(const BakeRequest& req, Plan& plan) {
   }
 }
 
+namespace {
+// --preset gltf: what glTF's reference shading samples (docs/MODELS.md "Sheen"): the GGX split-sum
+// (lut_ggx: R = A, G = B), the sheen IBL term E of charlie + neubelt (Filament's cloth DFG channel,
+// whose visibility is Ashikhmin's = Neubelt's), and KHR_materials_sheen's albedo-scaling table E of
+// charlie + charlie-smith (its "Charlie" visibility).
+Plan makePresetPlan(const BakeRequest& req) {
+  Plan plan;
+  plan.outDir = req.outDir;
+  plan.device = req.device;
+  const std::tuple<TableKind, int, int> tables[] = {{TableKind::SplitSum, NDF_GGX, GAF_SMITH_CORRELATED},
+                                                    {TableKind::SplitSum, NDF_CHARLIE, GAF_NEUBELT},
+                                                    {TableKind::Albedo, NDF_CHARLIE, GAF_CHARLIE_SMITH}};
+  for (const auto& [kind, ndf, gaf] : tables) {
+    int n = req.size ? *req.size : defaultSize(kind);
+    if (req.nodeGrid)
+      throw Error(kExitUsage, "--preset gltf --grid node: the sheen tables are infinite at mu = 0 (charlie-smith's "
+                              "Lambda is finite at grazing; neubelt's corner mu = r = 0), the node grid's first column; "
+                              "the preset bakes texel centres, which texture(lut, vec2(NdotV, roughness)) samples");
+    TableJob job{kind, ndf, gaf, n, n, false, req.half, "", FresnelChoice{}, -1, -1, {FileFormat::Exr}, Precision::Float32};
+    job.path = req.outDir + "/" + fileName(job);
+    plan.jobs.push_back(job);
+  }
+  applyFormats(req, plan);
+  return plan;
+}
+}  // namespace
+
 Plan makePlan(const BakeRequest& req) {
+  if (!req.preset.empty()) return makePresetPlan(req);
   if (!req.merl.empty()) return makeMerlPlan(req);
   Plan plan;
   plan.outDir = req.outDir;
@@ -201,6 +229,11 @@ Plan makePlan(const BakeRequest& req) {
         if (twoD && req.nodeGrid && gaf == gafNone)
           throw Error(kExitUsage, "--grid node: gaf 'none' (G = 1) has infinite albedo at mu = 0, the grid's first "
                                   "column; use --grid texel-center for " + tableName(kind));
+        if (twoD && req.nodeGrid && isSheenGaf(gaf))
+          throw Error(kExitUsage, "--grid node: charlie + " + gafNames()[gaf] + " has infinite albedo at mu = 0 (" +
+                                      (gaf == GAF_NEUBELT ? "at the corner r = 0: E(0, r) grows like 1/(r sqrt(2 pi))"
+                                                          : "its fitted Lambda is finite at grazing, so G/(n.o) is not") +
+                                      "), the grid's first column; use --grid texel-center for " + tableName(kind));
         TableJob job{kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, req.half, "", req.fresnel,
                      kind == TableKind::SplitSum ? req.diffuse : -1};
         job.path = req.outDir + "/" + fileName(job);

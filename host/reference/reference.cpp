@@ -11,6 +11,7 @@
 
 #include "common/brdf_host.h"
 #include "reference/adaptive.h"
+#include "reference/sheen_reference.h"
 
 namespace brdfbake::reference {
 namespace {
@@ -189,7 +190,10 @@ double gafOf(const Model& m, const dvec3& i, const dvec3& o, const dvec3& h) {
     case GAF_COOK_TORRANCE: return std::min({1.0, 2 * nh * no / oh, 2 * nh * ni / ih});  // Cook-Torrance 1982
     case GAF_KELEMEN: return ni * no / (oh * ih);                        // Kelemen, Szirmay-Kalos 2001
     case GAF_NEUMANN: return ni * no / std::max(ni, no);                 // Neumann et al. 1999
-    case GAF_ASHIKHMIN_PREMOZE: return ni * no / (ni + no - ni * no);    // Ashikhmin, Premoze 2007
+    case GAF_ASHIKHMIN_PREMOZE:                                          // Ashikhmin, Premoze 2007
+    case GAF_NEUBELT: return ni * no / (ni + no - ni * no);              // Neubelt, Pettineo 2013: the same G
+    case GAF_CHARLIE_SMITH:                                              // Estevez, Kulla 2017
+      return 1 / (1 + charlieLambda(m.r, ni) + charlieLambda(m.r, no));
     case GAF_SCHLICK_BECKMANN:
     case GAF_SCHLICK_GGX:
     case GAF_SCHLICK_GGX_DIRECT: {                                       // Schlick 1994
@@ -368,7 +372,10 @@ double normalisation(int ndf, double r, double invKp) {
     double s = std::sin(th), c = std::cos(th);
     return 2 * kPi * brdf64::ndf_D(ndf, p, c, s * s) * c * s;
   };
-  return integrate(f, 0, kPi / 2, lobeBreaks(p.alpha, kPi / 2));
+  std::vector<double> br = lobeBreaks(p.alpha, kPi / 2);
+  if (ndf == NDF_CHARLIE)  // the sheen lobe hugs the horizon: geometric towards pi/2
+    for (double d = 0.5; d > 1e-9; d /= 4) br.push_back(kPi / 2 - d);
+  return integrate(f, 0, kPi / 2, br);
 }
 
 double kp(int ndf, double r) {
@@ -381,7 +388,10 @@ double kp(int ndf, double r) {
     double s = std::sin(th), c = std::cos(th);
     return 2 * kPi * brdf64::ndf_p(ndf, p, c, s * s) * c * s;
   };
-  return integrate(f, 0, kPi / 2, lobeBreaks(p.alpha, kPi / 2));
+  std::vector<double> br = lobeBreaks(p.alpha, kPi / 2);
+  if (ndf == NDF_CHARLIE)
+    for (double d = 0.5; d > 1e-9; d /= 4) br.push_back(kPi / 2 - d);
+  return integrate(f, 0, kPi / 2, br);
 }
 
 Moments albedo(int ndf, int gaf, double r, double mu, const Weight& w) {

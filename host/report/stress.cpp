@@ -12,6 +12,7 @@
 #include "common/models.h"
 #include "reference/diffuse_reference.h"
 #include "reference/reference.h"
+#include "reference/sheen_reference.h"
 #include "report/report_page.h"
 
 namespace brdfbake {
@@ -68,7 +69,27 @@ struct Runner {
     add(sweep, ndfNames()[ndf] + "+" + gafNames()[gaf] + " mu=" + fmt4(fm) + " r=" + fmt4(fr), v, t.err[0],
         fres ? m.b : m.e(), fm == 0 || fr == 0 ? kLimitSlack : 3e-9, limitText, limit, tol);
   }
+
+  // The sheen albedo (charlie) at one (mu, r), against the incident-direction reference.
+  // At mu = 0 the closed form is the reference (the incident-direction quadrature needs minutes
+  // there: its integrand is singular along the whole horizon).
+  void sheen(const std::string& sweep, int gaf, double mu, double r, const std::string& limitText = "",
+             double limit = NAN, double tol = 0) {
+    float fm = static_cast<float>(mu), fr = static_cast<float>(r);
+    KernelTable t = k.hemisphereRange(NDF_CHARLIE, gaf, 1, 1, fm, fm, fr, fr, true);
+    double ref = fm == 0 && !std::isnan(limit) ? limit : reference::sheenAlbedo(gaf, fr, fm);
+    add(sweep, "charlie+" + gafNames()[gaf] + " mu=" + fmt4(fm) + " r=" + fmt4(fr), t.planes[2][0], t.err[0], ref,
+        fm == 0 || fr == 0 ? kLimitSlack : 3e-9, limitText, limit, tol);
+  }
 };
+
+// charlie's E(0, r) in closed form (docs/MODELS.md "Sheen"), e = 1 + 1/(2 alpha): neubelt
+// (e/pi) B(e + 1/2, 1/2), implicit e/(2 (e + 1)).
+double sheenGrazing(int gaf, double r) {
+  double e = 1 + 0.5 / (r * r);
+  if (gaf == GAF_IMPLICIT) return e / (2 * (e + 1));
+  return e / kPi * std::exp(std::lgamma(e + 0.5) + std::lgamma(0.5) - std::lgamma(e + 1));
+}
 
 }  // namespace
 
@@ -148,6 +169,30 @@ std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine
     KernelTable t = kr.albedoAvg(ggx, sc, 1, true, {}, fr, fr);
     run.add("albedo-avg r -> 0", "ggx+smith-correlated r=" + fmt4(fr), t.planes[0][0], t.err[0],
             reference::albedoAvg(ggx, sc, fr), 1e-7, "E_avg -> 1", 1.0, r == 0 ? 1e-6 : 1e-3);
+  }
+
+  // sheen (charlie): alpha -> 0 puts the lobe on the horizon, below every incident direction: E -> 0
+  for (int gaf : {GAF_CHARLIE_SMITH, GAF_NEUBELT})
+    for (double r : {0.1, 0.03, 0.01, 0.0})
+      run.sheen("charlie alpha -> 0", gaf, 0.5, r, "E -> 0 (lobe on the horizon)", 0.0,
+                r == 0 ? 1e-12 : r >= 0.1 ? 1e-2 : 1e-3);  // neubelt still holds 1.4e-3 at r = 0.1
+  // grazing views: E grows (neubelt and implicit to their closed forms at mu = 0; charlie-smith like 1/(mu Lambda(mu)))
+  for (double r : {0.5, 0.05})
+    for (double mu : {1e-3, 1e-6}) run.sheen("charlie mu -> 0", GAF_CHARLIE_SMITH, mu, r);
+  for (int gaf : {GAF_NEUBELT, GAF_IMPLICIT})
+    for (double r : {1.0, 0.5, 0.05}) {
+      double fr = static_cast<float>(r);
+      run.sheen("charlie mu -> 0", gaf, 1e-6, r);
+      run.sheen("charlie mu -> 0", gaf, 0.0, r, "E(0, r) closed form", sheenGrazing(gaf, fr), 1e-5 * sheenGrazing(gaf, fr));
+    }
+  run.sheen("charlie corner", GAF_IMPLICIT, 0.0, 0.0, "lim E(0, r -> 0) = 1/2", 0.5, 1e-5);
+  // charlie's k_p = 2 pi alpha/(1 + 2 alpha), closed form (Estevez and Kulla 2017's normalisation)
+  for (double r : {1.0, 0.01, 0.0}) {
+    float fr = static_cast<float>(r);
+    KernelTable t = kr.kp(NDF_CHARLIE, 1, true, fr, fr);
+    double a = double(fr) * fr, closed = 2 * kPi * a / (1 + 2 * a);
+    run.add("k_p charlie", "charlie r=" + fmt4(fr), t.planes[0][0], t.err[0], closed, 3e-9, "k_p = 2 pi alpha/(1 + 2 alpha)",
+            closed, 1e-6 * closed + 1e-15);
   }
 
   // the page: the table, the data, a plot of error and bound per point

@@ -232,9 +232,20 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
     if (m.transmission)
       sp.notes.push_back("material '" + m.name + "': KHR_materials_transmission needs rough-dielectric tables, which this "
                          "baker does not make yet: left out");
-    if (m.sheen)
-      sp.notes.push_back("material '" + m.name + "': KHR_materials_sheen needs the Charlie sheen tables, which this baker "
-                         "does not make yet: left out");
+    if (m.sheen) {
+      // KHR_materials_sheen: the Charlie lobe's albedo (its albedo-scaling of the layers below, with
+      // the Charlie visibility) and, under image-based lighting, its DFG-style term (Neubelt's
+      // visibility, as Filament's cloth and glTF's reference viewer use)
+      SceneMaterial sheen = m;
+      sheen.ndf = NDF_CHARLIE;
+      sheen.gaf = GAF_CHARLIE_SMITH;
+      BakeRequest a = request(sheen, TableKind::Albedo);
+      addTables(sp, a, m, "KHR_materials_sheen (sheen albedo scaling: E of charlie + charlie-smith)");
+      if (L.ibl) {
+        sheen.gaf = GAF_NEUBELT;
+        addTables(sp, request(sheen, TableKind::SplitSum), m, "KHR_materials_sheen under image-based lighting (charlie + neubelt)");
+      }
+    }
     for (const auto& n : m.notes) sp.notes.push_back("material '" + m.name + "': " + n);
   }
   if (!L.ibl) sp.leftOut.push_back("splitsum: image-based lighting is off (lighting.ibl = false)");

@@ -23,7 +23,11 @@
  * gaussian, whose `smith`/`smith-correlated` keep Beckmann's Lambda (MODELS.md "Exact Smith Lambda") */
 #define GAF_SMITH_EXACT 11
 #define GAF_SMITH_CORRELATED_EXACT 12
-#define GAF_COUNT 13
+/* the sheen visibilities, for the charlie NDF only (MODELS.md "Sheen"; host/common/models.cpp
+ * pairSupported): Estevez and Kulla 2017's fitted Smith Lambda, and Neubelt and Pettineo 2013 */
+#define GAF_CHARLIE_SMITH 13
+#define GAF_NEUBELT 14
+#define GAF_COUNT 15
 
 /* Schlick's k per convention (MODELS.md): schlick-beckmann k = alpha sqrt(2/pi) (Schlick 1994 with
  * m = alpha), schlick-ggx k = alpha/2 (Karis 2013, IBL), schlick-ggx-direct k = (r+1)^2/8 (Karis 2013,
@@ -56,9 +60,14 @@ BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, param_t no, 
   } else if (gaf == GAF_NEUMANN) {
     /* Neumann et al. 1999: (n.i)(n.o)/max(n.i, n.o) */
     g = ni / fmax(ni, no);
-  } else if (gaf == GAF_ASHIKHMIN_PREMOZE) {
-    /* Ashikhmin and Premoze 2007: (n.i)(n.o)/(n.i + n.o - (n.i)(n.o)) */
+  } else if (gaf == GAF_ASHIKHMIN_PREMOZE || gaf == GAF_NEUBELT) {
+    /* Ashikhmin and Premoze 2007: (n.i)(n.o)/(n.i + n.o - (n.i)(n.o)); Neubelt and Pettineo 2013's
+     * cloth visibility V = 1/(4 (n.l + n.v - (n.l)(n.v))) = G/(4 (n.i)(n.o)) is the same G */
     g = ni / (ni + no - ni * no);
+  } else if (gaf == GAF_CHARLIE_SMITH) {
+    /* Estevez and Kulla 2017: height-correlated 1/(1 + Lambda_i + Lambda_o) with their fitted
+     * Lambda (ndf.h charlie_lambda), times ni/ni as smith-correlated */
+    g = ni / (ni * no + no * ndf_cLambda(NDF_CHARLIE, p, ni, s2i) + ni * ndf_cLambda(NDF_CHARLIE, p, no, s2o));
   } else if (gaf == GAF_SCHLICK_BECKMANN || gaf == GAF_SCHLICK_GGX || gaf == GAF_SCHLICK_GGX_DIRECT) {
     /* Schlick 1994: g(x) = x/(x(1-k)+k); G = g(n.i) g(n.o) */
     param_t k = p.k;

@@ -16,7 +16,9 @@
 #define NDF_BECKMANN 1
 #define NDF_BLINN_PHONG 2
 #define NDF_GAUSSIAN 3
-#define NDF_COUNT 4
+/* the sheen NDF of Estevez and Kulla 2017 (MODELS.md "Sheen"): its lobe peaks at grazing h */
+#define NDF_CHARLIE 4
+#define NDF_COUNT 5
 
 /* Per-texel parameters, derived once from perceptual roughness r (MODELS.md "Roughness axes"). */
 typedef struct BrdfParams {
@@ -51,6 +53,11 @@ BRDF_FN real ndf_p(int ndf, BrdfParams p, real c, real s2) {
   if (ndf == NDF_GGX) {
     real den = c * c * a2 + s2;
     v = (a2 / den) * (a2 / den);
+  } else if (ndf == NDF_CHARLIE) {
+    /* Estevez and Kulla 2017: sin(theta)^(1/alpha), peak 1 on the horizon (s2 = 1), 0 at h = n;
+     * alpha = 0: 0 off the horizon. In log space: log sin = log(s2)/2. */
+    if (p.alpha <= RC(0.0)) return s2 >= RC(1.0) ? RC(1.0) : RC(0.0);
+    return exp(RC(0.5) / p.alpha * log(s2));
   } else if (a2 <= RC(0.0)) {
     v = RC(0.0); /* a delta at h = n: 0 off the normal */
   } else if (ndf == NDF_BECKMANN) {
@@ -78,10 +85,36 @@ BRDF_FN real ndf_D(int ndf, BrdfParams p, real c, real s2) {
     return a2 / (BRDF_PI * den * den);
   } else if (ndf == NDF_GAUSSIAN) {
     return ndf_p(ndf, p, c, s2) * p.inv_kp;
+  } else if (ndf == NDF_CHARLIE) {
+    /* Estevez and Kulla 2017 eq. 2: D = (2 + 1/alpha) sin^(1/alpha)/(2 pi), i.e. p/k_p with the
+     * closed-form k_p = 2 pi alpha/(1 + 2 alpha) (ndf_p_over_D_grid) */
+    return (RC(2.0) + RC(1.0) / p.alpha) * ndf_p(ndf, p, c, s2) / (RC(2.0) * BRDF_PI);
   } else {
     /* Beckmann: p/(pi alpha^2); Blinn-Phong: c^e/(pi alpha^2) */
     return ndf_p(ndf, p, c, s2) / (BRDF_PI * a2);
   }
+}
+
+/* Charlie's Smith Lambda as fitted by Estevez and Kulla 2017 (section 3, table 1; the same in
+ * KHR_materials_sheen's implementation notes): with t = (1 - alpha)^2 each coefficient is
+ * p = t p(alpha=0) + (1 - t) p(alpha=1), L(x) = a/(1 + b x^c) + d x + e, and
+ *   Lambda(cos) = exp(L(cos)) for cos < 1/2,  exp(2 L(1/2) - L(1 - cos)) above
+ * (continuous at 1/2). Finite at grazing (exp(a + e), ~7.7e8 at alpha = 0), so cos Lambda -> 0 there.
+ * The paper's terminator softening (Lambda^(1 + 2(1 - cos)^8) for the light) is not applied: glTF's
+ * and Filament's shading do not apply it either. x^c = exp(c log x), 0 at x = 0. */
+BRDF_FN real charlie_L(param_t alpha, real x) {
+  param_t t = (RC(1.0) - alpha) * (RC(1.0) - alpha);
+  param_t a = RC(21.5473) + t * (RC(25.3245) - RC(21.5473));
+  param_t b = RC(3.82987) + t * (RC(3.32435) - RC(3.82987));
+  param_t cc = RC(0.19823) + t * (RC(0.16801) - RC(0.19823));
+  param_t d = RC(-1.97760) + t * (RC(-1.27393) - RC(-1.97760));
+  param_t e = RC(-4.32054) + t * (RC(-4.85967) - RC(-4.32054));
+  return a / (RC(1.0) + b * exp(cc * log(x))) + d * x + e;
+}
+BRDF_FN real charlie_lambda(param_t alpha, real c) {
+  real lo = exp(charlie_L(alpha, c));
+  real hi = exp(RC(2.0) * charlie_L(alpha, RC(0.5)) - charlie_L(alpha, RC(1.0) - c));
+  return c < RC(0.5) ? lo : hi;
 }
 
 /* cos(theta_v) * Lambda(v) for a direction v with cos c >= 0, sin^2 s2.
@@ -96,6 +129,8 @@ BRDF_FN real ndf_cLambda(int ndf, BrdfParams p, real c, real s2) {
   if (ndf == NDF_GGX) {
     real x = a2 * s2;
     return RC(0.5) * x / (sqrt(c * c + x) + c);
+  } else if (ndf == NDF_CHARLIE) {
+    return c * charlie_lambda(p.alpha, c); /* the paper's fit (below), not an exact Smith Lambda */
   } else {
     real as = p.alpha * sqrt(s2);
     real a = c / as;
@@ -163,16 +198,33 @@ BRDF_FN real ndf_G(int ndf, BrdfParams p, real ci, real s2i, real co, real s2o) 
  *   Beckmann:    1-u = exp(-t2/alpha^2)       => t2 = alpha^2 v,         v = t2/alpha^2
  *   Blinn-Phong: 1-u = c^(e+2) = c^(2/alpha^2) => c^2 = exp(-alpha^2 v),  v = log1p(t2)/alpha^2
  * The gaussian has no closed-form CDF: it is integrated on the GGX grid of the same alpha, with the
- * weight D_gauss/D_ggx (ndf_weight), which is bounded because GGX has the heavier tail. */
+ * weight D_gauss/D_ggx (ndf_weight), which is bounded because GGX has the heavier tail.
+ * Charlie peaks on the horizon of h and vanishes at h = n, so its coordinate counts from the other
+ * end, v = -log(CDF), decreasing in theta_h. Its CDF in closed form: D (n.h) dw = (2 + 1/alpha)
+ * sin^(1/alpha + 1) cos dtheta (dphi/2 pi), and with x = sin theta, dx = cos dtheta,
+ *   u = int_0^sin (2 + 1/alpha) x^(1/alpha + 1) dx = sin^(2 + 1/alpha) = s2^e,  e = 1 + 1/(2 alpha)
+ *   => v = -e log1p(-c^2),  c^2 = -expm1(-v/e),  s2 = exp(-v/e),  t2 = 1/expm1(v/e),  v = e log1p(1/t2)
+ * and |du| = e^-v dv as for the others. v = 0 is the horizon (D's peak; 1/(n.h) there is a
+ * v^(-1/2) end, which the square-root substitution at the visible limit removes), v -> inf is h = n
+ * (D's tail, sin^(1/alpha) -> 0). As alpha -> 0 the lobe's width is c^2 ~ 1/e ~ 2 alpha, v ~ 1: the
+ * coordinate scales with the lobe. kernels/integrate/sheen.h lays its panels out. */
 #ifndef BRDF_LANE_PASS
 BRDF_FN int ndf_grid_model(int ndf) { return ndf == NDF_GAUSSIAN ? NDF_GGX : ndf; }
+/* Charlie's 1/e = 2 alpha/(1 + 2 alpha). */
+BRDF_FN param_t ndf_charlie_inv_e(BrdfParams p) { return RC(2.0) * p.alpha / (RC(1.0) + RC(2.0) * p.alpha); }
 #endif
 
 /* The angle at v: cos, sin^2 and tan^2 of theta_h. */
 BRDF_FN void ndf_angle_v(int ndf, BrdfParams p, real v, real* c, real* s2, real* t2) {
   param_t a2 = p.alpha * p.alpha;
   int g = ndf_grid_model(ndf);
-  if (g == NDF_BLINN_PHONG) {
+  if (g == NDF_CHARLIE) {
+    param_t ie = ndf_charlie_inv_e(p);
+    real c2 = -expm1(-v * ie);
+    *c = sqrt(c2);
+    *s2 = exp(-v * ie);
+    *t2 = RC(1.0) / expm1(v * ie);
+  } else if (g == NDF_BLINN_PHONG) {
     real c2 = exp(-a2 * v);
     *c = sqrt(c2);
     *s2 = -expm1(-a2 * v);
@@ -186,9 +238,11 @@ BRDF_FN void ndf_angle_v(int ndf, BrdfParams p, real v, real* c, real* s2, real*
 
 /* p / D_grid, the integrand of k_p on the v grid (k_p = integral of e^-v p/D_grid dv):
  * pi alpha^2 for GGX, Beckmann and Blinn-Phong (p/D is that constant), and for the gaussian
- * p / D_ggx = p pi (c^2 alpha^2 + s2)^2 / alpha^2. */
+ * p / D_ggx = p pi (c^2 alpha^2 + s2)^2 / alpha^2. Charlie: k_p = 2 pi int sin^(1/alpha + 1) cos
+ * dtheta = 2 pi/(2 + 1/alpha) = 2 pi alpha/(1 + 2 alpha) (Estevez and Kulla 2017's normalisation). */
 BRDF_FN real ndf_p_over_D_grid(int ndf, BrdfParams p, real c, real s2) {
   param_t a2 = p.alpha * p.alpha;
+  if (ndf == NDF_CHARLIE) return RC(2.0) * BRDF_PI * p.alpha / (RC(1.0) + RC(2.0) * p.alpha);
   if (ndf != NDF_GAUSSIAN) return BRDF_PI * a2;
   real den = c * c * a2 + s2;
   return ndf_p(NDF_GAUSSIAN, p, c, s2) * BRDF_PI * (den / p.alpha) * (den / p.alpha);
@@ -201,10 +255,15 @@ BRDF_FN real ndf_weight(int ndf, BrdfParams p, real c, real s2) {
 }
 
 /* tan^2(theta(v1 + dv)) - tan^2(theta(v1)), exact in dv (no cancellation when dv is small):
- *   GGX: alpha^2 e^{v1} expm1(dv);  Beckmann: alpha^2 dv;  Blinn-Phong: e^{alpha^2 v1} expm1(alpha^2 dv). */
+ *   GGX: alpha^2 e^{v1} expm1(dv);  Beckmann: alpha^2 dv;  Blinn-Phong: e^{alpha^2 v1} expm1(alpha^2 dv);
+ *   Charlie, with A = v1/e, d = dv/e: 1/expm1(A + d) - 1/expm1(A) = -expm1(d)/(expm1(A + d) (-expm1(-A))). */
 BRDF_FN real ndf_tan2_diff(int ndf, BrdfParams p, param_t v1, real dv) {
   param_t a2 = p.alpha * p.alpha;
   int g = ndf_grid_model(ndf);
+  if (g == NDF_CHARLIE) {
+    param_t ie = ndf_charlie_inv_e(p);
+    return -expm1(dv * ie) / (expm1((v1 + dv) * ie) * -expm1(-v1 * ie));
+  }
   if (g == NDF_GGX) return a2 * exp(v1) * expm1(dv);
   if (g == NDF_BECKMANN) return a2 * dv;
   return exp(a2 * v1) * expm1(a2 * dv);
@@ -221,6 +280,7 @@ BRDF_FN BrdfAngle ndf_angle_of_v(int ndf, BrdfParams p, real v) {
 BRDF_FN real ndf_v_of_tan2(int ndf, BrdfParams p, real t2) {
   real a2 = p.alpha * p.alpha;
   int g = ndf_grid_model(ndf);
+  if (g == NDF_CHARLIE) return log1p(RC(1.0) / t2) / ndf_charlie_inv_e(p); /* decreasing in t2 */
   if (a2 <= RC(0.0)) return t2 > RC(0.0) ? RC(1.0) / RC(0.0) : RC(0.0);
   if (g == NDF_GGX) return log1p(t2 / a2);
   if (g == NDF_BECKMANN) return t2 / a2;

@@ -72,6 +72,12 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
     if (partial) {
       lane_t t = sqrt(t2);
       lane_t dt2 = ndf_tan2_diff(ndf, p, v1, v - v1); /* t^2 - t1^2 */
+      if (ndf == NDF_CHARLIE) {
+        /* charlie (sheen.h): v1 can be far above v (1e5 at grazing views of small alpha; inf at mu = 0),
+         * where v - v1 loses v's digits; the plain difference has no cancellation there */
+        lane_t direct = t2 - t1 * t1;
+        dt2 = direct > RC(0.5) * t2 ? direct : dt2;
+      }
       lane_t inv = RC(1.0) / (RC(2.0) * s * t);
       lane_t opc = fmax(dt2 / (t + t1) * (mu * t + RC(1.0) + s) * inv, RC(0.0)); /* 1 + c0 */
       lane_t omc = fmax((RC(1.0) + s - mu * t) * (t + t1) * inv, RC(0.0));        /* 1 - c0 */
@@ -109,12 +115,41 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
   res->err_b += fabs(pdb) + peb;
 }
 
+/* One outer panel [cur, next] at budget `refine` (hemisphere_moments explains the levels). */
+BRDF_FN void hemi_panel(int ndf, int gaf, BrdfParams p, real mu, real s, real t1, real v1, real cur, real next,
+                        int partial, int sq_lo, int sq_hi, int refine, HemiResult* res) {
+  if (!refine) {
+    hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, cur, next, partial, sq_lo, sq_hi, refine, res);
+    return;
+  }
+  /* five pieces graded towards both ends, at 1/16, 1/4, 3/4, 15/16 of the panel: an end may
+   * carry a square-root (v1, v2) or a 3/2-power singularity (a GAF kink entering the azimuth
+   * range at a theta break), which halving resolves only algebraically. The first piece keeps
+   * the v1 substitution, the last the v2 one. */
+  real len = next - cur, lo = cur;
+  int sub = 1 << (refine - 1); /* levels above 1 (convergence ladders): each piece in 2^(refine-1) */
+  for (int q = 0; q < 5; ++q) {
+    real hi = q < 4 ? cur + len * HEMI_REFINE_CUTS[q] : next;
+    real w = (hi - lo) / (real)sub;
+    for (int u = 0; u < sub; ++u) {
+      real a = lo + w * (real)u, b = u + 1 < sub ? lo + w * (real)(u + 1) : hi;
+      hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, a, b, partial, q == 0 && u == 0 && sq_lo,
+                       q == 4 && u + 1 == sub && sq_hi, refine, res);
+    }
+    lo = hi;
+  }
+}
+
+/* The charlie NDF's estimator (kernels/integrate/sheen.h, after this file). */
+BRDF_FN HemiResult sheen_moments(int gaf, BrdfParams p, real mu, int refine);
+
 /* refine = 0: the default budget; 1: every outer panel cut in five graded pieces, 32 trapezoid
  * intervals, phi grading x2 instead of x4 and every phi panel halved. Levels L >= 2 (the
  * convergence report's ladder, not the bake): each of the five pieces cut in 2^(L-1), every phi
  * panel in 2^L, and GK15 panels on whole circles too. Callers refine the few texels whose bound is above
  * their target (hemisphere_moments_to). */
 BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, int refine) {
+  if (ndf == NDF_CHARLIE) return sheen_moments(gaf, p, mu, refine);
   HemiResult res;
   res.a = 0;
   res.b = 0;
@@ -204,26 +239,7 @@ BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, i
       sq_lo |= cur == fv[k];
       sq_hi |= next == fv[k];
     }
-    if (refine) {
-      /* five pieces graded towards both ends, at 1/16, 1/4, 3/4, 15/16 of the panel: an end may
-       * carry a square-root (v1, v2) or a 3/2-power singularity (a GAF kink entering the azimuth
-       * range at a theta break), which halving resolves only algebraically. The first piece keeps
-       * the v1 substitution, the last the v2 one. */
-      real len = next - cur, lo = cur;
-      int sub = 1 << (refine - 1); /* levels above 1 (convergence ladders): each piece in 2^(refine-1) */
-      for (int q = 0; q < 5; ++q) {
-        real hi = q < 4 ? cur + len * HEMI_REFINE_CUTS[q] : next;
-        real w = (hi - lo) / (real)sub;
-        for (int u = 0; u < sub; ++u) {
-          real a = lo + w * (real)u, b = u + 1 < sub ? lo + w * (real)(u + 1) : hi;
-          hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, a, b, partial, q == 0 && u == 0 && sq_lo,
-                           q == 4 && u + 1 == sub && sq_hi, refine, &res);
-        }
-        lo = hi;
-      }
-    } else {
-      hemi_outer_panel(ndf, gaf, p, mu, s, t1, v1, cur, next, partial, sq_lo, sq_hi, refine, &res);
-    }
+    hemi_panel(ndf, gaf, p, mu, s, t1, v1, cur, next, partial, sq_lo, sq_hi, refine, &res);
     cur = next;
   }
   res.a *= BRDF_INV_PI;

@@ -1,0 +1,278 @@
+// The charlie sheen NDF and its visibilities (docs/MODELS.md "Sheen"): normalisation in closed form
+// and numerically, its change of variables, the fitted Lambda against the reference's own, the
+// limits, the kernels against the independent incident-direction reference (reference/
+// sheen_reference.h), bad pairs on the command line and the glTF preset's files.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <boost/math/quadrature/gauss.hpp>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+
+#include "common/brdf_host.h"
+#include "common/models.h"
+#include "exr/table_file.h"
+#include "reference/reference.h"
+#include "reference/sheen_reference.h"
+#include "test_device.h"
+
+namespace fs = std::filesystem;
+namespace {
+using namespace brdfbake;
+using testing_device::rel;
+using testing_device::runner;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kAllowance = 1e-6;  // the bake's float allowance (host/bake/bake.cpp)
+constexpr double kGoal = 1e-5;
+const int kSheenGafs[] = {GAF_CHARLIE_SMITH, GAF_NEUBELT, GAF_IMPLICIT, GAF_NONE};
+
+brdf64::BrdfParams params(int gaf, double r) { return brdf64::brdf_params(NDF_CHARLIE, gaf, r); }
+double eOf(double r) { return 1 + 0.5 / (r * r); }
+
+// int D (n.h) dw = 1: k_p = 2 pi alpha/(1 + 2 alpha) in closed form, the same numerically (the
+// reference's adaptive integral of the raw shape), the kernels' D integrates to 1, and the
+// reference's own D (written separately) too.
+TEST(Sheen, NormalisationClosedFormAndNumeric) {
+  for (double r : {0.05, 0.1, 0.3, 0.5, 0.8, 1.0}) {
+    double a = r * r, closed = 2 * kPi * a / (1 + 2 * a);
+    brdf64::BrdfParams p = params(GAF_NEUBELT, r);
+    EXPECT_NEAR(brdf64::ndf_p_over_D_grid(NDF_CHARLIE, p, 0.5, 0.75), closed, 1e-15) << r;
+    EXPECT_NEAR(reference::kp(NDF_CHARLIE, r), closed, 1e-10 * closed) << r;
+    double err = 0;
+    EXPECT_NEAR(brdf64::ndf_kp(NDF_CHARLIE, p, &err), closed, 1e-12) << r;
+    EXPECT_NEAR(reference::normalisation(NDF_CHARLIE, r, 0), 1, 1e-9) << r;
+    EXPECT_NEAR(reference::charlieNormalisation(r), 1, 1e-9) << r;
+    // the kernels' D and the reference's agree pointwise
+    for (double th : {0.3, 1.0, 1.5, 1.57}) {
+      double s2 = std::sin(th) * std::sin(th);
+      EXPECT_NEAR(brdf64::ndf_D(NDF_CHARLIE, p, std::cos(th), s2), reference::charlieD(r, s2),
+                  1e-13 * reference::charlieD(r, s2) + 1e-300);
+    }
+  }
+  // the raw shape peaks on the horizon and vanishes at h = n
+  EXPECT_DOUBLE_EQ(brdf64::ndf_p(NDF_CHARLIE, params(GAF_NEUBELT, 0.5), 0.0, 1.0), 1.0);
+  EXPECT_EQ(brdf64::ndf_p(NDF_CHARLIE, params(GAF_NEUBELT, 0.5), 1.0, 0.0), 0.0);
+}
+
+// The change of variables: CDF(theta) = sin^(2 + 1/alpha) in closed form against the integral of
+// D (n.h) dw up to theta, and v(theta(v)) = v, tan^2 differences exact.
+TEST(Sheen, CdfMapClosedForm) {
+  for (double r : {0.02, 0.3, 1.0}) {
+    brdf64::BrdfParams p = params(GAF_NEUBELT, r);
+    double e = eOf(r);
+    for (double th0 : {0.2, 0.9, 1.4, 1.5707}) {
+      int n = 20000;
+      double sum = 0;  // midpoint rule in theta, fine enough for 1e-6
+      for (int k = 0; k < n; ++k) {
+        double th = th0 * (k + 0.5) / n, s = std::sin(th), c = std::cos(th);
+        sum += 2 * kPi * brdf64::ndf_D(NDF_CHARLIE, p, c, s * s) * c * s * th0 / n;
+      }
+      double s2 = std::sin(th0) * std::sin(th0);
+      EXPECT_NEAR(sum, std::pow(s2, e), 1e-6) << "r " << r << " theta " << th0;
+      // v = -log CDF, and back
+      double t2 = s2 / (std::cos(th0) * std::cos(th0));
+      double v = brdf64::ndf_v_of_tan2(NDF_CHARLIE, p, t2);
+      EXPECT_NEAR(v, -e * std::log(s2), 1e-12 * std::max(1.0, v));
+      brdf64::BrdfAngle a = brdf64::ndf_angle_of_v(NDF_CHARLIE, p, v);
+      EXPECT_NEAR(a.s2, s2, 1e-12);
+      EXPECT_NEAR(a.t2, t2, 1e-10 * t2);
+      for (double dv : {-1e-6, 1e-3, -0.5}) {
+        double want = brdf64::ndf_angle_of_v(NDF_CHARLIE, p, v + dv).t2 - a.t2;
+        EXPECT_NEAR(brdf64::ndf_tan2_diff(NDF_CHARLIE, p, v, dv), want, 1e-7 * std::fabs(want) + 1e-15);
+      }
+    }
+  }
+}
+
+// The fitted Lambda: the kernels' against the reference's (written separately from the paper's
+// table), continuous at cos = 1/2 where its two branches meet, and the G1 it gives in (0, 1].
+TEST(Sheen, FittedLambdaMatchesTheReferenceAndIsContinuous) {
+  for (double r : {0.0, 0.1, 0.5, 0.9, 1.0})
+    for (double c : {1e-6, 0.01, 0.2, 0.4999999, 0.5, 0.5000001, 0.7, 0.99, 1.0}) {
+      double got = brdf64::charlie_lambda(r * r, c), want = reference::charlieLambda(r, c);
+      EXPECT_NEAR(got, want, 1e-12 * want) << "r " << r << " cos " << c;
+      double g1 = brdf64::ndf_G1(NDF_CHARLIE, params(GAF_CHARLIE_SMITH, r), c, 1 - c * c);
+      EXPECT_GT(g1, 0);
+      EXPECT_LE(g1, 1);
+    }
+  for (double r : {0.0, 0.5, 1.0}) {
+    double lo = brdf64::charlie_lambda(r * r, 0.5 - 1e-9), hi = brdf64::charlie_lambda(r * r, 0.5 + 1e-9);
+    EXPECT_NEAR(lo, hi, 1e-6 * lo) << r;
+  }
+}
+
+// Limits of the estimator (double, host): E(mu > 0, r = 0) = 0 (the lobe lies on the horizon);
+// E(0, r) in closed form for neubelt, (e/pi) B(e + 1/2, 1/2), and implicit, e/(2 (e + 1)); the
+// implicit corner 1/2.
+TEST(Sheen, LimitsClosedForms) {
+  for (int gaf : kSheenGafs)
+    for (double mu : {0.1, 0.5, 1.0}) {
+      brdf64::HemiResult h = brdf64::hemisphere_texel(NDF_CHARLIE, gaf, mu, 0.0, 8e-6);
+      EXPECT_EQ(h.a + h.b, 0.0) << gafNames()[gaf];
+      EXPECT_EQ(reference::sheenAlbedo(gaf, 0.0, mu), 0.0);
+    }
+  for (double r : {0.05, 0.2, 0.6, 1.0}) {
+    double e = eOf(r);
+    double neubelt = e / kPi * std::exp(std::lgamma(e + 0.5) + std::lgamma(0.5) - std::lgamma(e + 1));
+    double implicit = e / (2 * (e + 1));
+    for (auto [gaf, want] : {std::pair{GAF_NEUBELT, neubelt}, std::pair{GAF_IMPLICIT, implicit}}) {
+      brdf64::HemiResult h = brdf64::hemisphere_texel(NDF_CHARLIE, gaf, 0.0, r, 8e-6);
+      EXPECT_NEAR(h.a + h.b, want, 1e-7 * std::max(1.0, want)) << gafNames()[gaf] << " r " << r;
+      // (the reference approaches mu = 0 from mu = 1e-9, where E still differs by ~2e-7 at r = 0.05)
+      if (r >= 0.2) {
+        EXPECT_NEAR(reference::sheenAlbedo(gaf, r, 0.0), want, 1e-6 * std::max(1.0, want)) << gafNames()[gaf];
+      }
+    }
+  }
+  brdf64::HemiResult c = brdf64::hemisphere_texel(NDF_CHARLIE, GAF_IMPLICIT, 0.0, 0.0, 8e-6);
+  EXPECT_NEAR(c.a + c.b, 0.5, 1e-8);
+}
+
+// The device's E against the reference, every sheen pair: an 8x8 texel-centre grid and the edge
+// texels of a 128x128 table (mu, r = 1/256 where alpha = 1.5e-5 and E reaches 22); each texel
+// within its own bound + allowance and within 1e-5. The split-sum table for charlie holds E in R, G, B.
+TEST(Sheen, KernelAlbedoMatchesTheReference) {
+  double worst = 0, worstBound = 0;
+  for (int gaf : kSheenGafs) {
+    for (int n : {8, 128}) {
+      KernelTable t = runner().hemisphere(NDF_CHARLIE, gaf, n, n, false);
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          if (n == 128 && i != 0 && j != 0 && i != n - 1 && j != n - 1) continue;
+          if (n == 128 && (i + j) % 8 != 0) continue;  // every 8th edge texel: the reference takes ~30 ms each
+          double mu = (i + 0.5) / n, r = (j + 0.5) / n;
+          size_t k = static_cast<size_t>(j) * n + i;
+          double want = reference::sheenAlbedo(gaf, static_cast<float>(r), static_cast<float>(mu));
+          double err = rel(t.planes[2][k], want);
+          EXPECT_LE(err, t.err[k] + kAllowance) << gafNames()[gaf] << " mu " << mu << " r " << r << " E " << want;
+          EXPECT_LE(err, kGoal) << gafNames()[gaf] << " mu " << mu << " r " << r;
+          worst = std::max(worst, err);
+          worstBound = std::max(worstBound, static_cast<double>(t.err[k]));
+        }
+    }
+  }
+  std::printf("charlie albedo: largest error %.3g, largest bound %.3g (+%.0e allowance)\n", worst, worstBound, kAllowance);
+}
+
+// E_avg against the reference's 2 int E mu dmu (nested adaptive), and k_p's table its closed form.
+TEST(Sheen, KernelAlbedoAvgAndKp) {
+  const int n = 8;
+  double worst = 0;
+  for (int gaf : {GAF_CHARLIE_SMITH, GAF_NEUBELT}) {
+    KernelTable t = runner().albedoAvg(NDF_CHARLIE, gaf, n, false);
+    for (int j = n - 1; j < n; ++j) {  // the nested reference takes minutes per r at small r
+      double r = static_cast<float>((j + 0.5) / n);
+      // 2 int E mu dmu of the reference's E by Gauss-Legendre 30 on [0, 0.1] and [0.1, 1] (E is smooth
+      // in mu at this r; reference::sheenAlbedoAvg's nested adaptive rule takes minutes)
+      double want = 0;
+      for (auto [lo, hi] : {std::pair{0.0, 0.1}, std::pair{0.1, 1.0}})
+        want += boost::math::quadrature::gauss<double, 30>::integrate(
+            [&](double mu) { return 2 * mu * reference::sheenAlbedo(gaf, r, mu); }, lo, hi);
+      double err = rel(t.planes[0][j], want);
+      EXPECT_LE(err, t.err[j] + kAllowance) << gafNames()[gaf] << " r " << r;
+      worst = std::max(worst, err);
+    }
+  }
+  std::printf("charlie albedo-avg: largest error %.3g\n", worst);
+  KernelTable kp = runner().kp(NDF_CHARLIE, 32, true);
+  for (int j = 0; j < 32; ++j) {
+    double r = static_cast<float>(j / 31.0), a = r * r;
+    EXPECT_NEAR(kp.planes[0][j], 2 * kPi * a / (1 + 2 * a), 1e-6) << r;
+  }
+}
+
+// ---- the command line ------------------------------------------------------------------------
+
+struct CmdResult {
+  int code;
+  std::string out;
+};
+CmdResult run(const std::string& args) {
+  std::string cmd = "'" BRDFBAKE_EXE "' " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  size_t got;
+  while ((got = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), got);
+  int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+fs::path freshDir(const std::string& name) {
+  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_sheen_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+// A sheen visibility with a non-sheen NDF, and charlie with a microfacet GAF: exit 64, one line that
+// says so, nothing written; the same for verify and energy.
+TEST(SheenCli, BadPairsAreUsageErrorsAndWriteNothing) {
+  fs::path d = freshDir("bad");
+  struct Case {
+    std::string args, says;
+  } cases[] = {
+      {"--ndf ggx --gaf neubelt", "sheen visibility with a non-sheen NDF"},
+      {"--ndf beckmann --gaf charlie-smith --table albedo", "sheen visibility with a non-sheen NDF"},
+      {"--ndf ggx,charlie --gaf charlie-smith", "sheen visibility with a non-sheen NDF ('ggx')"},
+      {"--ndf charlie --gaf smith-correlated", "ndf 'charlie' (sheen) takes the sheen visibilities"},
+      {"--ndf charlie --gaf neubelt --fresnel schlick", "has no Fresnel"},
+      {"--ndf charlie --gaf charlie-smith --grid node --table albedo", "infinite albedo at mu = 0"},
+      {"--preset gltf --ndf ggx", "--preset gltf bakes its own models"},
+      {"--preset unreal", "valid: gltf"},
+  };
+  for (const Case& c : cases) {
+    CmdResult r = run("bake " + c.args + " -o '" + d.string() + "'");
+    EXPECT_EQ(r.code, 64) << c.args << ": " << r.out;
+    EXPECT_NE(r.out.find(c.says), std::string::npos) << c.args << ": " << r.out;
+    EXPECT_FALSE(fs::exists(d)) << c.args;
+  }
+  CmdResult v = run("verify --ndf gaussian --gaf neubelt -o '" + d.string() + "'");
+  EXPECT_EQ(v.code, 64) << v.out;
+  EXPECT_NE(v.out.find("sheen visibility with a non-sheen NDF"), std::string::npos) << v.out;
+  CmdResult e = run("energy --ndf ggx --gaf charlie-smith");
+  EXPECT_EQ(e.code, 64) << e.out;
+  EXPECT_FALSE(fs::exists(d));
+}
+
+// --preset gltf: the three files glTF's reference shading samples, with their models, channels and
+// sizes, and values that match the reference at a few texels.
+TEST(SheenCli, GltfPresetWritesItsThreeTables) {
+  fs::path d = freshDir("preset");
+  CmdResult r = run("bake --preset gltf --size 16 -o '" + d.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  struct Want {
+    std::string file, ndf, gaf, table;
+  } wants[] = {{"splitsum_ggx_smith-correlated.exr", "ggx", "smith-correlated", "splitsum"},
+               {"splitsum_charlie_neubelt.exr", "charlie", "neubelt", "splitsum"},
+               {"albedo_charlie_charlie-smith.exr", "charlie", "charlie-smith", "albedo"}};
+  for (const Want& w : wants) {
+    SCOPED_TRACE(w.file);
+    TableImage t = readTableExr((d / w.file).string());
+    EXPECT_EQ(t.width, 16);
+    EXPECT_EQ(t.height, 16);
+    EXPECT_EQ(t.strings["brdf.ndf"], w.ndf);
+    EXPECT_EQ(t.strings["brdf.gaf"], w.gaf);
+    EXPECT_EQ(t.strings["brdf.table"], w.table);
+    EXPECT_LE(t.floats["brdf.error"], kGoal);
+    for (int k : {0, 5 * 16 + 3, 255}) {
+      double mu = (k % 16 + 0.5) / 16, rr = (k / 16 + 0.5) / 16;
+      if (w.ndf == "ggx") {
+        reference::Moments m = reference::albedo(NDF_GGX, GAF_SMITH_CORRELATED, static_cast<float>(rr), static_cast<float>(mu));
+        EXPECT_NEAR(t.planes[0][k], m.a, kGoal);  // R = A, G = B (glTF's lut_ggx)
+        EXPECT_NEAR(t.planes[1][k], m.b, kGoal);
+      } else {
+        double e = reference::sheenAlbedo(gafId(w.gaf), static_cast<float>(rr), static_cast<float>(mu));
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(t.planes[c][k], e, kGoal * std::max(1.0, e));  // R = G = B = E
+      }
+    }
+  }
+  EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator{}), 3);
+  fs::remove_all(d);
+}
+
+}  // namespace
