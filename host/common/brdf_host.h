@@ -22,6 +22,8 @@ typedef double real;
 #include "integrate/hemisphere.h"
 #include "integrate/albedo_avg.h"
 #include "integrate/diffuse_albedo.h"
+#include "brdf/btdf.h"
+#include "integrate/dielectric.h"
 }  // namespace brdf64
 
 namespace brdf32 {
@@ -40,4 +42,6 @@ typedef float real;
 #include "integrate/hemisphere.h"
 #include "integrate/albedo_avg.h"
 #include "integrate/diffuse_albedo.h"
+#include "brdf/btdf.h"
+#include "integrate/dielectric.h"
 }  // namespace brdf32
