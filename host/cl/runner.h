@@ -84,6 +84,17 @@ class KernelRunner {
   // one plane per channel, [((z - z0) * ny + y) * nx + x].
   std::vector<std::vector<float>> brdf3dSlab(const Brdf3dSpec& spec, int z0, int zn);
 
+  // The rough dielectric (kernels/dielectric.cl): planes E_R, E_T and the bound (relative to
+  // max(1, |value|)) over mu (nx) x r (ny) at each of the given etas, [(z * ny + y) * nx + x].
+  std::vector<std::vector<float>> dielectricSlab(int ndf, int gaf, int nx, int ny, const std::vector<double>& etas,
+                                                 bool nodeGrid, float target);
+  // Their averages over mu, 2 int E mu dmu, on the 31-node rule of kernels/integrate/albedo_avg.h (sums
+  // and bounds here in double): planes E_R,avg, E_T,avg and the bound, over r (nr) x the etas.
+  KernelTable dielectricAvg(int ndf, int gaf, int nr, const std::vector<double>& etas, bool nodeGrid, float target);
+
+  // Whether the device has cl_khr_fp64 (the 3D and dielectric programs then compute in double).
+  bool hasDouble() const { return fp64_; }
+
   // Threads prepareAll uses (default: hardware_concurrency; 1 = in order on this thread).
   void setBuildThreads(int n) { buildThreads_ = n; }
   // Directional albedo E(mu) of diffuse model `model` (kernels/brdf/diffuse.h, DIFFUSE_*) over

@@ -27,6 +27,8 @@ struct BakeRequest {
   std::string merl;                  // --brdf merl:FILE: a measured material's MERL file, or ""
   std::optional<double> sigma;       // energy: --sigma for oren-nayar (else swept)
   std::string coupling = "sum";      // energy: --coupling sum | albedo-scaling
+  // --table dielectric, dielectric-avg: the eta axis's range (--eta-range LO,HI)
+  std::optional<std::pair<double, double>> etaRange;
   std::vector<int> levels = {0, 1, 2, 3};                           // convergence: quadrature levels
   std::vector<int> samples = {16, 64, 256, 1024, 4096, 16384, 65536};  // convergence: MC samples
   // --table brdf3d (the others ignore these; given without it, they are a usage error)

@@ -32,11 +32,24 @@ struct VolumeJob {
   int cols = 1, rows = 1; // the EXR atlas: slices left to right, then top to bottom
 };
 
+// A rough-dielectric table (--table dielectric: 3D over (mu, r, eta coordinate), an EXR atlas of
+// eta slices; dielectric-avg: 2D over (r, eta coordinate)). bake/dielectric_bake.h.
+struct DielectricJob {
+  int ndf = 0, gaf = 0;
+  bool avg = false;          // dielectric-avg
+  int nx = 32, ny = 32, nz = 32;  // mu, r, eta (avg: nx = r, ny = eta, nz = 1)
+  bool nodeGrid = false, half = false;
+  double etaLo = 0.4, etaHi = 2.5;
+  int cols = 1, rows = 1;    // the atlas (3D)
+  std::string path;
+};
+
 struct Plan {
   std::string outDir;
   std::string device;
   std::vector<TableJob> jobs;
   std::vector<VolumeJob> volumes;
+  std::vector<DielectricJob> dielectric;
   std::string merl;  // a measured material's MERL file, the jobs' material (bake/merl_bake.h); "" = none
 };
 
