@@ -1,0 +1,179 @@
+// The rough dielectric (--table dielectric, dielectric-avg): the device's E_R, E_T against the
+// independent o-space reference (reference/dielectric_reference.h) over (mu, r, eta) including the
+// stiff cases, the limits eta = 1 and alpha -> 0, energy E_R + E_T <= 1, no NaN/Inf over stress
+// ranges, and the CLI (files, metadata, errors, nothing written on bad input).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "bake/dielectric_bake.h"
+#include "common/brdf_host.h"
+#include "exr/table_file.h"
+#include "reference/dielectric_reference.h"
+#include "test_device.h"
+
+namespace brdfbake {
+namespace {
+namespace fs = std::filesystem;
+using testing_device::rel;
+using testing_device::runner;
+
+const int kPairs[4][2] = {{NDF_GGX, GAF_SMITH}, {NDF_GGX, GAF_SMITH_CORRELATED}, {NDF_BECKMANN, GAF_SMITH},
+                          {NDF_BECKMANN, GAF_SMITH_CORRELATED}};
+
+// A node grid over mu and r (n x n: mu, r = 0, 1/(n-1), ..., 1) at the given etas: planes E_R, E_T, bound.
+std::vector<std::vector<float>> bake(int ndf, int gaf, int n, const std::vector<double>& etas) {
+  return runner().dielectricSlab(ndf, gaf, n, n, etas, true, kDielectricTarget);
+}
+size_t at(int n, int z, int y, int x) { return (static_cast<size_t>(z) * n + y) * n + x; }
+
+// Device against the reference, 1e-5 relative to max(1, |value|): stiff etas (1.0001, 1.01, 0.99,
+// TIR at 1/1.5), grazing-ish and normal views, rough and smooth-ish surfaces, all four pairs.
+TEST(Dielectric, KernelMatchesReference) {
+  const std::vector<double> etas = {1.0001, 1.01, 0.99, 1 / 1.5, 1.5, 2.5};
+  const int n = 5;  // mu, r in {0, .25, .5, .75, 1}
+  const int pts[3][2] = {{1, 1}, {2, 3}, {4, 2}};  // (mu index, r index): a few per eta, the reference is slow
+  double worst = 0;
+  for (int pi = 0; pi < 4; ++pi) {
+    int ndf = kPairs[pi][0], gaf = kPairs[pi][1];
+    auto t = bake(ndf, gaf, n, etas);
+    for (size_t z = 0; z < etas.size(); ++z) {
+      const auto& pt = pts[(z + pi) % 3];
+      double mu = pt[0] / 4.0, r = pt[1] / 4.0;
+      auto ref = reference::dielectricAlbedo(ndf, gaf, mu, r, etas[z]);
+      size_t k = at(n, z, pt[1], pt[0]);
+      double er = rel(t[0][k], ref.r), et = rel(t[1][k], ref.t);
+      worst = std::max({worst, er, et});
+      EXPECT_LT(er, 1e-5) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " mu " << mu << " r " << r << " eta " << etas[z];
+      EXPECT_LT(et, 1e-5) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " mu " << mu << " r " << r << " eta " << etas[z];
+      EXPECT_LE(std::max(er, et), t[2][k] + 1e-6) << "bound not honest at mu " << mu << " r " << r << " eta " << etas[z];
+    }
+  }
+  std::printf("dielectric: worst device error against the reference %.2e\n", worst);
+}
+
+// eta = 1: no interface. E_R = 0 exactly (F = 0), E_T the closed form (1 + Lambda) G_T(Lambda, Lambda)
+// (not 1: single scattering loses what hits the microsurface twice); and continuous there from both sides.
+TEST(Dielectric, EtaOneLimitAndContinuity) {
+  const int n = 5;
+  for (auto& pr : kPairs) {
+    auto t = bake(pr[0], pr[1], n, {1.0, 1.0001, 1 / 1.0001});
+    for (int y = 1; y < n; ++y)
+      for (int x = 1; x < n; ++x) {
+        double mu = x / 4.0, r = y / 4.0;
+        auto lim = reference::dielectricAlbedoEta1(pr[0], pr[1], mu, r);
+        EXPECT_EQ(t[0][at(n, 0, y, x)], 0.0f);
+        EXPECT_LT(rel(t[1][at(n, 0, y, x)], lim.t), 1e-5) << "mu " << mu << " r " << r;
+        for (int z = 1; z < 3; ++z) {  // E changes by O(eta - 1) = 1e-4 at most
+          EXPECT_LT(std::fabs(t[0][at(n, z, y, x)] - t[0][at(n, 0, y, x)]), 1e-4);
+          EXPECT_LT(std::fabs(t[1][at(n, z, y, x)] - t[1][at(n, 0, y, x)]), 1e-4);
+        }
+      }
+  }
+}
+
+// alpha -> 0: the smooth interface, E_R -> F(mu), E_T -> 1 - F(mu) (with TIR for eta < 1).
+TEST(Dielectric, SmoothLimit) {
+  for (auto& pr : kPairs)
+    for (double eta : {1.5, 1 / 1.5, 1.01})
+      for (double mu : {0.3, 0.7, 1.0}) {
+        double f = brdf64::fresnel_dielectric(eta, mu);
+        auto d0 = brdf64::diel_texel(pr[0], pr[1], mu, 0.0, eta, 2e-6);  // r = 0: exact
+        EXPECT_EQ(d0.er, f);
+        EXPECT_EQ(d0.et, 1 - f);
+        auto d = brdf64::diel_texel(pr[0], pr[1], mu, 0.01, eta, 2e-6);  // alpha = 1e-4
+        if (std::fabs(mu - std::sqrt(std::max(0.0, 1 - eta * eta))) > 0.05) {  // away from the critical angle
+          EXPECT_NEAR(d.er, f, 1e-4) << "eta " << eta << " mu " << mu;
+          EXPECT_NEAR(d.et, 1 - f, 1e-4) << "eta " << eta << " mu " << mu;
+        }
+      }
+}
+
+// Energy and finiteness over the stress ranges: a 9^3 node grid (mu = 0 and r = 0 edges included)
+// over eta from 0.2 to 5 and around 1; E_R + E_T <= 1 (up to float rounding), bounds under 1e-5.
+TEST(Dielectric, EnergyAndFinitenessOverStressRanges) {
+  const int n = 9;
+  std::vector<double> etas = {0.2, 0.5, 0.9, 0.99, 0.9999, 1.0, 1.0001, 1.001, 1.01, 1.2, 2.0, 5.0};
+  for (auto& pr : kPairs) {
+    auto t = bake(pr[0], pr[1], n, etas);
+    double maxSum = 0, maxBound = 0;
+    for (size_t k = 0; k < t[0].size(); ++k) {
+      ASSERT_TRUE(std::isfinite(t[0][k]) && std::isfinite(t[1][k]) && std::isfinite(t[2][k])) << k;
+      EXPECT_GE(t[0][k], 0.0f);
+      EXPECT_GE(t[1][k], 0.0f);
+      maxSum = std::max(maxSum, static_cast<double>(t[0][k]) + t[1][k]);
+      maxBound = std::max(maxBound, static_cast<double>(t[2][k]));
+    }
+    EXPECT_LE(maxSum, 1 + 1e-6) << ndfNames()[pr[0]] << "+" << gafNames()[pr[1]];
+    EXPECT_LT(maxBound, 1e-5) << ndfNames()[pr[0]] << "+" << gafNames()[pr[1]];
+  }
+}
+
+struct CmdResult {
+  int code;
+  std::string out;
+};
+CmdResult run(const std::string& args) {
+  std::string cmd = "'" BRDFBAKE_EXE "' " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  size_t k;
+  while ((k = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), k);
+  int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+fs::path freshDir(const std::string& name) {
+  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_diel_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+TEST(DielectricCli, BakesBothTablesWithMetadata) {
+  fs::path d = freshDir("bake");
+  auto r = run("--table dielectric,dielectric-avg --ndf beckmann --gaf smith --size 4 --eta-range 0.5,2 -o '" +
+               d.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  TableImage cube = readTableExr((d / "dielectric_beckmann_smith.exr").string());
+  EXPECT_EQ(cube.strings.at("brdf.table"), "dielectric");
+  EXPECT_EQ(cube.strings.at("brdf.axes"), "mu,r,s");
+  EXPECT_EQ(cube.strings.at("brdf.size"), "4x4x4");
+  EXPECT_EQ(cube.strings.at("brdf.atlas"), "2x2");
+  EXPECT_EQ(cube.width, 8);
+  EXPECT_EQ(cube.v2f.at("brdf.eta.range").second, 2.0f);
+  EXPECT_LT(cube.floats.at("brdf.error"), 1e-5f);
+  EXPECT_NE(cube.strings.at("brdf.eta.coordinate").find("(eta - 1)/(eta + 1)"), std::string::npos);
+  for (size_t k = 0; k < cube.planes[0].size(); ++k)  // B = R + G
+    EXPECT_NEAR(cube.planes[2][k], cube.planes[0][k] + cube.planes[1][k], 1e-6);
+  TableImage avg = readTableExr((d / "dielectric-avg_beckmann_smith.exr").string());
+  EXPECT_EQ(avg.strings.at("brdf.table"), "dielectric-avg");
+  EXPECT_EQ(avg.width, 4);
+  EXPECT_EQ(avg.height, 4);
+  for (size_t k = 0; k < avg.planes[0].size(); ++k) EXPECT_LE(avg.planes[2][k], 1 + 1e-6);
+  fs::remove_all(d);
+}
+
+TEST(DielectricCli, BadInputExits64AndWritesNothing) {
+  fs::path d = freshDir("bad");
+  const char* bad[] = {"--table dielectric --eta-range 0,2", "--table dielectric --eta-range -1,2",
+                       "--table dielectric --eta-range 2,1", "--table dielectric --eta-range 1.5",
+                       "--table dielectric --ndf blinn-phong", "--table dielectric-avg --gaf schlick-ggx",
+                       "--table dielectric --fresnel dielectric", "--table albedo --eta-range 1,2",
+                       "--table dielectric --size 4,4,4"};
+  for (const char* a : bad) {
+    auto r = run(std::string(a) + " -o '" + d.string() + "'");
+    EXPECT_EQ(r.code, 64) << a << ": " << r.out;
+    EXPECT_FALSE(r.out.empty()) << a;
+    EXPECT_FALSE(fs::exists(d)) << a;
+  }
+}
+
+}  // namespace
+}  // namespace brdfbake
