@@ -69,11 +69,11 @@ TEST(Dielectric, EtaOneLimitAndContinuity) {
       for (int x = 1; x < n; ++x) {
         double mu = x / 4.0, r = y / 4.0;
         auto lim = reference::dielectricAlbedoEta1(pr[0], pr[1], mu, r);
-        EXPECT_EQ(t[0][at(n, 0, y, x)], 0.0f);
+        EXPECT_LT(t[0][at(n, 0, y, x)], 1e-12f);  // F(eta = 1) = 0 up to the rounding of g = sqrt(c^2)
         EXPECT_LT(rel(t[1][at(n, 0, y, x)], lim.t), 1e-5) << "mu " << mu << " r " << r;
-        for (int z = 1; z < 3; ++z) {  // E changes by O(eta - 1) = 1e-4 at most
+        for (int z = 1; z < 3; ++z) {  // E changes by O(eta - 1): slope times 1e-4
           EXPECT_LT(std::fabs(t[0][at(n, z, y, x)] - t[0][at(n, 0, y, x)]), 1e-4);
-          EXPECT_LT(std::fabs(t[1][at(n, z, y, x)] - t[1][at(n, 0, y, x)]), 1e-4);
+          EXPECT_LT(std::fabs(t[1][at(n, z, y, x)] - t[1][at(n, 0, y, x)]), 3e-4);
         }
       }
   }
