@@ -123,6 +123,8 @@ KernelTable bakeOne(KernelRunner& runner, const BenchTable& t) {
     case TableKind::FresnelAvg:  // not in the bench's sets (host-side, no kernel)
     case TableKind::Brdf3d:      // --volume
     case TableKind::AshikhminShirley:
+    case TableKind::Dielectric:  // --dielectric
+    case TableKind::DielectricAvg:
       break;
   }
   return runner.kp(t.ndf, t.size, false);
