@@ -6,10 +6,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -60,23 +62,56 @@ TEST(Dielectric, KernelMatchesReference) {
 }
 
 // eta = 1: no interface. E_R = 0 exactly (F = 0), E_T the closed form (1 + Lambda) G_T(Lambda, Lambda)
-// (not 1: single scattering loses what hits the microsurface twice); and continuous there from both sides.
-TEST(Dielectric, EtaOneLimitAndContinuity) {
+// (not 1: single scattering loses what hits the microsurface twice), on the device.
+TEST(Dielectric, EtaOneClosedForm) {
   const int n = 5;
   for (auto& pr : kPairs) {
-    auto t = bake(pr[0], pr[1], n, {1.0, 1.0001, 1 / 1.0001});
+    auto t = bake(pr[0], pr[1], n, {1.0});
     for (int y = 1; y < n; ++y)
       for (int x = 1; x < n; ++x) {
         double mu = x / 4.0, r = y / 4.0;
         auto lim = reference::dielectricAlbedoEta1(pr[0], pr[1], mu, r);
         EXPECT_LT(t[0][at(n, 0, y, x)], 1e-12f);  // F(eta = 1) = 0 up to the rounding of g = sqrt(c^2)
         EXPECT_LT(rel(t[1][at(n, 0, y, x)], lim.t), 1e-5) << "mu " << mu << " r " << r;
-        for (int z = 1; z < 3; ++z) {  // E changes by O(eta - 1): slope times 1e-4
-          EXPECT_LT(std::fabs(t[0][at(n, z, y, x)] - t[0][at(n, 0, y, x)]), 1e-4);
-          EXPECT_LT(std::fabs(t[1][at(n, z, y, x)] - t[1][at(n, 0, y, x)]), 3e-4);
-        }
       }
   }
+}
+
+// Continuity at eta = 1 from both sides. E is continuous there but steep and kinked: the loss of
+// transmission to TIR (eta < 1, i.h < sqrt(1 - eta^2)) and to the Fresnel layer (eta > 1, width
+// sqrt(eta^2 - 1)) are both O(|eta - 1|) with different constants, and the slope grows like 1/alpha^2
+// at grazing views (up to ~1.6e3 at mu = 0, r = 1/4). So the test checks the one-sided difference
+// quotients q(d) = (E(1 +- d) - E(1))/(+-d) at d = 1e-4, 1e-5, 1e-6: they converge, their changes
+// shrink (by 0.3 to 0.7 per decade measured: E = E(1) + a d + O(d^1.5)). A step S at eta = 1 would
+// make q(d) ~ S/d and its changes grow tenfold per decade (any S above ~3e-8 fails here), a cusp
+// sqrt(d) by sqrt(10). In double on the host (the device's code; it outputs float, whose rounding
+// would swamp q at d = 1e-6).
+TEST(Dielectric, EtaOneContinuity) {
+  const double ds[3] = {1e-4, 1e-5, 1e-6};
+  double worstRatio = 0, worstQ = 0;
+  for (auto& pr : kPairs)
+    for (int y = 1; y <= 4; ++y)
+      for (int x = 0; x <= 4; ++x) {
+        double mu = x / 4.0, r = y / 4.0;
+        auto e1 = brdf64::diel_texel(pr[0], pr[1], mu, r, 1.0, kDielectricTarget);
+        for (int sg : {-1, 1}) {
+          double qr[3], qt[3];
+          for (int k = 0; k < 3; ++k) {
+            auto e = brdf64::diel_texel(pr[0], pr[1], mu, r, 1.0 + sg * ds[k], kDielectricTarget);
+            qr[k] = (e.er - e1.er) / (sg * ds[k]);
+            qt[k] = (e.et - e1.et) / (sg * ds[k]);
+          }
+          for (const double* q : {qr, qt}) {
+            double d45 = std::fabs(q[1] - q[0]), d56 = std::fabs(q[2] - q[1]);
+            EXPECT_LE(d56, d45 + 0.02) << ndfNames()[pr[0]] << "+" << gafNames()[pr[1]] << " mu " << mu << " r "
+                                             << r << " side " << sg << " q " << q[0] << " " << q[1] << " " << q[2];
+            if (d45 > 0.02) worstRatio = std::max(worstRatio, d56 / d45);
+            worstQ = std::max(worstQ, std::fabs(q[2]));
+          }
+        }
+      }
+  std::printf("eta = 1: largest |dE/deta| %.3g, largest change ratio of the quotients per decade %.3f\n", worstQ,
+              worstRatio);
 }
 
 // alpha -> 0: the smooth interface, E_R -> F(mu), E_T -> 1 - F(mu) (with TIR for eta < 1).
