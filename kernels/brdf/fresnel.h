@@ -54,7 +54,7 @@ BRDF_FN real fresnel_conductor(param_t eta, param_t k, real c) {
   c = fmin(fabs(c), RC(1.0));
   real s2 = (RC(1.0) - c) * (RC(1.0) + c);
   param_t e2 = eta * eta, k2 = k * k;
-  real t = e2 - k2 - s2;
+  real t = (eta - RC(1.0)) * (eta + RC(1.0)) + c * c - k2; /* e2 - k2 - s2 without cancellation near eta = 1 */
   real ab2 = sqrt(t * t + RC(4.0) * e2 * k2);
   real a = sqrt(fmax(RC(0.5) * (ab2 + t), RC(0.0)));
   real c2 = c * c, ac = RC(2.0) * a * c;
