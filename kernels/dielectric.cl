@@ -25,16 +25,14 @@ kernel void bake_dielectric(global float* out, global const real* etas, int nx, 
   out[2 * plane + at] = (float)(fmax(d.err_r, d.err_t));
 }
 
-/* The averages' nodes: E_R, E_T at mu = AVG_MU[i] for r_j (ny of them on the grid) and etas[k],
- * [((k * nr + j) * AVG_NODES + i)], planes E_R, E_T, bound (absolute, the larger). */
-kernel void bake_dielectric_nodes(global float* out, global const real* etas, int nr, int ne, int node_grid,
-                                  float target) {
-  int i = get_global_id(0), jk = get_global_id(1);
-  if (i >= AVG_NODES || jk >= nr * ne) return;
-  int j = jk % nr, k = jk / nr;
-  DielResult d = diel_texel(BRDF_NDF, BRDF_GAF, AVG_MU[i], diel_grid(j, nr, node_grid), etas[k], (real)target);
-  size_t plane = (size_t)AVG_NODES * nr * ne, at = (size_t)jk * AVG_NODES + i;
-  out[at] = (float)d.er;
-  out[plane + at] = (float)d.et;
-  out[2 * plane + at] = (float)(fmax(d.err_r, d.err_t));
+/* Points (mu[k], r[k], eta[k]), k < n: the averages' nodes (host/bake/dielectric_avg.cpp chooses them
+ * per (r, eta)); planes E_R, E_T, bound (absolute, the larger) one after another, [c * n + k]. */
+kernel void bake_dielectric_points(global float* out, global const real* mus, global const real* rs,
+                                   global const real* etas, int n, float target) {
+  int k = get_global_id(0);
+  if (k >= n) return;
+  DielResult d = diel_texel(BRDF_NDF, BRDF_GAF, mus[k], rs[k], etas[k], (real)target);
+  out[k] = (float)d.er;
+  out[n + k] = (float)d.et;
+  out[2 * n + k] = (float)(fmax(d.err_r, d.err_t));
 }

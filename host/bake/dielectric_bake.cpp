@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "bake/dielectric_avg.h"
 #include "bake/volume.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"
@@ -30,7 +31,10 @@ std::string methodText(bool avg) {
       "coordinate, phi split at every x = i.h feature (domain edges, TIR at sqrt(1 - eta^2), n.o_t = 0, a graded "
       "Fresnel layer of width sqrt(|eta^2 - 1|) near eta = 1), GK15 panels under a smoothstep substitution, outer "
       "axis refined adaptively; bound per texel |K15 - G7| + inner bounds";
-  if (avg) m += "; averages by the 31-node Gauss-Kronrod rule in mu of albedo-avg (bound |K31 - G15| + inner bounds)";
+  if (avg)
+    m += "; averages 2 int E mu dmu by an adaptive rule in mu (host/bake/dielectric_avg.cpp): panels split at the "
+         "critical cosine sqrt(1 - eta^2), smoothstep-mapped GK15, halved where |K15 - G7| is largest, nodes per (r, "
+         "eta); bound sum |K15 - G7| + weighted node bounds";
   return m + "; brdf.error: the largest bound + arithmetic allowance + storage rounding";
 }
 }  // namespace
@@ -56,14 +60,28 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
   TableImage& img = out.image;
   std::vector<float> bounds;
   if (job.avg) {
-    KernelTable kt = runner.dielectricAvg(job.ndf, job.gaf, job.nx, dielectricEtas(job, 0, job.ny), job.nodeGrid,
-                                          kDielectricTarget);
-    std::vector<float> sum(kt.planes[0].size());
-    for (size_t t = 0; t < sum.size(); ++t) sum[t] = kt.planes[0][t] + kt.planes[1][t];
-    img.planes = {kt.planes[0], kt.planes[1], sum};
+    // the averages' rule (bake/dielectric_avg.h) on (r, eta) = (x, y), its nodes on the device
+    std::vector<double> etas = dielectricEtas(job, 0, job.ny), rs, es;
+    for (int y = 0; y < job.ny; ++y)
+      for (int x = 0; x < job.nx; ++x) {
+        rs.push_back(job.nodeGrid ? (job.nx > 1 ? static_cast<double>(x) / (job.nx - 1) : 0.0) : (x + 0.5) / job.nx);
+        es.push_back(etas[y]);
+      }
+    DielectricEval eval = [&](const DielectricPoints& p) {
+      auto pl = runner.dielectricPoints(job.ndf, job.gaf, p.mu, p.r, p.eta, kDielectricTarget);
+      return DielectricValues{{pl[0].begin(), pl[0].end()}, {pl[1].begin(), pl[1].end()}, {pl[2].begin(), pl[2].end()}};
+    };
+    DielectricAverages av = dielectricAverages(eval, rs, es);
+    img.planes.assign(3, std::vector<float>(rs.size()));
+    for (size_t t = 0; t < rs.size(); ++t) {
+      img.planes[0][t] = static_cast<float>(av.er[t]);
+      img.planes[1][t] = static_cast<float>(av.et[t]);
+      img.planes[2][t] = static_cast<float>(av.er[t] + av.et[t]);
+      bounds.push_back(static_cast<float>(av.bound[t]));
+      out.nodes += av.nodes[t];
+    }
     img.width = job.nx;
     img.height = job.ny;
-    bounds = kt.err;
   } else {
     out.cube.assign(3, {});
     for (int z0 = 0; z0 < job.nz; z0 += job.cols) {

@@ -28,6 +28,7 @@ struct DielectricTable {
   TableImage image;                      // header (3D) or the whole 2D table (avg)
   std::vector<std::vector<float>> cube;  // 3D only
   double maxBound = 0;                   // the largest texel bound (quadrature), before allowances
+  long long nodes = 0;                   // avg: E(mu) evaluations the averages' rule took
 };
 
 // Computes the table on the device (the 3D one slab by slab of `job.cols` slices) and checks that

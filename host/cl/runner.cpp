@@ -105,11 +105,11 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
     setWeightArgs(k, 11, {});
     k.setArg(15, -1);
   } else if (name == kDielectric || name == kDielectricNodes) {
-    k.setArg(0, dummy);
-    k.setArg(1, dummy);
-    int ints = name == kDielectric ? 4 : 3;  // (nx, ny, zn, grid) or (nr, ne, grid), then the target
-    for (int i = 2; i < 2 + ints; ++i) k.setArg(i, 0);
-    k.setArg(2 + ints, 0.0f);
+    // (out, etas, nx, ny, zn, grid, target) or (out, mus, rs, etas, n, target)
+    int bufs = name == kDielectric ? 2 : 4, ints = name == kDielectric ? 4 : 1;
+    for (int i = 0; i < bufs; ++i) k.setArg(i, dummy);
+    for (int i = bufs; i < bufs + ints; ++i) k.setArg(i, 0);
+    k.setArg(bufs + ints, 0.0f);
   } else if (name == kBrdf3d) {
     k.setArg(0, dummy);
     k.setArg(1, dummy);

@@ -88,9 +88,11 @@ class KernelRunner {
   // max(1, |value|)) over mu (nx) x r (ny) at each of the given etas, [(z * ny + y) * nx + x].
   std::vector<std::vector<float>> dielectricSlab(int ndf, int gaf, int nx, int ny, const std::vector<double>& etas,
                                                  bool nodeGrid, float target);
-  // Their averages over mu, 2 int E mu dmu, on the 31-node rule of kernels/integrate/albedo_avg.h (sums
-  // and bounds here in double): planes E_R,avg, E_T,avg and the bound, over r (nr) x the etas.
-  KernelTable dielectricAvg(int ndf, int gaf, int nr, const std::vector<double>& etas, bool nodeGrid, float target);
+  // E_R, E_T and their bound (absolute, the larger) at points (mus[k], rs[k], etas[k]): the nodes of
+  // the averages' rule (bake/dielectric_avg.h), one plane each.
+  std::vector<std::vector<float>> dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
+                                                   const std::vector<double>& rs, const std::vector<double>& etas,
+                                                   float target);
 
   // Whether the device has cl_khr_fp64 (the 3D and dielectric programs then compute in double).
   bool hasDouble() const { return fp64_; }

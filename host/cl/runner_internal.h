@@ -19,7 +19,7 @@ constexpr int kVolumeProgram = 1000;
 // The rough dielectric's program (dielectricKernelSource): under the pair's GAF + this.
 constexpr int kDielectricProgram = 2000;
 inline const char* const kDielectric = "bake_dielectric";
-inline const char* const kDielectricNodes = "bake_dielectric_nodes";
+inline const char* const kDielectricNodes = "bake_dielectric_points";
 
 // On a CPU device (PoCL) every launch uses these local sizes: PoCL generates one work-group
 // function per kernel and local size, a few tenths of a second each, so one size per kernel keeps

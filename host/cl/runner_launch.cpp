@@ -227,7 +227,7 @@ std::vector<std::vector<float>> KernelRunner::brdf3dSlab(const Brdf3dSpec& spec,
 namespace brdfbake {
 
 namespace {
-// The etas as the program's `real` (double where the device has fp64).
+// Reals (etas, mus, rs) as the program's `real` (double where the device has fp64).
 cl::Buffer etaBuffer(const cl::Context& ctx, const std::vector<double>& etas, bool fp64) {
   if (fp64)
     return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, etas.size() * sizeof(double),
@@ -261,47 +261,30 @@ std::vector<std::vector<float>> KernelRunner::dielectricSlab(int ndf, int gaf, i
   return planes;
 }
 
-KernelTable KernelRunner::dielectricAvg(int ndf, int gaf, int nr, const std::vector<double>& etas, bool nodeGrid,
-                                        float target) {
+std::vector<std::vector<float>> KernelRunner::dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
+                                                               const std::vector<double>& rs,
+                                                               const std::vector<double>& etas, float target) {
   Compiled& c = compiled(ndf, gaf + kDielectricProgram, kDielectricNodes);
   Slot& s = *slots_[c.slot];
-  const int m = AVG_NODES, ne = static_cast<int>(etas.size());
-  size_t plane = static_cast<size_t>(m) * nr * ne;
-  cl::Buffer out = outBuffer(s.context, plane * 3);
-  cl::Buffer eb = etaBuffer(s.context, etas, fp64_);
+  const int n = static_cast<int>(mus.size());
+  std::vector<std::vector<float>> planes(3);
+  if (n == 0) return planes;
+  cl::Buffer out = outBuffer(s.context, static_cast<size_t>(n) * 3);
+  cl::Buffer mb = etaBuffer(s.context, mus, fp64_), rb = etaBuffer(s.context, rs, fp64_),
+             eb = etaBuffer(s.context, etas, fp64_);
   cl::Kernel k(c.program, kDielectricNodes);
   int a = 0;
   k.setArg(a++, out);
+  k.setArg(a++, mb);
+  k.setArg(a++, rb);
   k.setArg(a++, eb);
-  for (int v : {nr, ne, nodeGrid ? 1 : 0}) k.setArg(a++, v);
+  k.setArg(a++, n);
   k.setArg(a++, target);
-  run(c, k, m, static_cast<size_t>(nr) * ne);
-  std::vector<float> all = readBack(s.queue, out, plane * 3);
-  // the rule in double (kernels/integrate/albedo_avg.h), as albedoAvg: value sum wk 2 mu E, bound
-  // |sum wd 2 mu E| + sum wk 2 mu err_E, the larger of the two lobes'
-  KernelTable t;
-  t.width = nr;
-  t.height = ne;
-  t.planes.assign(2, std::vector<float>(static_cast<size_t>(nr) * ne));
-  t.err.resize(static_cast<size_t>(nr) * ne);
-  for (size_t jk = 0; jk < static_cast<size_t>(nr) * ne; ++jk) {
-    double err = 0;
-    for (int lobe = 0; lobe < 2; ++lobe) {
-      double sum = 0, diff = 0, inner = 0;
-      for (int i = 0; i < m; ++i) {
-        double mu = brdf64::AVG_MU[i];
-        size_t x = jk * m + i;
-        double f = 2 * mu * all[lobe * plane + x];
-        sum += brdf64::AVG_WK[i] * f;
-        diff += brdf64::AVG_WD[i] * f;
-        inner += brdf64::AVG_WK[i] * 2 * mu * all[2 * plane + x];
-      }
-      t.planes[lobe][jk] = static_cast<float>(sum);
-      err = std::max(err, std::fabs(diff) + inner);
-    }
-    t.err[jk] = static_cast<float>(err);
-  }
-  return t;
+  run(c, k, static_cast<size_t>(n), 0);
+  std::vector<float> all = readBack(s.queue, out, static_cast<size_t>(n) * 3);
+  for (int ch = 0; ch < 3; ++ch)
+    planes[ch].assign(all.begin() + static_cast<std::ptrdiff_t>(ch) * n, all.begin() + static_cast<std::ptrdiff_t>(ch + 1) * n);
+  return planes;
 }
 
 }  // namespace brdfbake
