@@ -59,6 +59,17 @@ TEST(Dielectric, KernelMatchesReference) {
       EXPECT_LE(std::max(er, et), t[2][k] + 1e-6) << "bound not honest at mu " << mu << " r " << r << " eta " << etas[z];
     }
   }
+  // grazing view under TIR of the mean surface (sin theta_i > eta): the transmitted lobe hugs the
+  // horizon from below. The reference missed 5e-5 of E_T here until its circles split at the horizon
+  // (found by brdfbake-bench --dielectric, confirmed by Monte Carlo at 2^25 samples).
+  {
+    double mu = 1.5 / 32, r = 15.5 / 32, eta = 0.44051;
+    auto t = runner().dielectricPoints(NDF_GGX, GAF_SMITH_CORRELATED, {mu}, {r}, {eta}, kDielectricTarget);
+    auto ref = reference::dielectricAlbedo(NDF_GGX, GAF_SMITH_CORRELATED, mu, r, eta);
+    double er = rel(t[0][0], ref.r), et = rel(t[1][0], ref.t);
+    worst = std::max({worst, er, et});
+    EXPECT_LE(std::max(er, et), t[2][0] + 1e-7) << "grazing TIR: E_T " << t[1][0] << " ref " << ref.t;
+  }
   std::printf("dielectric: worst device error against the reference %.2e\n", worst);
 }
 

@@ -81,7 +81,11 @@ double lobe(const Setup& s, const dvec3& centre, double w, bool upper) {
         if ((o.z > 0) != upper) return 0.0;
         return bsdfCos(s, o);
       };
-      return 2 * sb * detail::adapt(inner, 0.0, kPi, 1e-9, 10, 1e-8);
+      // the horizon o.z = 0 cuts the circle at cos(gamma) = -cb centre.z/(sb e1.z): a jump, split there
+      double cg = sb * e1.z != 0 ? -cb * centre.z / (sb * e1.z) : 2.0;
+      if (cg <= -1 || cg >= 1) return 2 * sb * detail::adapt(inner, 0.0, kPi, 1e-9, 10, 1e-8);
+      double g = std::acos(cg);
+      return 2 * sb * (detail::adapt(inner, 0.0, g, 1e-9, 10, 1e-8) + detail::adapt(inner, g, kPi, 1e-9, 10, 1e-8));
     };
     total += detail::adapt(outer, br[k], br[k + 1], 1e-8, 10, 1e-8);
   }
