@@ -82,6 +82,10 @@ TEST(Scene, ExampleScenesPlanTheirTables) {
                                    "splitsum_ggx_smith-correlated_burley.exr",
                                    "albedo_ggx_smith-correlated_dielectric.exr"}));
   for (const auto& l : lines(r.out)) EXPECT_TRUE(fs::path(l).is_absolute()) << l;
+  r = run("plan '" + kExamples + "glass.toml' -o '" + d.string() + "' --list");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(names(lines(r.out)), (std::set<std::string>{"splitsum_ggx_smith-correlated.exr", "dielectric_ggx_smith-correlated.exr",
+                                                         "dielectric-avg_ggx_smith-correlated.exr"}));
   r = run("plan '" + kExamples + "forward-mobile.toml' -o '" + d.string() + "' --list");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(names(lines(r.out)),
@@ -157,6 +161,7 @@ TEST(Scene, BadManifestsNameFileLineColumnAndWriteNothing) {
       {"[scene]\nname = \"x\"\n", "the scene has no materials"},
       {"[[material]]\nname = \"a\"\nbrdf3d = true\nroughness = [0.1, 0.5]\n", "brdf3d = true needs one roughness"},
       {"[[material]]\nname = \"a\"\ndiffuse = \"lambert\"\nsigma = 0.3\n", "material.sigma: only diffuse = \"oren-nayar\""},
+      {"[[material]]\nname = \"a\"\ngaf = \"schlick-ggx\"\ntransmission = true\n", "transmission = true needs ndf ggx or beckmann"},
   };
   fs::path out = d / "out";
   for (const Case& c : cases) {
@@ -199,7 +204,7 @@ TEST(Scene, ShardsAreDeterministicAndCoverThePlanOnce) {
         seen.insert(a.tables[k].path);
         load += a.tables[k].cost;
       }
-      EXPECT_EQ(a.plan.jobs.size() + a.plan.volumes.size(), a.tables.size());
+      EXPECT_EQ(a.plan.jobs.size() + a.plan.volumes.size() + a.plan.dielectric.size(), a.tables.size());
       EXPECT_LE(load, total / n + costliest + 1e-12) << i << "/" << n;
     }
     std::multiset<std::string> all;
@@ -216,7 +221,8 @@ TEST(Scene, GltfFilesPlanGltfTables) {
   std::string json = R"({"asset":{"version":"2.0"},"extensionsUsed":["KHR_materials_ior","KHR_materials_sheen"],
     "materials":[{"name":"paint","pbrMetallicRoughness":{"roughnessFactor":0.4}},
                  {"name":"glass","extensions":{"KHR_materials_ior":{"ior":1.45}}},
-                 {"name":"velvet","extensions":{"KHR_materials_sheen":{"sheenRoughnessFactor":0.5}}}]})";
+                 {"name":"velvet","extensions":{"KHR_materials_sheen":{"sheenRoughnessFactor":0.5}}},
+                 {"name":"water","extensions":{"KHR_materials_transmission":{"transmissionFactor":1.0}}}]})";
   write(d / "model.gltf", json);
   // GLB: header, then one JSON chunk padded with spaces to 4 bytes
   std::string body = json;
@@ -229,7 +235,9 @@ TEST(Scene, GltfFilesPlanGltfTables) {
     ASSERT_EQ(r.code, 0) << file << "\n" << r.out;
     EXPECT_EQ(names(lines(r.out)), (std::set<std::string>{"splitsum_ggx_smith-correlated.exr",
                                                            "albedo_charlie_charlie-smith.exr",
-                                                           "splitsum_charlie_neubelt.exr"}))
+                                                           "splitsum_charlie_neubelt.exr",
+                                                           "dielectric_ggx_smith-correlated.exr",
+                                                           "dielectric-avg_ggx_smith-correlated.exr"}))
         << file;
     r = run("plan '" + (d / file).string() + "' -o '" + (d / "out").string() + "'");
     EXPECT_NE(r.out.find("for paint: image-based lighting"), std::string::npos) << r.out;

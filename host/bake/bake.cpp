@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "bake/ashikhmin_textures.h"
+#include "bake/dielectric_bake.h"
 #include "bake/merl_bake.h"
 #include "bake/format_outputs.h"
 #include "bake/interp_estimate.h"
@@ -223,6 +224,9 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
     }
     case TableKind::AshikhminShirley:  // returned above
       break;
+    case TableKind::Dielectric:
+    case TableKind::DielectricAvg:
+      throw Error(kExitSoftware, "internal: a dielectric table is baked by bake/dielectric_bake.cpp, not computeTable");
   }
   // One-value tables repeat it in R, G and B: a lone R channel reads back as zeros through
   // FreeImage, and three.js's EXRLoader takes only R, G, B, A and Y; R, G, B reads everywhere.
@@ -297,7 +301,8 @@ std::vector<TableReport> runPlan(const Plan& plan) {
   checkOutputDir(plan.outDir);
   checkVolumeSpace(plan.outDir, plan.volumes);
   DeviceEntry dev = selectDevice(plan.device);
-  guardInterrupts("abandoned " + std::to_string(plan.jobs.size() + plan.volumes.size()) + " table(s) for " +
+  guardInterrupts("abandoned " + std::to_string(plan.jobs.size() + plan.volumes.size() + plan.dielectric.size()) +
+                  " table(s) for " +
                   plan.outDir + "/");
   KernelRunner runner(dev.device);
   // every program (and kernel) the plan needs, built at once on parallel contexts
@@ -305,6 +310,8 @@ std::vector<TableReport> runPlan(const Plan& plan) {
   for (const TableJob& j : plan.jobs)
     if (j.ndf >= 0) needs.push_back({j.kind, j.ndf, j.gaf});
   for (const VolumeJob& v : plan.volumes) needs.push_back({TableKind::Brdf3d, v.spec.ndf, v.spec.gaf});
+  for (const DielectricJob& d : plan.dielectric)
+    needs.push_back({d.avg ? TableKind::DielectricAvg : TableKind::Dielectric, d.ndf, d.gaf});
   runner.prepareAll(needs);
   std::vector<TableImage> images;
   std::vector<TableReport> tables;
@@ -361,6 +368,24 @@ std::vector<TableReport> runPlan(const Plan& plan) {
       reports.push_back(r);
     }
   }
+  // rough dielectric tables: computed and checked whole before anything is written
+  std::vector<DielectricTable> diel;
+  diel.reserve(plan.dielectric.size());
+  for (const DielectricJob& d : plan.dielectric) {
+    TableReport r;
+    diel.push_back(computeDielectric(runner, d, &r.seconds));
+    extras(d.path, diel.back().image);
+    r.path = d.path;
+    r.table = d.avg ? "dielectric-avg" : "dielectric";
+    r.ndf = ndfNames()[d.ndf];
+    r.gaf = gafNames()[d.gaf];
+    r.width = d.nx;
+    r.height = d.ny;
+    r.depth = d.nz;
+    r.errorBound = diel.back().image.floats["brdf.error"];
+    reports.push_back(r);
+  }
+  for (size_t i = 0; i < plan.dielectric.size(); ++i) files.push_back(dielectricOutput(plan.dielectric[i], diel[i]));
   commitOutputs(plan.outDir, files);
   // the kernel time of each 3D table, now that its files are written
   for (TableReport& r : reports)

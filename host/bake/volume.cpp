@@ -140,6 +140,34 @@ void checkVolumeSpace(const std::string& dir, const std::vector<VolumeJob>& volu
   }
 }
 
+void writeAtlasTemporary(const std::string& tmp, const std::string& path, const TableImage& header, bool half,
+                         std::array<int, 3> n, int cols,
+                         const std::function<std::vector<std::vector<float>>(int z0, int zn)>& slab,
+                         const std::string& what) {
+  const int nx = n[0], ny = n[1], nz = n[2];
+  // one atlas row of slices per block: slices z0 .. z0 + cols - 1, ny scanlines
+  const size_t w = static_cast<size_t>(nx) * cols;
+  writeTableExrRowsTemporary(tmp, path, header, half, ny, [&](int y0, int rows, std::vector<std::vector<float>>& out) {
+    int z0 = (y0 / ny) * cols, zn = std::min(cols, nz - z0);
+    std::vector<std::vector<float>> planes;
+    if (zn > 0) planes = slab(z0, zn);
+    int nchan = static_cast<int>(planes.size());
+    out.assign(3, std::vector<float>(w * rows, 0.0f));
+    for (int c = 0; c < 3; ++c) {
+      if (nchan == 0) break;
+      const std::vector<float>& src = planes[nchan == 3 ? c : 0];
+      for (int zl = 0; zl < zn; ++zl)
+        for (int y = 0; y < ny; ++y)
+          std::copy_n(src.begin() + static_cast<std::ptrdiff_t>((static_cast<size_t>(zl) * ny + y) * nx), nx,
+                      out[c].begin() + static_cast<std::ptrdiff_t>(y * w + static_cast<size_t>(zl) * nx));
+    }
+    for (const auto& p : out)
+      for (float v : p)
+        if (!std::isfinite(v))
+          throw Error(kExitSoftware, "internal error: " + what + " has a value that is not finite; nothing was written");
+  });
+}
+
 OutputFile volumeOutput(KernelRunner& runner, const VolumeJob& job, const TableImage& header, double* seconds,
                         uint64_t* peakSlab) {
   OutputFile f;
@@ -160,30 +188,9 @@ OutputFile volumeOutput(KernelRunner& runner, const VolumeJob& job, const TableI
     };
     return f;
   }
-  const int cols = job.cols;
-  f.write = [timed, s, cols, header, half = job.half, path = job.path](const std::string& tmp) {
-    // one atlas row of slices per block: slices z0 .. z0 + cols - 1, ny scanlines
-    const size_t w = static_cast<size_t>(s.nx) * cols;
-    writeTableExrRowsTemporary(tmp, path, header, half, s.ny, [&](int y0, int rows, std::vector<std::vector<float>>& out) {
-      int z0 = (y0 / s.ny) * cols, zn = std::min(cols, s.nz - z0);
-      std::vector<std::vector<float>> slab;
-      if (zn > 0) slab = timed(z0, zn);
-      int nchan = static_cast<int>(slab.size());
-      out.assign(3, std::vector<float>(w * rows, 0.0f));
-      for (int c = 0; c < 3; ++c) {
-        if (nchan == 0) break;
-        const std::vector<float>& src = slab[nchan == 3 ? c : 0];
-        for (int zl = 0; zl < zn; ++zl)
-          for (int y = 0; y < s.ny; ++y)
-            std::copy_n(src.begin() + static_cast<std::ptrdiff_t>((static_cast<size_t>(zl) * s.ny + y) * s.nx), s.nx,
-                        out[c].begin() + static_cast<std::ptrdiff_t>(y * w + static_cast<size_t>(zl) * s.nx));
-      }
-      for (const auto& p : out)
-        for (float v : p)
-          if (!std::isfinite(v))
-            throw Error(kExitSoftware, "internal error: brdf3d " + ndfNames()[s.ndf] + "+" + gafNames()[s.gaf] +
-                                           " has a value that is not finite; nothing was written");
-    });
+  f.write = [timed, s, cols = job.cols, header, half = job.half, path = job.path](const std::string& tmp) {
+    writeAtlasTemporary(tmp, path, header, half, {s.nx, s.ny, s.nz}, cols, timed,
+                        "brdf3d " + ndfNames()[s.ndf] + "+" + gafNames()[s.gaf]);
   };
   return f;
 }

@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,16 @@ TableImage volumeHeader(const VolumeJob& job);
 // (optional) records the largest slab in bytes.
 OutputFile volumeOutput(KernelRunner& runner, const VolumeJob& job, const TableImage& header, double* seconds = nullptr,
                         uint64_t* peakSlab = nullptr);
+
+// Writes a 3D table of n = (nx, ny, nz) texels as an EXR atlas of its z-slices (`cols` per row,
+// left to right, then top to bottom; unused slots 0) to the temporary `tmp` for `path`, one atlas
+// row at a time: slab(z0, zn) returns slices z0 .. z0 + zn - 1 as one plane per channel (1: the
+// same in R, G, B; 3: R, G, B), [((z - z0) * ny + y) * nx + x]. Throws Error(kExitSoftware) naming
+// `what` when a value is not finite.
+void writeAtlasTemporary(const std::string& tmp, const std::string& path, const TableImage& header, bool half,
+                         std::array<int, 3> n, int cols,
+                         const std::function<std::vector<std::vector<float>>(int z0, int zn)>& slab,
+                         const std::string& what);
 
 // The most bytes the file can take (uncompressed data, header and offsets): checked against the
 // free space before anything is written.

@@ -5,6 +5,7 @@
 //
 // usage: brdfbake-bench [--size N] [--samples S] [--stride K] [--repeat R] [--device TEXT] [--times-only]
 //                       [--all-pairs] [--albedo-avg] [--cold-start [--build-threads N] [--skip-all]] [--materials]
+//                       [--dielectric [--mc-log2 K]]
 //   --stride K: reference on every K-th texel per axis plus the first/last rows and columns
 //               (default 1: every texel; the reference takes a few seconds for all 16384).
 //   --times-only: skip the errors; times and ratio only.
@@ -25,6 +26,9 @@
 //               the same quantity: times, errors against the reference (dielectric on every
 //               --stride-th texel, default 4, plus edges; diffuse on all), kernel bounds.
 //               host/bench/materials_bench.cpp. ~2 minutes.
+//   --dielectric [--mc-log2 K]: the 32^3 rough-dielectric table (ggx + smith-correlated) timed
+//               against a 2^K-sample Monte Carlo per cell (default K = 23, Cycles' budget) on 27
+//               cells, scaled; both against the o-space reference. host/bench/dielectric_bench.cpp.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -52,6 +56,7 @@ using namespace brdfbake::bench;
 namespace brdfbake {
 int materialsBench(KernelRunner& runner, int samples, int repeat, int stride);  // materials_bench.cpp
 int volumeBench(KernelRunner& runner, int repeat, int bigSize);  // volume_bench.cpp
+int dielectricBench(KernelRunner& runner, int samplesLog2);     // dielectric_bench.cpp
 }
 
 namespace {
@@ -126,6 +131,8 @@ KernelTable bakeOne(KernelRunner& runner, const BenchTable& t) {
     case TableKind::FresnelAvg:  // not in the bench's sets (host-side, no kernel)
     case TableKind::Brdf3d:      // --volume
     case TableKind::AshikhminShirley:
+    case TableKind::Dielectric:  // --dielectric
+    case TableKind::DielectricAvg:
       break;
   }
   return runner.kp(t.ndf, t.size, false);
@@ -288,7 +295,8 @@ int main(int argc, char** argv) {
   int n = 128, samples = 1024, stride = 1, repeat = 3;
   std::string device;
   bool timesOnly = false, everyPair = false, avgCheck = false, cold = false, skipAll = false, strideSet = false;
-  bool materials = false, volume = false;
+  bool materials = false, volume = false, dielectric = false;
+  int mcLog2 = 23;
   int buildThreads = 0, volumeSize = 256;
   std::string child;
   for (int i = 1; i < argc; ++i) {
@@ -308,6 +316,8 @@ int main(int argc, char** argv) {
     else if (a == "--cold-start") cold = true;
     else if (a == "--materials") materials = true;
     else if (a == "--volume") volume = true;
+    else if (a == "--dielectric") dielectric = true;
+    else if (a == "--mc-log2") mcLog2 = std::atoi(next().c_str());
     else if (a == "--volume-size") volumeSize = std::atoi(next().c_str());
     else if (a == "--skip-all") skipAll = true;
     else if (a == "--build-threads") buildThreads = std::atoi(next().c_str());
@@ -324,6 +334,7 @@ int main(int argc, char** argv) {
     if (everyPair) return allPairs(runner, n, stride);
     if (avgCheck) return albedoAvgCheck(runner, strideSet ? stride : 8, repeat);
     if (materials) return materialsBench(runner, samples, repeat, strideSet ? stride : 4);
+    if (dielectric) return dielectricBench(runner, std::max(1, std::min(mcLog2, 24)));
     if (volume) return volumeBench(runner, repeat, std::max(1, std::min(volumeSize, 1024)));
     runner.hemisphere(ndf, gaf, 1, 1, false);  // builds the program: not part of the timing
 

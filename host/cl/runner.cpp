@@ -45,7 +45,22 @@ std::string volumeKernelSource(int ndf, int gaf) {
   return src;
 }
 
+// The rough dielectric's program: the models, the rule tables, btdf.h and its estimator, in double
+// where the device has it (like the 3D tables'), one value per work-item, no lanes.
+std::string dielectricKernelSource(int ndf, int gaf) {
+  std::string src = "/* brdfbake prelude (rough dielectric): " + ndfNames()[ndf] + " + " + gafNames()[gaf] + " */\n";
+  src += "#define BRDF_NDF " + std::to_string(ndf) + "\n#define BRDF_GAF " + std::to_string(gaf) +
+         "\n#define BRDF_DEVICE_DOUBLE 1\n";
+  for (const char* f : {"kernels/brdf/compat.h", "kernels/brdf/smith_tables.h", "kernels/brdf/ndf.h", "kernels/brdf/gaf.h",
+                        "kernels/brdf/fresnel.h", "kernels/brdf/diffuse.h", "kernels/brdf/brdf.h",
+                        "kernels/integrate/quadrature.h", "kernels/integrate/albedo_avg.h", "kernels/brdf/btdf.h",
+                        "kernels/integrate/dielectric.h", "kernels/dielectric.cl"})
+    append(src, f);
+  return src;
+}
+
 std::string kernelSource(int ndf, int gaf) {
+  if (gaf >= kDielectricProgram) return dielectricKernelSource(ndf, gaf - kDielectricProgram);
   if (gaf >= kVolumeProgram) return volumeKernelSource(ndf, gaf - kVolumeProgram);
   std::string src = "/* brdfbake prelude: " + ndfNames()[ndf] + " + " + gafNames()[gaf] + " */\n";
   src += "#define BRDF_NDF " + std::to_string(ndf) + "\n#define BRDF_GAF " + std::to_string(gaf) + "\n";
@@ -89,6 +104,12 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
     k.setArg(10, 0);
     setWeightArgs(k, 11, {});
     k.setArg(15, -1);
+  } else if (name == kDielectric || name == kDielectricNodes) {
+    // (out, etas, nx, ny, zn, grid, target) or (out, mus, rs, etas, n, target)
+    int bufs = name == kDielectric ? 2 : 4, ints = name == kDielectric ? 4 : 1;
+    for (int i = 0; i < bufs; ++i) k.setArg(i, dummy);
+    for (int i = bufs; i < bufs + ints; ++i) k.setArg(i, 0);
+    k.setArg(bufs + ints, 0.0f);
   } else if (name == kBrdf3d) {
     k.setArg(0, dummy);
     k.setArg(1, dummy);
@@ -130,7 +151,10 @@ void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* don
   if (rc != CL_SUCCESS) {
     if (log.empty()) log = prog.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
     throw Error(kExitSoftware, "OpenCL kernel build failed for " + ndfNames()[w.ndf] + " + " +
-                                   gafNames()[w.gaf % kVolumeProgram] + (w.gaf >= kVolumeProgram ? " (3D tables)" : "") +
+                                   gafNames()[w.gaf % kVolumeProgram] +
+                                   (w.gaf >= kDielectricProgram ? " (rough dielectric)"
+                                    : w.gaf >= kVolumeProgram   ? " (3D tables)"
+                                                                : "") +
                                    " (" + std::to_string(rc) + "); build log:\n" + log);
   }
   done->slot = slotIndex;
@@ -206,6 +230,12 @@ void KernelRunner::prepare(TableKind kind, int ndf, int gaf) {
     case TableKind::Brdf3d:
       compiled(ndf, gaf + kVolumeProgram, kBrdf3d);
       break;
+    case TableKind::Dielectric:
+      compiled(ndf, gaf + kDielectricProgram, kDielectric);
+      break;
+    case TableKind::DielectricAvg:
+      compiled(ndf, gaf + kDielectricProgram, kDielectricNodes);
+      break;
     case TableKind::FresnelAvg:  // computed on the host
     case TableKind::AshikhminShirley:
       break;
@@ -228,6 +258,8 @@ std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<TableNeed>&
     if (t.kind == TableKind::SplitSum || t.kind == TableKind::Albedo) add(t.ndf, t.gaf, kHemisphere);
     if (t.kind == TableKind::AlbedoAvg) add(t.ndf, t.gaf, kAlbedoNodes);
     if (t.kind == TableKind::Brdf3d) add(t.ndf, t.gaf + kVolumeProgram, kBrdf3d);
+    if (t.kind == TableKind::Dielectric || t.kind == TableKind::DielectricAvg)
+      add(t.ndf, t.gaf + kDielectricProgram, t.kind == TableKind::Dielectric ? kDielectric : kDielectricNodes);
   }
   for (const TableNeed& t : tables) {
     if (t.kind != TableKind::Kp) continue;

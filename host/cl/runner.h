@@ -84,6 +84,19 @@ class KernelRunner {
   // one plane per channel, [((z - z0) * ny + y) * nx + x].
   std::vector<std::vector<float>> brdf3dSlab(const Brdf3dSpec& spec, int z0, int zn);
 
+  // The rough dielectric (kernels/dielectric.cl): planes E_R, E_T and the bound (relative to
+  // max(1, |value|)) over mu (nx) x r (ny) at each of the given etas, [(z * ny + y) * nx + x].
+  std::vector<std::vector<float>> dielectricSlab(int ndf, int gaf, int nx, int ny, const std::vector<double>& etas,
+                                                 bool nodeGrid, float target);
+  // E_R, E_T and their bound (absolute, the larger) at points (mus[k], rs[k], etas[k]): the nodes of
+  // the averages' rule (bake/dielectric_avg.h), one plane each.
+  std::vector<std::vector<float>> dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
+                                                   const std::vector<double>& rs, const std::vector<double>& etas,
+                                                   float target);
+
+  // Whether the device has cl_khr_fp64 (the 3D and dielectric programs then compute in double).
+  bool hasDouble() const { return fp64_; }
+
   // Threads prepareAll uses (default: hardware_concurrency; 1 = in order on this thread).
   void setBuildThreads(int n) { buildThreads_ = n; }
   // Directional albedo E(mu) of diffuse model `model` (kernels/brdf/diffuse.h, DIFFUSE_*) over

@@ -16,6 +16,10 @@ inline const char* const kKp = "bake_kp";
 inline const char* const kBrdf3d = "bake_brdf3d";
 // 3D tables have programs of their own (volumeKernelSource): kept under the pair's GAF + this.
 constexpr int kVolumeProgram = 1000;
+// The rough dielectric's program (dielectricKernelSource): under the pair's GAF + this.
+constexpr int kDielectricProgram = 2000;
+inline const char* const kDielectric = "bake_dielectric";
+inline const char* const kDielectricNodes = "bake_dielectric_points";
 
 // On a CPU device (PoCL) every launch uses these local sizes: PoCL generates one work-group
 // function per kernel and local size, a few tenths of a second each, so one size per kernel keeps

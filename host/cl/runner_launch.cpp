@@ -223,3 +223,68 @@ std::vector<std::vector<float>> KernelRunner::brdf3dSlab(const Brdf3dSpec& spec,
 }
 
 }  // namespace brdfbake
+
+namespace brdfbake {
+
+namespace {
+// Reals (etas, mus, rs) as the program's `real` (double where the device has fp64).
+cl::Buffer etaBuffer(const cl::Context& ctx, const std::vector<double>& etas, bool fp64) {
+  if (fp64)
+    return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, etas.size() * sizeof(double),
+                      const_cast<double*>(etas.data()));
+  std::vector<float> f(etas.begin(), etas.end());
+  return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, f.size() * sizeof(float), f.data());
+}
+}  // namespace
+
+std::vector<std::vector<float>> KernelRunner::dielectricSlab(int ndf, int gaf, int nx, int ny,
+                                                             const std::vector<double>& etas, bool nodeGrid,
+                                                             float target) {
+  Compiled& c = compiled(ndf, gaf + kDielectricProgram, kDielectric);
+  Slot& s = *slots_[c.slot];
+  const int zn = static_cast<int>(etas.size());
+  size_t plane = static_cast<size_t>(nx) * ny * zn;
+  cl::Buffer out = outBuffer(s.context, plane * 3);
+  cl::Buffer eb = etaBuffer(s.context, etas, fp64_);
+  cl::Kernel k(c.program, kDielectric);
+  int a = 0;
+  k.setArg(a++, out);
+  k.setArg(a++, eb);
+  for (int v : {nx, ny, zn, nodeGrid ? 1 : 0}) k.setArg(a++, v);
+  k.setArg(a++, target);
+  run(c, k, nx, static_cast<size_t>(ny) * zn);
+  std::vector<float> all = readBack(s.queue, out, plane * 3);
+  std::vector<std::vector<float>> planes(3);
+  for (int ch = 0; ch < 3; ++ch)
+    planes[ch].assign(all.begin() + static_cast<std::ptrdiff_t>(ch * plane),
+                      all.begin() + static_cast<std::ptrdiff_t>((ch + 1) * plane));
+  return planes;
+}
+
+std::vector<std::vector<float>> KernelRunner::dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
+                                                               const std::vector<double>& rs,
+                                                               const std::vector<double>& etas, float target) {
+  Compiled& c = compiled(ndf, gaf + kDielectricProgram, kDielectricNodes);
+  Slot& s = *slots_[c.slot];
+  const int n = static_cast<int>(mus.size());
+  std::vector<std::vector<float>> planes(3);
+  if (n == 0) return planes;
+  cl::Buffer out = outBuffer(s.context, static_cast<size_t>(n) * 3);
+  cl::Buffer mb = etaBuffer(s.context, mus, fp64_), rb = etaBuffer(s.context, rs, fp64_),
+             eb = etaBuffer(s.context, etas, fp64_);
+  cl::Kernel k(c.program, kDielectricNodes);
+  int a = 0;
+  k.setArg(a++, out);
+  k.setArg(a++, mb);
+  k.setArg(a++, rb);
+  k.setArg(a++, eb);
+  k.setArg(a++, n);
+  k.setArg(a++, target);
+  run(c, k, static_cast<size_t>(n), 0);
+  std::vector<float> all = readBack(s.queue, out, static_cast<size_t>(n) * 3);
+  for (int ch = 0; ch < 3; ++ch)
+    planes[ch].assign(all.begin() + static_cast<std::ptrdiff_t>(ch) * n, all.begin() + static_cast<std::ptrdiff_t>(ch + 1) * n);
+  return planes;
+}
+
+}  // namespace brdfbake

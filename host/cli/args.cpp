@@ -61,6 +61,9 @@ std::string usageText() {
          "                    (default: the first four; fresnel-avg: F_avg over eta, with --fresnel\n"
          "                    dielectric or schlick-tir; ashikhmin-shirley: the three factorised\n"
          "                    textures of the anisotropic Ashikhmin-Shirley BRDF, as_tex0..2.exr)\n"
+         "                    dielectric: E_R, E_T of rough glass over (mu, r, eta), dielectric-avg:\n"
+         "                    their averages over mu (ggx/beckmann with smith/smith-correlated)\n"
+         "  --eta-range LO,HI dielectric tables' eta axis, 0 < LO < HI <= 100 (default 0.4,2.5)\n"
          "  --size N          texels per axis, 1..8192 (default 128 for splitsum and\n"
          "                    ashikhmin-shirley, 32 otherwise)\n"
          "  --grid G          texel-center (default: value at (i+0.5)/n) or node (at i/(n-1), n >= 2)\n"
@@ -347,6 +350,21 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       if (v.size() != 1 || v[0] < 0 || v[0] > 1.5707963267948966)
         throw Error(kExitUsage, "--sigma must be one angle in [0, 1.5708] (radians, 0..pi/2)");
       req.sigma = v[0];
+    } else if (opt == "--eta-range" && cmd.kind == Command::Kind::Bake) {
+      once(opt, opt);
+      const std::string text = value();
+      std::vector<double> v;
+      for (const auto& item : splitCommas(text)) {
+        char* end = nullptr;
+        double x = std::strtod(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !std::isfinite(x)) v.clear();
+        if (item.empty() || *end != '\0' || !std::isfinite(x)) break;
+        v.push_back(x);
+      }
+      if (v.size() != 2 || !(v[0] > 0) || !(v[1] > v[0]) || v[1] > 100)
+        throw Error(kExitUsage, "--eta-range must be LO,HI with 0 < LO < HI <= 100 (the relative IOR eta_t/eta_i; "
+                                "below 1 leaves the denser medium), got '" + text + "'");
+      req.etaRange = std::make_pair(v[0], v[1]);
     } else if (opt == "--coupling" && cmd.kind == Command::Kind::Energy) {
       once(opt, opt);
       req.coupling = value();

@@ -32,6 +32,8 @@ struct BakeRequest {
   std::string preset;                // --preset gltf: glTF's reference-shading tables (plan/plan.cpp), or ""
   std::optional<double> sigma;       // energy: --sigma for oren-nayar (else swept)
   std::string coupling = "sum";      // energy: --coupling sum | albedo-scaling
+  // --table dielectric, dielectric-avg: the eta axis's range (--eta-range LO,HI)
+  std::optional<std::pair<double, double>> etaRange;
   std::vector<int> levels = {0, 1, 2, 3};                           // convergence: quadrature levels
   std::vector<int> samples = {16, 64, 256, 1024, 4096, 16384, 65536};  // convergence: MC samples
   // --table brdf3d (the others ignore these; given without it, they are a usage error)

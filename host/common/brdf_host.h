@@ -23,6 +23,8 @@ typedef double real;
 #include "integrate/sheen.h"
 #include "integrate/albedo_avg.h"
 #include "integrate/diffuse_albedo.h"
+#include "brdf/btdf.h"
+#include "integrate/dielectric.h"
 }  // namespace brdf64
 
 namespace brdf32 {
@@ -42,4 +44,6 @@ typedef float real;
 #include "integrate/sheen.h"
 #include "integrate/albedo_avg.h"
 #include "integrate/diffuse_albedo.h"
+#include "brdf/btdf.h"
+#include "integrate/dielectric.h"
 }  // namespace brdf32

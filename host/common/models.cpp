@@ -21,7 +21,7 @@ const std::vector<std::string>& gafNames() {
 
 const std::vector<std::string>& tableNames() {
   static const std::vector<std::string> n = {"splitsum", "albedo", "albedo-avg", "kp", "fresnel-avg", "brdf3d",
-                                             "ashikhmin-shirley"};
+                                             "ashikhmin-shirley", "dielectric", "dielectric-avg"};
   return n;
 }
 

@@ -6,7 +6,7 @@
 
 namespace brdfbake {
 
-enum class TableKind { SplitSum, Albedo, AlbedoAvg, Kp, FresnelAvg, Brdf3d, AshikhminShirley };
+enum class TableKind { SplitSum, Albedo, AlbedoAvg, Kp, FresnelAvg, Brdf3d, AshikhminShirley, Dielectric, DielectricAvg };
 
 const std::vector<std::string>& ndfNames();   // index = NDF_* id
 const std::vector<std::string>& gafNames();   // index = GAF_* id

@@ -145,12 +145,60 @@ Plan makePresetPlan(const BakeRequest& req) {
   applyFormats(req, plan);
   return plan;
 }
+
+// --table dielectric, dielectric-avg: one per NDF/GAF pair, for the models the BTDF supports.
+void planDielectric(const BakeRequest& req, Plan& plan) {
+  bool cube = std::find(req.tables.begin(), req.tables.end(), TableKind::Dielectric) != req.tables.end();
+  bool avg = std::find(req.tables.begin(), req.tables.end(), TableKind::DielectricAvg) != req.tables.end();
+  if (!cube && !avg) {
+    if (req.etaRange) throw Error(kExitUsage, "--eta-range: only --table dielectric and dielectric-avg take it");
+    return;
+  }
+  const std::string t = cube ? "--table dielectric" : "--table dielectric-avg";
+  for (int ndf : req.ndfs)
+    if (ndf != NDF_GGX && ndf != NDF_BECKMANN)
+      throw Error(kExitUsage, t + ": the rough dielectric (Walter et al. 2007) takes --ndf ggx or beckmann, not " +
+                                  ndfNames()[ndf]);
+  for (int gaf : req.gafs)
+    if (gaf != GAF_SMITH && gaf != GAF_SMITH_CORRELATED)
+      throw Error(kExitUsage, t + ": the rough dielectric takes --gaf smith or smith-correlated (Smith's G for "
+                                  "reflection and transmission), not " + gafNames()[gaf]);
+  if (req.fresnelGiven || req.diffuse >= 0 || !req.fresnel.eta.empty() || !req.fresnel.f0.empty())
+    throw Error(kExitUsage, t + ": the Fresnel is the exact dielectric one over the eta axis (--eta-range); leave "
+                                "--fresnel, --eta, --f0 and --diffuse out");
+  if (req.volume.size) throw Error(kExitUsage, t + ": --size takes one N (N^3 texels; dielectric-avg N^2)");
+  int n = req.size ? *req.size : 32;
+  if (n > kMaxVolumeSize)
+    throw Error(kExitUsage, "--size: each axis of a dielectric table must be an integer in 1.." +
+                                std::to_string(kMaxVolumeSize) + ", got " + std::to_string(n));
+  if (req.nodeGrid && n < 2) throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
+  for (int ndf : req.ndfs)
+    for (int gaf : req.gafs)
+      for (int a = 0; a < 2; ++a) {
+        if (!(a ? avg : cube)) continue;
+        DielectricJob j;
+        j.ndf = ndf;
+        j.gaf = gaf;
+        j.avg = a == 1;
+        j.nx = n;
+        j.ny = n;
+        j.nz = j.avg ? 1 : n;
+        j.nodeGrid = req.nodeGrid;
+        j.half = req.half;
+        if (req.etaRange) std::tie(j.etaLo, j.etaHi) = *req.etaRange;
+        if (!j.avg) std::tie(j.cols, j.rows) = atlasGrid(j.nz);
+        j.path = req.outDir + "/" + (j.avg ? "dielectric-avg_" : "dielectric_") + ndfNames()[ndf] + "_" +
+                 gafNames()[gaf] + ".exr";
+        plan.dielectric.push_back(j);
+      }
+}
 }  // namespace
 
 Plan makePlan(const BakeRequest& req) {
   if (!req.preset.empty()) return makePresetPlan(req);
   if (!req.merl.empty()) return makeMerlPlan(req);
   Plan plan;
+  planDielectric(req, plan);
   plan.outDir = req.outDir;
   plan.device = req.device;
   const int gafNone = 0;
@@ -217,7 +265,8 @@ Plan makePlan(const BakeRequest& req) {
   for (int ndf : req.ndfs) {
     for (TableKind kind : req.tables) {
       if (req.diffuse >= 0 && kind == TableKind::Albedo) continue;  // baked once above
-      if (kind == TableKind::FresnelAvg || kind == TableKind::Brdf3d || kind == TableKind::AshikhminShirley)
+      if (kind == TableKind::FresnelAvg || kind == TableKind::Brdf3d || kind == TableKind::AshikhminShirley ||
+          kind == TableKind::Dielectric || kind == TableKind::DielectricAvg)
         continue;  // likewise
       int n = req.size ? *req.size : defaultSize(kind);
       if (req.nodeGrid && n < 2)

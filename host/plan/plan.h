@@ -39,6 +39,18 @@ struct VolumeJob {
   Precision precision = Precision::Float32;
 };
 
+// A rough-dielectric table (--table dielectric: 3D over (mu, r, eta coordinate), an EXR atlas of
+// eta slices; dielectric-avg: 2D over (r, eta coordinate)). bake/dielectric_bake.h.
+struct DielectricJob {
+  int ndf = 0, gaf = 0;
+  bool avg = false;          // dielectric-avg
+  int nx = 32, ny = 32, nz = 32;  // mu, r, eta (avg: nx = r, ny = eta, nz = 1)
+  bool nodeGrid = false, half = false;
+  double etaLo = 0.4, etaHi = 2.5;
+  int cols = 1, rows = 1;    // the atlas (3D)
+  std::string path;
+};
+
 struct Plan {
   std::string outDir;
   std::string device;
@@ -46,6 +58,7 @@ struct Plan {
   std::vector<VolumeJob> volumes;
   // Extra string attributes of the file at a path (scenes: brdf.hash, brdf.scene).
   std::map<std::string, std::map<std::string, std::string>> extraStrings;
+  std::vector<DielectricJob> dielectric;
   std::string merl;  // a measured material's MERL file, the jobs' material (bake/merl_bake.h); "" = none
 };
 

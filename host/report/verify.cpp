@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <vector>
 #include <random>
 
 #include "cl/device.h"
@@ -154,6 +156,42 @@ VerifyCheck reciprocity(int ndf, int gaf) {
   return c;
 }
 
+// The rough dielectric (--table dielectric): E_R + E_T <= 1 + bound on a node grid of (mu, r), edges
+// included, over etas from TIR-dominated to dense glass and around 1; every value finite.
+VerifyCheck dielectricEnergy(KernelRunner& runner, int ndf, int gaf) {
+  VerifyCheck c{"dielectric energy", true, (ndf == NDF_GGX || ndf == NDF_BECKMANN) && isSmith(gaf), 0, "", ""};
+  if (!c.applies) {
+    c.detail = "no rough dielectric for this pair";
+    return c;
+  }
+  const int n = 9;
+  const std::vector<double> etas = {0.2, 0.6667, 0.99, 0.9999, 1.0, 1.0001, 1.01, 1.5, 2.5, 5.0};
+  auto t = runner.dielectricSlab(ndf, gaf, n, n, etas, true, 2e-6f);
+  double maxSum = -1;
+  for (size_t k = 0; k < t[0].size(); ++k) {
+    size_t x = k % n, y = (k / n) % n, z = k / (static_cast<size_t>(n) * n);
+    double sum = static_cast<double>(t[0][k]) + t[1][k];
+    std::string at = "mu=" + fmt4(x / (n - 1.0)) + " r=" + fmt4(y / (n - 1.0)) + " eta=" + fmt4(etas[z]);
+    if (!std::isfinite(sum) || !std::isfinite(t[2][k])) {
+      c.pass = false;
+      c.where = at + " (not finite)";
+      maxSum = std::numeric_limits<double>::infinity();
+      break;
+    }
+    if (sum > maxSum) {
+      maxSum = sum;
+      c.where = at;
+    }
+    if (sum > 1 + t[2][k] + kAllowance) {
+      c.pass = false;
+      c.worst = std::max(c.worst, sum - 1);
+    }
+  }
+  c.detail = "max E_R + E_T = " + std::to_string(maxSum) + " at " + c.where + " (" + std::to_string(n) + "x" +
+             std::to_string(n) + " nodes of (mu, r) x " + std::to_string(etas.size()) + " etas in [0.2, 5])";
+  return c;
+}
+
 }  // namespace
 
 bool VerifyResult::pass() const {
@@ -185,7 +223,8 @@ std::vector<VerifyResult> runVerify(const BakeRequest& req, std::string* pageLin
   ReportPage page("brdfbake verify");
   page.paragraph("White furnace (E <= 1 + bound), weak white furnace for Smith GAFs (|W(mu)/mu - 1| <= 1e-6), "
                  "NDF normalisation (|int D (n.h) dw - 1| <= 1e-6), reciprocity (relative 1e-12 at " +
-                 std::to_string(kReciprocityPairs) + " random pairs), energy lost (1 - E). Grid: " +
+                 std::to_string(kReciprocityPairs) + " random pairs), energy lost (1 - E), the rough dielectric's E_R + E_T <= 1 + "
+                 "bound (ggx, beckmann with smith GAFs). Grid: " +
                  std::to_string(n) + " x " + std::to_string(n) + " nodes of (mu, r), edges included.");
   std::vector<VerifyResult> out;
   size_t done = 0;
@@ -200,6 +239,7 @@ std::vector<VerifyResult> runVerify(const BakeRequest& req, std::string* pageLin
     res.checks.push_back(weakFurnace(ndf, gaf));
     res.checks.push_back(normalisation(ndf, gaf));
     res.checks.push_back(reciprocity(ndf, gaf));
+    res.checks.push_back(dielectricEnergy(runner, ndf, gaf));
     energyLoss(t, avg, n, node, page, ndf, gaf);
     std::string lines;
     for (const auto& c : res.checks)

@@ -133,7 +133,7 @@ void readOutput(const Reader& r, const toml::table& t, SceneOutput& out) {
   }
   if (auto* n = t.get("size")) {
     const toml::table& s = r.table(*n, "output.size");
-    std::vector<std::string> kinds = {"splitsum", "albedo", "albedo-avg", "kp", "brdf3d"};
+    std::vector<std::string> kinds = {"splitsum", "albedo", "albedo-avg", "kp", "brdf3d", "dielectric", "dielectric-avg"};
     r.keysIn(s, "[output.size]", kinds);
     for (auto&& [k, v] : s) {
       std::string kind(k.str());
@@ -164,7 +164,7 @@ void readLighting(const Reader& r, const toml::table& t, SceneLighting& l) {
 
 SceneMaterial readMaterial(const Reader& r, const toml::table& t, int index) {
   static const std::vector<std::string> keys = {"name", "ndf", "gaf", "fresnel", "f0", "eta", "k", "f82", "diffuse",
-                                                "sigma", "rho", "roughness", "coupling", "brdf3d"};
+                                                "sigma", "rho", "roughness", "coupling", "brdf3d", "transmission"};
   r.keysIn(t, "[[material]]", keys);
   SceneMaterial m;
   m.pos = r.pos(t);
@@ -221,6 +221,12 @@ SceneMaterial readMaterial(const Reader& r, const toml::table& t, int index) {
       r.fail(*n, "material.coupling must be \"sum\" or \"albedo-scaling\", got \"" + m.coupling + "\"");
     if (m.coupling == "albedo-scaling" && m.diffuse < 0)
       r.fail(*n, "material.coupling = \"albedo-scaling\" scales a diffuse lobe: give the material a diffuse model");
+  }
+  if (auto* n = t.get("transmission")) {
+    m.transmission = r.boolean(*n, "material.transmission");
+    if (m.transmission && ((m.ndf != NDF_GGX && m.ndf != NDF_BECKMANN) || (m.gaf != GAF_SMITH && m.gaf != GAF_SMITH_CORRELATED)))
+      r.fail(*n, "material '" + m.name + "': transmission = true needs ndf ggx or beckmann with gaf smith or "
+                 "smith-correlated (the rough-dielectric tables' models)");
   }
   if (auto* n = t.get("brdf3d")) {
     m.brdf3d = r.boolean(*n, "material.brdf3d");

@@ -12,7 +12,8 @@
 namespace brdfbake {
 
 struct PlannedTable {
-  bool volume = false;   // plan.volumes[index], else plan.jobs[index]
+  bool volume = false;      // plan.volumes[index]
+  bool dielectric = false;  // plan.dielectric[index]; neither: plan.jobs[index]
   size_t index = 0;
   std::string path;
   std::string table;     // table kind name

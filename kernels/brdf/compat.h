@@ -103,6 +103,7 @@ using std::floor;
 using std::fmax;
 using std::fmin;
 using std::log;
+using std::lgamma;
 using std::log1p;
 using std::sin;
 using std::sqrt;

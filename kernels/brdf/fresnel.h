@@ -21,10 +21,12 @@ BRDF_FN real fresnel_schlick_weight(real c) {
 BRDF_FN real fresnel_schlick(param_t f0, real c) { return f0 + (RC(1.0) - f0) * fresnel_schlick_weight(c); }
 
 /* Exact unpolarised dielectric (Cook and Torrance 1982, with MODELS.md errata):
- * g^2 = eta^2 + c^2 - 1, F = 1/2 (g-c)^2/(g+c)^2 (1 + (c(g+c) - 1)^2/(c(g-c) + 1)^2); F = 1 when g^2 < 0. */
+ * g^2 = eta^2 + c^2 - 1, F = 1/2 (g-c)^2/(g+c)^2 (1 + (c(g+c) - 1)^2/(c(g-c) + 1)^2); F = 1 when g^2 < 0.
+ * g^2 as (eta - 1)(eta + 1) + c^2: eta^2 - 1 + c^2 loses c^2 next to 1 near eta = 1 (at eta = 1 and
+ * c < 1e-8 in double it gave g = 0, F = 1 instead of 0; the rough dielectric's grazing corner). */
 BRDF_FN real fresnel_dielectric(param_t eta, real c) {
   c = fabs(c);
-  real g2 = eta * eta + c * c - RC(1.0);
+  real g2 = (eta - RC(1.0)) * (eta + RC(1.0)) + c * c;
   real g = sqrt(fmax(g2, RC(0.0)));
   real a = (g - c) / fmax(g + c, RC(1e-30)); /* eta = 1 at c = 0: 0, the limit of F = 0 */
   real b = (c * (g + c) - RC(1.0)) / (c * (g - c) + RC(1.0));
@@ -52,7 +54,7 @@ BRDF_FN real fresnel_conductor(param_t eta, param_t k, real c) {
   c = fmin(fabs(c), RC(1.0));
   real s2 = (RC(1.0) - c) * (RC(1.0) + c);
   param_t e2 = eta * eta, k2 = k * k;
-  real t = e2 - k2 - s2;
+  real t = (eta - RC(1.0)) * (eta + RC(1.0)) + c * c - k2; /* e2 - k2 - s2 without cancellation near eta = 1 */
   real ab2 = sqrt(t * t + RC(4.0) * e2 * k2);
   real a = sqrt(fmax(RC(0.5) * (ab2 + t), RC(0.0)));
   real c2 = c * c, ac = RC(2.0) * a * c;

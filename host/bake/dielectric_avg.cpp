@@ -1,0 +1,129 @@
+#include "bake/dielectric_avg.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/brdf_host.h"
+
+namespace brdfbake {
+
+// Derivation. E_X,avg = int_0^1 2 mu E_X(mu) dmu (Kulla and Conty 2017). E(mu) is smooth except
+//  - at the critical cosine mu_c = sqrt(1 - eta^2) (eta < 1): as r -> 0, E_R -> F(mu) with F's
+//    square-root kink there (TIR sets in), smoothed over a width ~ alpha for alpha > 0;
+//  - at mu -> 0: E_T of smith-correlated behaves like mu^Lambda_o (btdf.h), a non-integer power.
+// So the rule splits [0, 1] at mu_c and maps every panel [a, b] by the smoothstep
+// mu = a + (b - a) y^2 (3 - 2y), which turns square-root ends into smooth ones and squeezes nodes
+// towards both ends; each panel is GK15 in y (value K15, bound |K15 - G7|). Panels are then halved
+// in y where their bound is largest (the ones within a factor 4 of the worst, all at once) until
+// the entry's bound is under the target; the nodes thus grade towards mu_c and 0 as E demands,
+// per (r, eta). Bound of an entry: per lobe the sum of |K15 - G7| plus sum_k w_k 2 mu_k err(mu_k)
+// (the node bounds), the larger lobe's.
+namespace {
+constexpr int kMaxPanels = 48, kMaxRounds = 24;
+
+struct Panel {
+  double a, b, y0, y1;
+  double k[2] = {0, 0}, d[2] = {0, 0}, inner = 0;  // K15, K15 - G7, node bounds
+  double err() const { return std::max(std::fabs(d[0]), std::fabs(d[1])) + inner; }
+};
+
+// mu and its weight dmu/dy times the half-width of node m of a panel.
+void node(const Panel& p, int m, double* mu, double* w) {
+  double y = p.y0 + (p.y1 - p.y0) * 0.5 * (brdf64::GK15_XL[m] + 1);
+  *mu = p.a + (p.b - p.a) * y * y * (3 - 2 * y);
+  *w = 0.5 * (p.y1 - p.y0) * (p.b - p.a) * 6 * y * (1 - y);
+}
+}  // namespace
+
+double dielectricCriticalMu(double eta) { return eta < 1 ? std::sqrt((1 - eta) * (1 + eta)) : -1; }
+
+DielectricAverages dielectricAverages(const DielectricEval& eval, const std::vector<double>& r,
+                                      const std::vector<double>& eta, double target) {
+  const size_t n = r.size();
+  std::vector<std::vector<Panel>> panels(n);
+  std::vector<std::vector<size_t>> fresh(n);  // panels whose nodes are still to be evaluated
+  for (size_t j = 0; j < n; ++j) {
+    double mc = dielectricCriticalMu(eta[j]);
+    std::vector<double> br = {0.0};
+    if (mc > 0 && mc < 1) br.push_back(mc);
+    br.push_back(1.0);
+    for (size_t k = 0; k + 1 < br.size(); ++k) {
+      panels[j].push_back({br[k], br[k + 1], 0.0, 1.0});
+      fresh[j].push_back(k);
+    }
+  }
+  DielectricAverages out;
+  out.nodes.assign(n, 0);
+  for (int round = 0;; ++round) {
+    DielectricPoints pts;
+    for (size_t j = 0; j < n; ++j)
+      for (size_t q : fresh[j])
+        for (int m = 0; m < 15; ++m) {
+          double mu, w;
+          node(panels[j][q], m, &mu, &w);
+          pts.mu.push_back(mu);
+          pts.r.push_back(r[j]);
+          pts.eta.push_back(eta[j]);
+        }
+    if (pts.mu.empty()) break;
+    DielectricValues v = eval(pts);
+    size_t at = 0;
+    for (size_t j = 0; j < n; ++j) {
+      for (size_t q : fresh[j]) {
+        Panel& p = panels[j][q];
+        for (int m = 0; m < 15; ++m, ++at) {
+          double mu, w;
+          node(p, m, &mu, &w);
+          double f[2] = {2 * mu * v.er[at], 2 * mu * v.et[at]};
+          for (int l = 0; l < 2; ++l) {
+            p.k[l] += brdf64::GK15_WKL[m] * w * f[l];
+            p.d[l] += brdf64::GK15_WDL[m] * w * f[l];  // WDL: Kronrod minus Gauss weights
+          }
+          p.inner += brdf64::GK15_WKL[m] * w * 2 * mu * v.bound[at];
+        }
+      }
+      out.nodes[j] += static_cast<int>(fresh[j].size()) * 15;
+      fresh[j].clear();
+    }
+    if (round == kMaxRounds) break;
+    // halve (in y) the panels within a factor 4 of the worst, where the entry is above target
+    for (size_t j = 0; j < n; ++j) {
+      auto& ps = panels[j];
+      double total = 0, worst = 0;
+      for (const Panel& p : ps) {
+        total += p.err();
+        worst = std::max(worst, p.err());
+      }
+      if (total <= target) continue;
+      size_t count = ps.size();
+      for (size_t q = 0; q < count && ps.size() < kMaxPanels; ++q) {
+        if (ps[q].err() < 0.25 * worst) continue;
+        double ym = 0.5 * (ps[q].y0 + ps[q].y1);
+        Panel right{ps[q].a, ps[q].b, ym, ps[q].y1};
+        ps[q] = Panel{ps[q].a, ps[q].b, ps[q].y0, ym};
+        ps.push_back(right);
+        fresh[j].push_back(q);
+        fresh[j].push_back(ps.size() - 1);
+      }
+    }
+  }
+  out.er.resize(n);
+  out.et.resize(n);
+  out.bound.resize(n);
+  for (size_t j = 0; j < n; ++j) {
+    double val[2] = {0, 0}, kg[2] = {0, 0}, inner = 0;
+    for (const Panel& p : panels[j]) {
+      for (int l = 0; l < 2; ++l) {
+        val[l] += p.k[l];
+        kg[l] += std::fabs(p.d[l]);
+      }
+      inner += p.inner;
+    }
+    out.er[j] = val[0];
+    out.et[j] = val[1];
+    out.bound[j] = std::max(kg[0], kg[1]) + inner;
+  }
+  return out;
+}
+
+}  // namespace brdfbake

@@ -1,0 +1,172 @@
+#include "bake/dielectric_bake.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "bake/dielectric_avg.h"
+#include "bake/volume.h"
+#include "cl/runner.h"
+#include "common/brdf_host.h"
+#include "common/errors.h"
+#include "common/format.h"
+#include "common/models.h"
+#include "version.h"
+
+namespace brdfbake {
+
+namespace {
+// The device program runs in double (cl_khr_fp64; PoCL has it): its arithmetic adds far less than
+// this; without fp64 it runs in float, for which the 2D tables' 1e-6 allowance is kept.
+constexpr double kDoubleAllowance = 1e-7, kFloatAllowance = 1e-6;
+
+std::string coordText() {
+  return "s = (eta - 1)/(eta + 1) = sign(eta - 1) sqrt(F0), F0 = ((eta - 1)/(eta + 1))^2 the normal-incidence "
+         "reflectance; sampled uniformly in s (texel centres or nodes), eta = (1 + s)/(1 - s)";
+}
+
+std::string methodText(bool avg) {
+  std::string m =
+      "h-space quadrature in double on the device (kernels/integrate/dielectric.h): theta_h on the NDF's CDF "
+      "coordinate, phi split at every x = i.h feature (domain edges, TIR at sqrt(1 - eta^2), n.o_t = 0, a graded "
+      "Fresnel layer of width sqrt(|eta^2 - 1|) near eta = 1), GK15 panels under a smoothstep substitution, outer "
+      "axis refined adaptively; bound per texel |K15 - G7| + inner bounds";
+  if (avg)
+    m += "; averages 2 int E mu dmu by an adaptive rule in mu (host/bake/dielectric_avg.cpp): panels split at the "
+         "critical cosine sqrt(1 - eta^2), smoothstep-mapped GK15, halved where |K15 - G7| is largest, nodes per (r, "
+         "eta); bound sum |K15 - G7| + weighted node bounds";
+  return m + "; brdf.error: the largest bound + arithmetic allowance + storage rounding";
+}
+}  // namespace
+
+double dielectricCoord(double eta) { return (eta - 1) / (eta + 1); }
+double dielectricEta(double s) { return (1 + s) / (1 - s); }
+
+std::vector<double> dielectricEtas(const DielectricJob& job, int z0, int n) {
+  int nz = job.avg ? job.ny : job.nz;
+  double s0 = dielectricCoord(job.etaLo), s1 = dielectricCoord(job.etaHi);
+  std::vector<double> etas(n);
+  for (int k = 0; k < n; ++k) {
+    int z = z0 + k;
+    double t = job.nodeGrid ? (nz > 1 ? static_cast<double>(z) / (nz - 1) : 0.0) : (z + 0.5) / nz;
+    etas[k] = z == 0 && job.nodeGrid ? job.etaLo : (job.nodeGrid && z == nz - 1 ? job.etaHi : dielectricEta(s0 + (s1 - s0) * t));
+  }
+  return etas;
+}
+
+DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job, double* seconds) {
+  auto t0 = std::chrono::steady_clock::now();
+  DielectricTable out;
+  TableImage& img = out.image;
+  std::vector<float> bounds;
+  if (job.avg) {
+    // the averages' rule (bake/dielectric_avg.h) on (r, eta) = (x, y), its nodes on the device
+    std::vector<double> etas = dielectricEtas(job, 0, job.ny), rs, es;
+    for (int y = 0; y < job.ny; ++y)
+      for (int x = 0; x < job.nx; ++x) {
+        rs.push_back(job.nodeGrid ? (job.nx > 1 ? static_cast<double>(x) / (job.nx - 1) : 0.0) : (x + 0.5) / job.nx);
+        es.push_back(etas[y]);
+      }
+    DielectricEval eval = [&](const DielectricPoints& p) {
+      auto pl = runner.dielectricPoints(job.ndf, job.gaf, p.mu, p.r, p.eta, kDielectricTarget);
+      return DielectricValues{{pl[0].begin(), pl[0].end()}, {pl[1].begin(), pl[1].end()}, {pl[2].begin(), pl[2].end()}};
+    };
+    DielectricAverages av = dielectricAverages(eval, rs, es);
+    img.planes.assign(3, std::vector<float>(rs.size()));
+    for (size_t t = 0; t < rs.size(); ++t) {
+      img.planes[0][t] = static_cast<float>(av.er[t]);
+      img.planes[1][t] = static_cast<float>(av.et[t]);
+      img.planes[2][t] = static_cast<float>(av.er[t] + av.et[t]);
+      bounds.push_back(static_cast<float>(av.bound[t]));
+      out.nodes += av.nodes[t];
+    }
+    img.width = job.nx;
+    img.height = job.ny;
+  } else {
+    out.cube.assign(3, {});
+    for (int z0 = 0; z0 < job.nz; z0 += job.cols) {
+      int zn = std::min(job.cols, job.nz - z0);
+      auto p = runner.dielectricSlab(job.ndf, job.gaf, job.nx, job.ny, dielectricEtas(job, z0, zn), job.nodeGrid,
+                                     kDielectricTarget);
+      out.cube[0].insert(out.cube[0].end(), p[0].begin(), p[0].end());
+      out.cube[1].insert(out.cube[1].end(), p[1].begin(), p[1].end());
+      bounds.insert(bounds.end(), p[2].begin(), p[2].end());
+    }
+    out.cube[2].resize(out.cube[0].size());
+    for (size_t t = 0; t < out.cube[0].size(); ++t) out.cube[2][t] = out.cube[0][t] + out.cube[1][t];
+    img.width = job.nx * job.cols;
+    img.height = job.ny * job.rows;
+  }
+  if (seconds) *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const std::string what = std::string(job.avg ? "dielectric-avg " : "dielectric ") + ndfNames()[job.ndf] + "+" +
+                           gafNames()[job.gaf];
+  for (const auto& p : job.avg ? img.planes : out.cube)
+    for (float v : p)
+      if (!std::isfinite(v)) throw Error(kExitSoftware, "internal error: " + what + " has a value that is not finite; nothing was written");
+  for (float b : bounds) {
+    if (!std::isfinite(b)) throw Error(kExitSoftware, "internal error: " + what + " has a bound that is not finite; nothing was written");
+    out.maxBound = std::max(out.maxBound, static_cast<double>(b));
+  }
+
+  img.channels = {"R", "G", "B"};
+  auto& str = img.strings;
+  str["brdf.schema"] = "brdfbake/1";
+  str["brdf.table"] = job.avg ? "dielectric-avg" : "dielectric";
+  str["brdf.ndf"] = ndfNames()[job.ndf];
+  str["brdf.gaf"] = gafNames()[job.gaf];
+  str["brdf.roughness"] = roughnessMapping(job.ndf);
+  str["brdf.fresnel"] = "dielectric";
+  str["brdf.btdf"] = "Walter et al. 2007; transmission G: " +
+                     std::string(job.gaf == GAF_SMITH ? "G1(i) G1(o)" : "B(1 + Lambda_i, 1 + Lambda_o) (Heitz 2014)");
+  str["brdf.axes"] = job.avg ? "r,s" : "mu,r,s";
+  str["brdf.eta.coordinate"] = coordText();
+  img.v2f["brdf.eta.range"] = {static_cast<float>(job.etaLo), static_cast<float>(job.etaHi)};
+  img.v2f["brdf.s.range"] = {static_cast<float>(dielectricCoord(job.etaLo)), static_cast<float>(dielectricCoord(job.etaHi))};
+  img.v2f["brdf.r.range"] = {0.0f, 1.0f};
+  if (!job.avg) img.v2f["brdf.mu.range"] = {0.0f, 1.0f};
+  str["brdf.grid"] = job.nodeGrid ? "node" : "texel-center";
+  str["brdf.size"] = job.avg ? std::to_string(job.nx) + "x" + std::to_string(job.ny)
+                             : std::to_string(job.nx) + "x" + std::to_string(job.ny) + "x" + std::to_string(job.nz);
+  if (!job.avg) {
+    str["brdf.atlas"] = std::to_string(job.cols) + "x" + std::to_string(job.rows);
+    img.floats["brdf.depth"] = static_cast<float>(job.nz);
+    str["brdf.atlas.order"] = "slice z (eta axis) at column z % " + std::to_string(job.cols) + ", row z / " +
+                              std::to_string(job.cols) + "; texel (x = mu, y = r) of a slice at pixel (column * " +
+                              std::to_string(job.nx) + " + x, row * " + std::to_string(job.ny) + " + y); unused slots hold 0";
+  }
+  str["brdf.channels"] = job.avg ? "R = E_R,avg, G = E_T,avg (2 int E mu dmu), B = E_R,avg + E_T,avg"
+                                 : "R = E_R (reflected albedo), G = E_T (transmitted albedo: the fraction of energy "
+                                   "transmitted, eta^2 radiance factor included), B = E_R + E_T (<= 1)";
+  str["brdf.method"] = methodText(job.avg);
+  str["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
+  double allowance = runner.hasDouble() ? kDoubleAllowance : kFloatAllowance;
+  img.floats["brdf.error"] = static_cast<float>(out.maxBound + allowance + std::ldexp(1.0, job.half ? -11 : -24));
+  img.floats["brdf.error.quadrature"] = static_cast<float>(out.maxBound);
+  return out;
+}
+
+OutputFile dielectricOutput(const DielectricJob& job, const DielectricTable& table) {
+  OutputFile f;
+  f.path = job.path;
+  f.half = job.half;
+  if (job.avg) {
+    f.image = &table.image;
+    return f;
+  }
+  const DielectricTable* t = &table;
+  f.write = [t, job](const std::string& tmp) {
+    size_t slice = static_cast<size_t>(job.nx) * job.ny;
+    auto slab = [t, slice](int z0, int zn) {
+      std::vector<std::vector<float>> p(3);
+      for (int c = 0; c < 3; ++c)
+        p[c].assign(t->cube[c].begin() + static_cast<std::ptrdiff_t>(z0 * slice),
+                    t->cube[c].begin() + static_cast<std::ptrdiff_t>((z0 + zn) * slice));
+      return p;
+    };
+    writeAtlasTemporary(tmp, job.path, t->image, job.half, {job.nx, job.ny, job.nz}, job.cols, slab,
+                        "dielectric " + ndfNames()[job.ndf] + "+" + gafNames()[job.gaf]);
+  };
+  return f;
+}
+
+}  // namespace brdfbake

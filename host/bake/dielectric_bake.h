@@ -1,0 +1,41 @@
+// The rough dielectric's tables (--table dielectric, dielectric-avg; docs/MODELS.md "Rough
+// dielectric"): E_R and E_T over (mu, r, eta) as an EXR atlas of eta slices, and their averages over
+// mu over (r, eta). The eta axis is sampled uniformly in s = (eta - 1)/(eta + 1).
+#pragma once
+#include <vector>
+
+#include "bake/output_set.h"
+#include "exr/table_file.h"
+#include "plan/plan.h"
+
+namespace brdfbake {
+
+class KernelRunner;
+
+// The eta axis's coordinate and back: s = (eta - 1)/(eta + 1) = sign(eta - 1) sqrt(F0), in (-1, 1).
+double dielectricCoord(double eta);
+double dielectricEta(double s);
+// eta of samples z0 .. z0 + n - 1 of the job's eta axis (texel centres or nodes in s).
+std::vector<double> dielectricEtas(const DielectricJob& job, int z0, int n);
+
+// The bound each texel's quadrature aims at (per lobe; kernels/integrate/dielectric.h DIEL_TARGET).
+constexpr float kDielectricTarget = 2e-6f;
+
+// A computed dielectric table: the header (its brdf.error from the texels' bounds) and, for the
+// 3D table, its planes E_R, E_T, E_R + E_T in slab order [(z * ny + y) * nx + x]; for the average,
+// the image itself.
+struct DielectricTable {
+  TableImage image;                      // header (3D) or the whole 2D table (avg)
+  std::vector<std::vector<float>> cube;  // 3D only
+  double maxBound = 0;                   // the largest texel bound (quadrature), before allowances
+  long long nodes = 0;                   // avg: E(mu) evaluations the averages' rule took
+};
+
+// Computes the table on the device (the 3D one slab by slab of `job.cols` slices) and checks that
+// every value is finite (Error(kExitSoftware) otherwise: nothing is written). *seconds: kernel time.
+DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job, double* seconds);
+
+// The OutputFile that writes a computed table (the 3D one through the atlas writer of bake/volume.h).
+OutputFile dielectricOutput(const DielectricJob& job, const DielectricTable& table);
+
+}  // namespace brdfbake
