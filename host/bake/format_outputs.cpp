@@ -90,7 +90,7 @@ std::vector<PlannedFile> tableOutputs(const TableJob& job, const TableImage& img
   const double computeError = std::max(0.0, stated - exrStorage);
   const std::string table = img.strings.count("brdf.table") ? img.strings.at("brdf.table") : "table";
   for (FileFormat f : job.formats)
-    if (f != FileFormat::Png16 && f != FileFormat::Exr && isUnorm(job.precision) && (lo0 < 0 || hi0 > 1))
+    if (f != FileFormat::Png16 && f != FileFormat::Exr && isUnorm(job.precision) && (lo0 < -kUnormSlack || hi0 > 1 + kUnormSlack))
       throw Error(kExitUsage, stem + formatExtension(f) + ": the " + table + " table's values span [" + fmtG(lo0) + ", " +
                                   fmtG(hi0) + "], outside [0, 1], which " + precisionName(job.precision) +
                                   " cannot hold; float32 or float16 (exr, ktx2, dds, header) can, and png16 maps the "

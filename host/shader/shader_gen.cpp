@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 
 #include "common/errors.h"
@@ -69,6 +70,27 @@ std::vector<Axis> axesOf(const std::string& path, const TableImage& h) {
   return axes;
 }
 
+// A number attribute: a float one, or a string that is all number (text metadata: KTX2, PNG).
+bool numberAttr(const TableImage& h, const std::string& k, double* v) {
+  if (auto f = h.floats.find(k); f != h.floats.end()) return *v = f->second, true;
+  auto it = h.strings.find(k);
+  if (it == h.strings.end() || it->second.empty()) return false;
+  char* end = nullptr;
+  *v = std::strtod(it->second.c_str(), &end);
+  return *end == '\0';
+}
+
+// The stored values' mapping (png16: value = stored * scale + offset, brdf.mapping.scale/offset)
+// applied to a texel `v` (RGB; alpha is padding); `v` itself when the file stores the values as they are.
+std::string mapped(const Lang& L, const TableImage& h, const std::string& v) {
+  double scale = 1, offset = 0;
+  bool has = numberAttr(h, "brdf.mapping.scale", &scale);
+  has = numberAttr(h, "brdf.mapping.offset", &offset) || has;
+  if (!has || (scale == 1 && offset == 0)) return v;
+  return v + " * " + L.f4() + "(" + lit(scale) + ", " + lit(scale) + ", " + lit(scale) + ", 1.0) + " + L.f4() + "(" +
+         lit(offset) + ", " + lit(offset) + ", " + lit(offset) + ", 0.0)";
+}
+
 // The coordinate maps and both lookup paths of a 2D (or 1D: height 1) table.
 std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, const std::vector<Axis>& ax, bool node) {
   const int w = h.width, hgt = h.height;
@@ -89,7 +111,7 @@ std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, 
   else s += "  return " + P + "_t(" + (oneD ? "x" : "x, y") + ");\n";
   s += "}\n";
   s += L.f4() + " " + P + "_lookup(" + L.texParam() + ", " + args + ") {\n  return " +
-       L.sample(P + "_uv(" + (oneD ? "x" : "x, y") + ")") + ";\n}\n";
+       mapped(L, h, L.sample(P + "_uv(" + (oneD ? "x" : "x, y") + ")")) + ";\n}\n";
   s += "// exact filtering: the four texels and the weights in float (hardware weights may have 8 bits)\n";
   s += L.f4() + " " + P + "_lookupExact(" + L.texParam() + ", " + args + ") {\n";
   s += "  " + L.f2() + " p = " + P + "_t(" + (oneD ? "x" : "x, y") + ") * " +
@@ -101,7 +123,8 @@ std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, 
   s += "  " + L.f4() + " v10 = " + L.fetch(L.i2() + "(b.x, a.y)") + ";\n";
   s += "  " + L.f4() + " v01 = " + L.fetch(L.i2() + "(a.x, b.y)") + ";\n";
   s += "  " + L.f4() + " v11 = " + L.fetch("b") + ";\n";
-  s += "  return " + L.mix() + "(" + L.mix() + "(v00, v10, f.x), " + L.mix() + "(v01, v11, f.x), f.y);\n}\n";
+  s += "  return " + mapped(L, h, L.mix() + "(" + L.mix() + "(v00, v10, f.x), " + L.mix() + "(v01, v11, f.x), f.y)") +
+       ";\n}\n";
   return s;
 }
 
@@ -241,6 +264,24 @@ std::string shaderForTable(const std::string& path, const TableImage& h, ShaderL
   if (!node)
     s += "// texel-center grid: within half a texel of an edge both paths return the edge texels (clamp)\n";
   return s + lookups2d(L, P, h, ax, node) + semantics2d(L, P, h, h.height == 1);
+}
+
+TableImage tableHeaderFromText(int width, int height, const std::map<std::string, std::string>& attributes) {
+  TableImage h;
+  h.width = width;
+  h.height = height;
+  for (const auto& [k, v] : attributes) {
+    h.strings[k] = v;
+    char* end = nullptr;
+    const double a = std::strtod(v.c_str(), &end);
+    if (end != v.c_str() && *end == '\0') h.floats[k] = static_cast<float>(a);
+    if (end != v.c_str() && *end == ',' && k.size() > 6 && k.compare(k.size() - 6, 6, ".range") == 0) {
+      char* end2 = nullptr;
+      const double b = std::strtod(end + 1, &end2);
+      if (*end2 == '\0') h.v2f[k] = {static_cast<float>(a), static_cast<float>(b)};
+    }
+  }
+  return h;
 }
 
 std::string shaderForFiles(const std::vector<std::string>& paths, ShaderLang lang) {
