@@ -9,6 +9,7 @@
 #include "cl/runner.h"
 #include "common/errors.h"
 #include "common/format.h"
+#include "formats/layout.h"
 #include "formats/writers.h"
 
 namespace brdfbake {
@@ -78,7 +79,9 @@ OutputFile writerFile(const std::string& path, FileFormat f, Precision p, const 
 
 }  // namespace
 
-std::vector<PlannedFile> tableOutputs(const TableJob& job, const TableImage& img, std::deque<TableImage>& keep) {
+std::vector<PlannedFile> tableOutputs(const TableJob& job, const TableImage& baked, std::deque<TableImage>& keep) {
+  // the engine's layout (formats/layout.h): every file of the set holds the same arrangement
+  const TableImage& img = job.layout.identity() ? baked : keep.emplace_back(applyLayout(baked, job.layout));
   const std::string stem = pathStem(job.path);
   const Precision exrPrecision = job.half ? Precision::Float16 : Precision::Float32;
   double exrStorage = 0;

@@ -112,6 +112,7 @@ void applyFormats(const BakeRequest& req, Plan& plan) {
   for (TableJob& j : plan.jobs) {
     j.formats = formats;
     j.precision = p;
+    j.layout = req.layout;
   }
   for (VolumeJob& v : plan.volumes) {
     if (v.merl) continue;
@@ -120,8 +121,11 @@ void applyFormats(const BakeRequest& req, Plan& plan) {
   }
 }
 
-Plan makePlan(const BakeRequest& req) {
-  if (!req.merl.empty()) return makeMerlPlan(req);
+Plan makePlan(const BakeRequest& given) {
+  if (!given.merl.empty()) return makeMerlPlan(given);
+  // a layout preset's size, where the request gives none (its format and precision: parseArgs)
+  BakeRequest req = given;
+  if (req.preset && !req.size) req.size = layoutPreset(*req.preset).size;
   Plan plan;
   plan.outDir = req.outDir;
   plan.device = req.device;

@@ -102,8 +102,13 @@ std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, 
   std::string args = oneD ? "float x" : "float x, float y";
   std::string yExpr = oneD ? "0.5" : "(y - " + y0 + ") / (" + y1 + " - " + y0 + ")";
   s += "// fraction of each axis' range, clamped: quantities outside the table read its edge\n";
-  s += L.f2() + " " + P + "_t(" + args + ") {\n  return clamp(" + L.f2() + "((x - " + x0 + ") / (" + x1 + " - " + x0 +
-       "), " + yExpr + "), 0.0, 1.0);\n}\n";
+  const std::string flip = attr(h, "brdf.layout.flip", "none");
+  const bool fx = flip.find('x') != std::string::npos, fy = flip.find('y') != std::string::npos;
+  s += L.f2() + " " + P + "_t(" + args + ") {\n  " + L.f2() + " t = clamp(" + L.f2() + "((x - " + x0 + ") / (" + x1 + " - " +
+       x0 + "), " + yExpr + "), 0.0, 1.0);\n";
+  if (fx) s += "  t.x = 1.0 - t.x;  // texel 0 holds the high end of x (brdf.layout.flip)\n";
+  if (fy) s += "  t.y = 1.0 - t.y;  // texel 0 holds the high end of y (brdf.layout.flip)\n";
+  s += "  return t;\n}\n";
   s += "// texture coordinate for the hardware filter (" + std::string(node ? "node grid: texel i holds i/(n-1)" :
                                                                         "texel-center grid: texel i holds (i+0.5)/n") + ")\n";
   s += L.f2() + " " + P + "_uv(" + args + ") {\n";
@@ -133,7 +138,24 @@ std::string semantics2d(const Lang& L, const std::string& P, const TableImage& h
   const std::string table = attr(h, "brdf.table"), channels = attr(h, "brdf.channels");
   const bool rgb = channels.rfind("R,G,B", 0) == 0;
   const std::string args = oneD ? "float x" : "float mu, float r";
-  const std::string call = oneD ? "x" : "mu, r";
+  // the layout (formats/layout.h): r along x swaps the arguments; the stored channels give A and B
+  const std::string call = oneD ? "x" : attr(h, "brdf.axes") == "r,mu" ? "r, mu" : "mu, r";
+  const std::string stored = attr(h, "brdf.layout.channels", "A,B,A+B");
+  std::vector<std::string> ch;
+  for (size_t at = 0; at <= stored.size();) {
+    size_t comma = stored.find(',', at);
+    if (comma == std::string::npos) comma = stored.size();
+    ch.push_back(stored.substr(at, comma - at));
+    at = comma + 1;
+  }
+  auto idx = [&](const std::string& q) {
+    for (size_t c = 0; c < ch.size(); ++c)
+      if (ch[c] == q) return std::string("v.") + "rgb"[c];
+    return std::string();
+  };
+  const std::string sA = idx("A"), sB = idx("B"), sAB = idx("A+B");
+  const std::string exA = !sA.empty() ? sA : "(" + sAB + " - " + sB + ")", exB = !sB.empty() ? sB : "(" + sAB + " - " + sA + ")";
+  const bool plainLayout = stored == "A,B,A+B";
   std::string s;
   for (std::string variant : {"", "Exact"}) {
     std::string get = P + "_lookup" + variant + "(" + L.texArgs() + ", " + call + ")";
@@ -142,9 +164,11 @@ std::string semantics2d(const Lang& L, const std::string& P, const TableImage& h
            ") {\n" + body + "}\n";
     };
     if (table == "splitsum") {
-      fn(L.f2(), "AB", "", "  return " + get + ".rg;\n");
-      fn(L.f3(), "Schlick", L.f3() + " f0", "  " + L.f4() + " v = " + get + ";\n  return f0 * v.r + v.g;\n");
-      if (attr(h, "brdf.fresnel") == "f82-tint")
+      fn(L.f2(), "AB", "", "  " + L.f4() + " v = " + get + ";\n  return " + L.f2() + "(" + exA + ", " + exB + ");\n");
+      fn(L.f3(), "Schlick", L.f3() + " f0", "  " + L.f4() + " v = " + get + ";\n  return f0 * " + exA + " + " + exB + ";\n");
+      if (!plainLayout) {
+        // a layout's channels hold A, B and A + B only
+      } else if (attr(h, "brdf.fresnel") == "f82-tint")
         fn(L.f3(), "F82Tint", L.f3() + " f0, " + L.f3() + " b",
            "  " + L.f4() + " v = " + get + ";\n  return f0 * v.r + v.g - b * v.b;\n");
       else if (channels.find("E_d") != std::string::npos)
