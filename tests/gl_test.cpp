@@ -6,9 +6,6 @@
 // emulated on the host (what NVIDIA's hardware documents), and (3) with the independent reference:
 // the error must stay within what the file predicts, brdf.error + brdf.interp-error. No EGL or no
 // GLES 3.1: the test fails (CI installs Mesa's EGL).
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
-#include <GLES3/gl31.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -25,44 +22,14 @@
 #include "common/models.h"
 #include "exr/table_file.h"
 #include "reference/reference.h"
+#include "gl_harness.h"
 #include "shader/shader_gen.h"
 
 namespace fs = std::filesystem;
 namespace {
 using namespace brdfbake;
 
-struct Gl {
-  EGLDisplay display = EGL_NO_DISPLAY;
-  EGLContext context = EGL_NO_CONTEXT;
-  std::string problem;
-  Gl() {
-    auto getDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    if (!getDisplay) { problem = "no eglGetPlatformDisplayEXT"; return; }
-    display = getDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    EGLint major = 0, minor = 0;
-    if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor)) {
-      problem = "no EGL surfaceless display (install libegl-mesa0 and libgl1-mesa-dri)";
-      return;
-    }
-    eglBindAPI(EGL_OPENGL_ES_API);
-    EGLint cfgAttr[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_NONE};
-    EGLConfig cfg = nullptr;
-    EGLint n = 0;
-    eglChooseConfig(display, cfgAttr, &cfg, 1, &n);
-    EGLint ctxAttr[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 1, EGL_NONE};
-    context = eglCreateContext(display, n ? cfg : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, ctxAttr);
-    if (context == EGL_NO_CONTEXT || !eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
-      problem = "no OpenGL ES 3.1 context";
-      return;
-    }
-    const char* ext = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
-    if (!ext || !std::strstr(ext, "GL_OES_texture_float_linear")) problem = "no GL_OES_texture_float_linear";
-  }
-};
-Gl& gl() {
-  static Gl g;
-  return g;
-}
+using glharness::gl;
 
 fs::path bakeDir() {
   static fs::path d = [] {
@@ -81,47 +48,17 @@ fs::path bakeDir() {
   return d;
 }
 
-// Compiles `src` as a compute shader; the build log on failure.
-GLuint program(const std::string& src, std::string* log) {
-  GLuint sh = glCreateShader(GL_COMPUTE_SHADER);
-  const char* p = src.c_str();
-  glShaderSource(sh, 1, &p, nullptr);
-  glCompileShader(sh);
-  GLint ok = 0;
-  glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
-  char buf[8192];
-  if (!ok) {
-    glGetShaderInfoLog(sh, sizeof buf, nullptr, buf);
-    *log = buf;
-    return 0;
-  }
-  GLuint prog = glCreateProgram();
-  glAttachShader(prog, sh);
-  glLinkProgram(prog);
-  glGetProgramiv(prog, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    glGetProgramInfoLog(prog, sizeof buf, nullptr, buf);
-    *log = buf;
-    return 0;
-  }
-  return prog;
-}
-
-// The table as a texture: RGBA32F (RGBA16F for a HALF file: the same values), linear, clamped.
-GLuint upload(const TableImage& t, bool half) {
+// The table as a texture: RGBA32F (RGBA16F for a HALF file: the same values), alpha 1.
+glharness::Texels texels(const TableImage& t, bool half) {
   std::vector<float> px(static_cast<size_t>(t.width) * t.height * 4, 1.0f);
   for (size_t i = 0; i < px.size() / 4; ++i)
     for (size_t c = 0; c < 3 && c < t.planes.size(); ++c) px[i * 4 + c] = t.planes[c][i];
-  GLuint tex;
-  glGenTextures(1, &tex);
-  glBindTexture(GL_TEXTURE_2D, tex);
-  glTexStorage2D(GL_TEXTURE_2D, 1, half ? GL_RGBA16F : GL_RGBA32F, t.width, t.height);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, t.width, t.height, GL_RGBA, GL_FLOAT, px.data());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return tex;
+  glharness::Texels x;
+  x.width = t.width;
+  x.height = t.height;
+  x.internalFormat = half ? GL_RGBA16F : GL_RGBA32F;
+  x.assign(px);
+  return x;
 }
 
 // Runs the generated lookups of `file` at `points` (x, y, z, unused): per point, the hardware
@@ -130,60 +67,14 @@ std::vector<float> sampleOnGpu(const std::string& file, const TableImage& t, boo
                                const std::vector<float>& points, int dims) {
   std::string P = shaderPrefix(file);
   std::string call = dims == 1 ? "p.x" : dims == 2 ? "p.x, p.y" : "p.x, p.y, p.z";
-  std::string src = "#version 310 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n" +
-                    shaderForTable(file, t, ShaderLang::Glsl) +
-                    "layout(local_size_x = 64) in;\n"
-                    "layout(std430, binding = 0) readonly buffer In { vec4 pts[]; };\n"
-                    "layout(std430, binding = 1) writeonly buffer Out { vec4 res[]; };\n"
-                    "uniform sampler2D tab;\nuniform int count;\n"
-                    "void main() {\n  int i = int(gl_GlobalInvocationID.x);\n  if (i >= count) return;\n  vec4 p = pts[i];\n"
-                    "  res[2 * i] = " + P + "_lookup(tab, " + call + ");\n"
-                    "  res[2 * i + 1] = " + P + "_lookupExact(tab, " + call + ");\n}\n";
-  std::string log;
-  GLuint prog = program(src, &log);
-  EXPECT_NE(prog, 0u) << "generated GLSL for " << file << " does not compile:\n" << log;
-  if (!prog) return {};
-  GLuint tex = upload(t, half);
-  int n = static_cast<int>(points.size() / 4);
-  GLuint buf[2];
-  glGenBuffers(2, buf);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf[0]);
-  glBufferData(GL_SHADER_STORAGE_BUFFER, points.size() * sizeof(float), points.data(), GL_STATIC_DRAW);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buf[1]);
-  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<size_t>(n) * 8 * sizeof(float), nullptr, GL_DYNAMIC_READ);
-  glUseProgram(prog);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, tex);
-  glUniform1i(glGetUniformLocation(prog, "tab"), 0);
-  glUniform1i(glGetUniformLocation(prog, "count"), n);
-  glDispatchCompute((n + 63) / 64, 1, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<float> out(static_cast<size_t>(n) * 8);
-  const void* mapped = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, out.size() * sizeof(float), GL_MAP_READ_BIT);
-  EXPECT_NE(mapped, nullptr);
-  if (mapped) std::memcpy(out.data(), mapped, out.size() * sizeof(float));
-  glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
-  glDeleteBuffers(2, buf);
-  glDeleteTextures(1, &tex);
-  glDeleteProgram(prog);
-  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  return out;
+  return glharness::runOnGpu(shaderForTable(file, t, ShaderLang::Glsl),
+                             "  res[2 * i] = " + P + "_lookup(tab, " + call + ");\n  res[2 * i + 1] = " + P +
+                                 "_lookupExact(tab, " + call + ");\n",
+                             texels(t, half), points, 2);
 }
 
-// The host's bilinear lookup of channel c at fractional texel (px, py) (texel i's centre at i),
-// clamped; with `bits` > 0 the weights are rounded to that many fractional bits (8: NVIDIA's filter).
 double bilinear(const TableImage& t, int c, double px, double py, int bits = 0) {
-  px = std::clamp(px, 0.0, t.width - 1.0);
-  py = std::clamp(py, 0.0, t.height - 1.0);
-  int x0 = std::min(static_cast<int>(px), std::max(t.width - 2, 0)), y0 = std::min(static_cast<int>(py), std::max(t.height - 2, 0));
-  double fx = t.width > 1 ? px - x0 : 0, fy = t.height > 1 ? py - y0 : 0;
-  if (bits > 0) {
-    fx = std::round(std::ldexp(fx, bits)) / std::ldexp(1.0, bits);
-    fy = std::round(std::ldexp(fy, bits)) / std::ldexp(1.0, bits);
-  }
-  int x1 = std::min(x0 + 1, t.width - 1), y1 = std::min(y0 + 1, t.height - 1);
-  auto v = [&](int x, int y) { return static_cast<double>(t.planes[c][static_cast<size_t>(y) * t.width + x]); };
-  return (1 - fy) * ((1 - fx) * v(x0, y0) + fx * v(x1, y0)) + fy * ((1 - fx) * v(x0, y1) + fx * v(x1, y1));
+  return glharness::bilinear(t.planes, t.width, t.height, c, px, py, bits);
 }
 
 struct Figures {

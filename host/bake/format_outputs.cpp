@@ -9,6 +9,7 @@
 #include "cl/runner.h"
 #include "common/errors.h"
 #include "common/format.h"
+#include "formats/layout.h"
 #include "formats/writers.h"
 
 namespace brdfbake {
@@ -78,7 +79,9 @@ OutputFile writerFile(const std::string& path, FileFormat f, Precision p, const 
 
 }  // namespace
 
-std::vector<PlannedFile> tableOutputs(const TableJob& job, const TableImage& img, std::deque<TableImage>& keep) {
+std::vector<PlannedFile> tableOutputs(const TableJob& job, const TableImage& baked, std::deque<TableImage>& keep) {
+  // the engine's layout (formats/layout.h): every file of the set holds the same arrangement
+  const TableImage& img = job.layout.identity() ? baked : keep.emplace_back(applyLayout(baked, job.layout));
   const std::string stem = pathStem(job.path);
   const Precision exrPrecision = job.half ? Precision::Float16 : Precision::Float32;
   double exrStorage = 0;
@@ -90,7 +93,7 @@ std::vector<PlannedFile> tableOutputs(const TableJob& job, const TableImage& img
   const double computeError = std::max(0.0, stated - exrStorage);
   const std::string table = img.strings.count("brdf.table") ? img.strings.at("brdf.table") : "table";
   for (FileFormat f : job.formats)
-    if (f != FileFormat::Png16 && f != FileFormat::Exr && isUnorm(job.precision) && (lo0 < 0 || hi0 > 1))
+    if (f != FileFormat::Png16 && f != FileFormat::Exr && isUnorm(job.precision) && (lo0 < -kUnormSlack || hi0 > 1 + kUnormSlack))
       throw Error(kExitUsage, stem + formatExtension(f) + ": the " + table + " table's values span [" + fmtG(lo0) + ", " +
                                   fmtG(hi0) + "], outside [0, 1], which " + precisionName(job.precision) +
                                   " cannot hold; float32 or float16 (exr, ktx2, dds, header) can, and png16 maps the "

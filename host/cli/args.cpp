@@ -148,6 +148,12 @@ void addUnique(std::vector<T>& v, T x) {
 // --format and --precision together: every format named must hold the precision asked for
 // (png16 is unorm16 with its own mapping; exr stores float32 or float16), and PNG is 2D only.
 void checkFormatOptions(BakeRequest& req) {
+  if (req.layoutPreset) {  // a layout preset's format and precision, where the request gives none
+    const LayoutPreset& lp = layoutPreset(*req.layoutPreset);
+    if (req.formats.empty()) req.formats = {lp.format};
+    if (!req.precision && formatHolds(req.formats[0], lp.precision))
+      req.precision = lp.precision, req.half = lp.precision == Precision::Float16;
+  }
   if (req.formats.empty() && !req.volume.merl) req.formats = {FileFormat::Exr};
   if (req.precision)
     for (FileFormat f : req.formats)
@@ -303,6 +309,21 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       }
     } else if (parseVolumeOption(opt, value, req)) {
       // a brdf3d option (cli/volume_args.cpp)
+    } else if (opt == "--layout") {
+      once(opt, "--layout");
+      req.layoutPreset = layoutPreset(value()).name;
+      req.layout = layoutPreset(*req.layoutPreset).layout;
+    } else if (opt == "--axes" || opt == "--flip-x" || opt == "--flip-y" || opt == "--channels") {
+      once(opt, opt);
+      if (opt == "--axes") {
+        const std::string& v = value();
+        if (v != "mu,r" && v != "r,mu") throw Error(kExitUsage, "--axes must be mu,r or r,mu, got '" + v + "'");
+        req.layout.rAlongX = v == "r,mu";
+      } else if (opt == "--channels") {
+        req.layout.channels = parseLayoutChannels(value());
+      } else {
+        (opt == "--flip-x" ? req.layout.flipX : req.layout.flipY) = true;
+      }
     } else if (opt == "--grid") {
       once(opt, "--grid");
       gridName = value();

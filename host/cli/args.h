@@ -8,6 +8,7 @@
 #include "common/brdf3d_grid.h"
 #include "common/material.h"
 #include "common/models.h"
+#include "formats/layout.h"
 #include "formats/storage.h"
 #include "scene/scene_run.h"
 
@@ -22,6 +23,8 @@ struct BakeRequest {
   bool half = false;                 // HALF instead of FLOAT channels (precision float16)
   std::optional<Precision> precision;  // --precision (--half: float16); unset: float32
   std::vector<FileFormat> formats;   // --format (merl apart: volume.merl); empty: exr
+  TableLayout layout;                // --layout preset / --axes, --flip-x, --flip-y, --channels
+  std::optional<std::string> layoutPreset;  // --layout NAME: its format, precision and size unless given
   bool nodeGrid = false;             // samples at i/(n-1) instead of texel centres (i+0.5)/n
   std::string device;                // substring of the device (or platform) name; "" = first CPU
   std::string cacheDir;              // PoCL kernel cache (POCL_CACHE_DIR); "" = PoCL's default

@@ -136,7 +136,7 @@ void packTexels(const std::string& path, const std::vector<std::vector<float>>& 
         ExitCode code = kExitDataErr;
         if (!std::isfinite(v)) problem = std::isnan(v) ? "is NaN" : "is infinite";
         else if (p == Precision::Float16 && std::fabs(v) > 65504.0f) problem = "exceeds the float16 range (|v| <= 65504)";
-        else if (isUnorm(p) && !(v >= 0.0f && v <= 1.0f)) {
+        else if (isUnorm(p) && !(v >= -kUnormSlack && v <= 1.0f + kUnormSlack)) {
           problem = "is outside [0, 1], which " + precisionName(p) +
                     " cannot hold (float32 or float16 can; for 2D tables also png16's mapping)";
           code = kExitUsage;

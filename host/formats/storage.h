@@ -30,6 +30,10 @@ std::string formatExtension(FileFormat f);
 // ktx2, dds, header: all four).
 bool formatHolds(FileFormat f, Precision p);
 bool isUnorm(Precision p);
+// How far past [0, 1] a unorm value may lie and be clamped: a few float ulps at 1 (2^-20), the
+// rounding of quantities that are exactly 1 (A + B at mu = 1, r = 0 on a node grid, 1.00000012).
+// The clamp is storage rounding: storageError counts it.
+inline constexpr float kUnormSlack = 1.0f / 1048576.0f;
 int bytesPerChannel(Precision p);  // 4, 2, 2, 1
 
 // The value a texel `v` reads back as after storing it with precision `p` (round to nearest;

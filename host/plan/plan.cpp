@@ -112,6 +112,7 @@ void applyFormats(const BakeRequest& req, Plan& plan) {
   for (TableJob& j : plan.jobs) {
     j.formats = formats;
     j.precision = p;
+    j.layout = req.layout;
   }
   for (VolumeJob& v : plan.volumes) {
     if (v.merl) continue;
@@ -194,9 +195,12 @@ void planDielectric(const BakeRequest& req, Plan& plan) {
 }
 }  // namespace
 
-Plan makePlan(const BakeRequest& req) {
-  if (!req.preset.empty()) return makePresetPlan(req);
-  if (!req.merl.empty()) return makeMerlPlan(req);
+Plan makePlan(const BakeRequest& given) {
+  if (!given.preset.empty()) return makePresetPlan(given);
+  if (!given.merl.empty()) return makeMerlPlan(given);
+  // a layout preset's size, where the request gives none (its format and precision: parseArgs)
+  BakeRequest req = given;
+  if (req.layoutPreset && !req.size) req.size = layoutPreset(*req.layoutPreset).size;
   Plan plan;
   planDielectric(req, plan);
   plan.outDir = req.outDir;

@@ -26,6 +26,7 @@ struct TableJob {
   // half == (precision == float16), what the EXR file stores
   std::vector<FileFormat> formats = {FileFormat::Exr};
   Precision precision = Precision::Float32;
+  TableLayout layout = {};  // splitsum: axis order, flips, channels (formats/layout.h)
 };
 
 // A 3D table (--table brdf3d): one per NDF/GAF pair, baked and written slab by slab.

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 
 #include "common/errors.h"
@@ -69,6 +70,27 @@ std::vector<Axis> axesOf(const std::string& path, const TableImage& h) {
   return axes;
 }
 
+// A number attribute: a float one, or a string that is all number (text metadata: KTX2, PNG).
+bool numberAttr(const TableImage& h, const std::string& k, double* v) {
+  if (auto f = h.floats.find(k); f != h.floats.end()) return *v = f->second, true;
+  auto it = h.strings.find(k);
+  if (it == h.strings.end() || it->second.empty()) return false;
+  char* end = nullptr;
+  *v = std::strtod(it->second.c_str(), &end);
+  return *end == '\0';
+}
+
+// The stored values' mapping (png16: value = stored * scale + offset, brdf.mapping.scale/offset)
+// applied to a texel `v` (RGB; alpha is padding); `v` itself when the file stores the values as they are.
+std::string mapped(const Lang& L, const TableImage& h, const std::string& v) {
+  double scale = 1, offset = 0;
+  bool has = numberAttr(h, "brdf.mapping.scale", &scale);
+  has = numberAttr(h, "brdf.mapping.offset", &offset) || has;
+  if (!has || (scale == 1 && offset == 0)) return v;
+  return v + " * " + L.f4() + "(" + lit(scale) + ", " + lit(scale) + ", " + lit(scale) + ", 1.0) + " + L.f4() + "(" +
+         lit(offset) + ", " + lit(offset) + ", " + lit(offset) + ", 0.0)";
+}
+
 // The coordinate maps and both lookup paths of a 2D (or 1D: height 1) table.
 std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, const std::vector<Axis>& ax, bool node) {
   const int w = h.width, hgt = h.height;
@@ -80,8 +102,13 @@ std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, 
   std::string args = oneD ? "float x" : "float x, float y";
   std::string yExpr = oneD ? "0.5" : "(y - " + y0 + ") / (" + y1 + " - " + y0 + ")";
   s += "// fraction of each axis' range, clamped: quantities outside the table read its edge\n";
-  s += L.f2() + " " + P + "_t(" + args + ") {\n  return clamp(" + L.f2() + "((x - " + x0 + ") / (" + x1 + " - " + x0 +
-       "), " + yExpr + "), 0.0, 1.0);\n}\n";
+  const std::string flip = attr(h, "brdf.layout.flip", "none");
+  const bool fx = flip.find('x') != std::string::npos, fy = flip.find('y') != std::string::npos;
+  s += L.f2() + " " + P + "_t(" + args + ") {\n  " + L.f2() + " t = clamp(" + L.f2() + "((x - " + x0 + ") / (" + x1 + " - " +
+       x0 + "), " + yExpr + "), 0.0, 1.0);\n";
+  if (fx) s += "  t.x = 1.0 - t.x;  // texel 0 holds the high end of x (brdf.layout.flip)\n";
+  if (fy) s += "  t.y = 1.0 - t.y;  // texel 0 holds the high end of y (brdf.layout.flip)\n";
+  s += "  return t;\n}\n";
   s += "// texture coordinate for the hardware filter (" + std::string(node ? "node grid: texel i holds i/(n-1)" :
                                                                         "texel-center grid: texel i holds (i+0.5)/n") + ")\n";
   s += L.f2() + " " + P + "_uv(" + args + ") {\n";
@@ -89,7 +116,7 @@ std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, 
   else s += "  return " + P + "_t(" + (oneD ? "x" : "x, y") + ");\n";
   s += "}\n";
   s += L.f4() + " " + P + "_lookup(" + L.texParam() + ", " + args + ") {\n  return " +
-       L.sample(P + "_uv(" + (oneD ? "x" : "x, y") + ")") + ";\n}\n";
+       mapped(L, h, L.sample(P + "_uv(" + (oneD ? "x" : "x, y") + ")")) + ";\n}\n";
   s += "// exact filtering: the four texels and the weights in float (hardware weights may have 8 bits)\n";
   s += L.f4() + " " + P + "_lookupExact(" + L.texParam() + ", " + args + ") {\n";
   s += "  " + L.f2() + " p = " + P + "_t(" + (oneD ? "x" : "x, y") + ") * " +
@@ -101,7 +128,8 @@ std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, 
   s += "  " + L.f4() + " v10 = " + L.fetch(L.i2() + "(b.x, a.y)") + ";\n";
   s += "  " + L.f4() + " v01 = " + L.fetch(L.i2() + "(a.x, b.y)") + ";\n";
   s += "  " + L.f4() + " v11 = " + L.fetch("b") + ";\n";
-  s += "  return " + L.mix() + "(" + L.mix() + "(v00, v10, f.x), " + L.mix() + "(v01, v11, f.x), f.y);\n}\n";
+  s += "  return " + mapped(L, h, L.mix() + "(" + L.mix() + "(v00, v10, f.x), " + L.mix() + "(v01, v11, f.x), f.y)") +
+       ";\n}\n";
   return s;
 }
 
@@ -110,7 +138,24 @@ std::string semantics2d(const Lang& L, const std::string& P, const TableImage& h
   const std::string table = attr(h, "brdf.table"), channels = attr(h, "brdf.channels");
   const bool rgb = channels.rfind("R,G,B", 0) == 0;
   const std::string args = oneD ? "float x" : "float mu, float r";
-  const std::string call = oneD ? "x" : "mu, r";
+  // the layout (formats/layout.h): r along x swaps the arguments; the stored channels give A and B
+  const std::string call = oneD ? "x" : attr(h, "brdf.axes") == "r,mu" ? "r, mu" : "mu, r";
+  const std::string stored = attr(h, "brdf.layout.channels", "A,B,A+B");
+  std::vector<std::string> ch;
+  for (size_t at = 0; at <= stored.size();) {
+    size_t comma = stored.find(',', at);
+    if (comma == std::string::npos) comma = stored.size();
+    ch.push_back(stored.substr(at, comma - at));
+    at = comma + 1;
+  }
+  auto idx = [&](const std::string& q) {
+    for (size_t c = 0; c < ch.size(); ++c)
+      if (ch[c] == q) return std::string("v.") + "rgb"[c];
+    return std::string();
+  };
+  const std::string sA = idx("A"), sB = idx("B"), sAB = idx("A+B");
+  const std::string exA = !sA.empty() ? sA : "(" + sAB + " - " + sB + ")", exB = !sB.empty() ? sB : "(" + sAB + " - " + sA + ")";
+  const bool plainLayout = stored == "A,B,A+B";
   std::string s;
   for (std::string variant : {"", "Exact"}) {
     std::string get = P + "_lookup" + variant + "(" + L.texArgs() + ", " + call + ")";
@@ -119,9 +164,11 @@ std::string semantics2d(const Lang& L, const std::string& P, const TableImage& h
            ") {\n" + body + "}\n";
     };
     if (table == "splitsum") {
-      fn(L.f2(), "AB", "", "  return " + get + ".rg;\n");
-      fn(L.f3(), "Schlick", L.f3() + " f0", "  " + L.f4() + " v = " + get + ";\n  return f0 * v.r + v.g;\n");
-      if (attr(h, "brdf.fresnel") == "f82-tint")
+      fn(L.f2(), "AB", "", "  " + L.f4() + " v = " + get + ";\n  return " + L.f2() + "(" + exA + ", " + exB + ");\n");
+      fn(L.f3(), "Schlick", L.f3() + " f0", "  " + L.f4() + " v = " + get + ";\n  return f0 * " + exA + " + " + exB + ";\n");
+      if (!plainLayout) {
+        // a layout's channels hold A, B and A + B only
+      } else if (attr(h, "brdf.fresnel") == "f82-tint")
         fn(L.f3(), "F82Tint", L.f3() + " f0, " + L.f3() + " b",
            "  " + L.f4() + " v = " + get + ";\n  return f0 * v.r + v.g - b * v.b;\n");
       else if (channels.find("E_d") != std::string::npos)
@@ -241,6 +288,24 @@ std::string shaderForTable(const std::string& path, const TableImage& h, ShaderL
   if (!node)
     s += "// texel-center grid: within half a texel of an edge both paths return the edge texels (clamp)\n";
   return s + lookups2d(L, P, h, ax, node) + semantics2d(L, P, h, h.height == 1);
+}
+
+TableImage tableHeaderFromText(int width, int height, const std::map<std::string, std::string>& attributes) {
+  TableImage h;
+  h.width = width;
+  h.height = height;
+  for (const auto& [k, v] : attributes) {
+    h.strings[k] = v;
+    char* end = nullptr;
+    const double a = std::strtod(v.c_str(), &end);
+    if (end != v.c_str() && *end == '\0') h.floats[k] = static_cast<float>(a);
+    if (end != v.c_str() && *end == ',' && k.size() > 6 && k.compare(k.size() - 6, 6, ".range") == 0) {
+      char* end2 = nullptr;
+      const double b = std::strtod(end + 1, &end2);
+      if (*end2 == '\0') h.v2f[k] = {static_cast<float>(a), static_cast<float>(b)};
+    }
+  }
+  return h;
 }
 
 std::string shaderForFiles(const std::vector<std::string>& paths, ShaderLang lang) {

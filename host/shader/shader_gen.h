@@ -4,6 +4,7 @@
 // mapping wrong. Two paths per table: the hardware bilinear filter (texture()), and an exact one
 // (four texelFetch and the lerps in float) for GPUs whose filter weights have 8 fractional bits.
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,12 @@ std::string shaderPrefix(const std::string& path);
 // The functions for one table (its header attributes describe it; its pixels are not needed).
 // Throws Error(kExitDataErr) naming the file when the header lacks what the code needs.
 std::string shaderForTable(const std::string& path, const TableImage& header, ShaderLang lang);
+
+// A header from text metadata (KTX2 key/value data, PNG text chunks; formats/storage.h
+// attributesAsText): every attribute as a string, those that are all number also as floats,
+// "brdf.<axis>.range" = "lo,hi" as a V2f. A png16 file's brdf.mapping.scale/offset go into the
+// generated lookups (value = stored * scale + offset).
+TableImage tableHeaderFromText(int width, int height, const std::map<std::string, std::string>& attributes);
 
 // `brdfbake shader --lang L FILE...`: every file's functions, plus the glue to
 // shaders/multiscatter.glsl (lookupE, lookupEavg, lookupAB) when the albedo, albedo-avg and

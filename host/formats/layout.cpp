@@ -1,0 +1,97 @@
+// Layouts and presets: see layout.h. The presets follow the engines' sampling code (conventions
+// and facts cited, no code taken):
+#include "formats/layout.h"
+
+#include <algorithm>
+
+#include "common/errors.h"
+
+namespace brdfbake {
+
+const std::vector<LayoutPreset>& layoutPresets() {
+  // Each engine samples its LUT at uv = (NoV, perceptual roughness) (mu along x, r along y, r the
+  // baker's roughness axis: alpha = r^2) with texel-center addressing and texel row 0 at uv.y = 0
+  // (row 0 = r 0: no flip); they differ in the channels and the file.
+  static const std::vector<LayoutPreset> presets = {
+      {"filament", {false, false, false, {"B", "A+B"}}, FileFormat::Ktx2, Precision::Float16, 128,
+       "google/filament shaders/src/light_indirect.fs: PrefilteredDFG_LUT = textureLod(light_iblDFG, vec2(NoV, "
+       "roughness), 0.0).rg; specularDFG = mix(dfg.xxx, dfg.yyy, f0) (multiple scattering): R = B, G = A + B"},
+      {"bevy", {false, false, false, {"A", "B"}}, FileFormat::Ktx2, Precision::Float16, 64,
+       "bevyengine/bevy crates/bevy_pbr/src/environment_map/environment_map.wgsl: f_ab = "
+       "textureSample(environment_map_brdf_lut, s, vec2(NdotV, perceptual_roughness)).rg; FssEss = kS * f_ab.x + "
+       "f_ab.y: R = A, G = B"},
+      {"unity-hdrp", {false, false, false, {"B", "A+B"}}, FileFormat::Exr, Precision::Float16, 64,
+       "Unity-Technologies/Graphics com.unity.render-pipelines.high-definition/HDRP/Material/PreIntegratedFGD/"
+       "PreIntegratedFGD.hlsl: preFGD = SAMPLE_TEXTURE2D_LOD(_PreIntegratedFGD_GGXDisneyDiffuse, "
+       "s_linear_clamp_sampler, float2(NdotV, perceptualRoughness), 0); specularFGD = lerp(preFGD.xxx, "
+       "preFGD.yyy, fresnel0): R = B, G = A + B (the linear-NdotV form; later HDRP samples sqrt(NdotV), which "
+       "the baker's linear mu axis does not hold)"},
+  };
+  return presets;
+}
+
+const LayoutPreset& layoutPreset(const std::string& name) {
+  std::string list;
+  for (const auto& p : layoutPresets()) {
+    if (p.name == name) return p;
+    list += (list.empty() ? "" : ", ") + p.name;
+  }
+  throw Error(kExitUsage, "--layout: unknown preset '" + name + "'; presets: " + list +
+                              " (or set the layout with --axes mu,r|r,mu, --flip-x, --flip-y, --channels)");
+}
+
+std::vector<std::string> parseLayoutChannels(const std::string& list) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (true) {
+    const size_t comma = list.find(',', start);
+    std::string c = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (c != "A" && c != "B" && c != "A+B")
+      throw Error(kExitUsage, "--channels: '" + c + "' is not a split-sum quantity (A, B or A+B)");
+    if (std::find(out.begin(), out.end(), c) != out.end()) throw Error(kExitUsage, "--channels: " + c + " twice");
+    out.push_back(c);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (out.size() < 2 || out.size() > 3)
+    throw Error(kExitUsage, "--channels: give 2 or 3 of A, B, A+B (stored as R, G[, B]), got '" + list + "'");
+  if (out.size() == 2 && std::find(out.begin(), out.end(), "A") == out.end() &&
+      std::find(out.begin(), out.end(), "B") == out.end())
+    throw Error(kExitUsage, "--channels: A+B alone with nothing else cannot give A and B");
+  return out;
+}
+
+TableImage applyLayout(const TableImage& img, const TableLayout& layout) {
+  if (layout.identity()) return img;
+  auto table = img.strings.find("brdf.table");
+  if (table == img.strings.end() || table->second != "splitsum" || img.planes.size() < 2)
+    throw Error(kExitUsage, "--layout, --axes, --flip-x, --flip-y, --channels apply to the splitsum table only");
+  const std::vector<std::string> chans = layout.channels.empty() ? std::vector<std::string>{"A", "B", "A+B"} : layout.channels;
+  auto ch = img.strings.find("brdf.channels");
+  const bool thirdIsSum = img.planes.size() > 2 && ch != img.strings.end() && ch->second.find("B=A+B") != std::string::npos;
+  TableImage out = img;
+  const int w = img.width, h = img.height;
+  out.width = layout.rAlongX ? h : w;
+  out.height = layout.rAlongX ? w : h;
+  out.channels.assign(kTableChannels, kTableChannels + chans.size());
+  out.planes.assign(chans.size(), std::vector<float>(static_cast<size_t>(w) * h));
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) {
+      const int sx = layout.flipX ? out.width - 1 - x : x, sy = layout.flipY ? out.height - 1 - y : y;
+      const int mu = layout.rAlongX ? sy : sx, r = layout.rAlongX ? sx : sy;  // source texel
+      const size_t src = static_cast<size_t>(r) * w + mu, dst = static_cast<size_t>(y) * out.width + x;
+      const float a = img.planes[0][src], b = img.planes[1][src];
+      for (size_t c = 0; c < chans.size(); ++c)
+        out.planes[c][dst] = chans[c] == "A" ? a : chans[c] == "B" ? b : thirdIsSum ? img.planes[2][src] : a + b;
+    }
+  std::string stored;
+  for (size_t c = 0; c < chans.size(); ++c) stored += (c ? "," : "") + chans[c];
+  out.strings["brdf.axes"] = layout.rAlongX ? "r,mu" : "mu,r";
+  out.strings["brdf.channels"] = "";
+  for (size_t c = 0; c < chans.size(); ++c) out.strings["brdf.channels"] += std::string(c ? "," : "") + "RGB"[c] + "=" + chans[c];
+  out.strings["brdf.layout.channels"] = stored;
+  out.strings["brdf.layout.flip"] = layout.flipX && layout.flipY ? "x,y" : layout.flipX ? "x" : layout.flipY ? "y" : "none";
+  return out;
+}
+
+}  // namespace brdfbake

@@ -1,0 +1,147 @@
+// Layout presets on the GL pipeline: each preset's file, read by a reader other than our writer
+// (tests/ktx2_reader.h, or OpenImageIO-independent EXR reading through our reader where the preset
+// writes EXR), sampled with that engine's own lookup expression, written here in GLSL from the
+// convention cited in host/formats/layout.cpp, must match the reference F0 A + B within the file's
+// brdf.error + brdf.interp-error, and agree with the generated code's Schlick lookup (which builds
+// the layout in). The flags without a preset (--axes r,mu --flip-y --channels B,A+B) through the
+// generated code; an unknown preset exits 64 with the list and writes nothing.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <random>
+
+#include "common/models.h"
+#include "exr/table_file.h"
+#include "gl_harness.h"
+#include "ktx2_reader.h"
+#include "reference/reference.h"
+#include "shader/shader_gen.h"
+
+namespace fs = std::filesystem;
+namespace {
+using namespace brdfbake;
+using glharness::gl;
+
+fs::path dir() {
+  static fs::path d = fs::path(testing::TempDir()) / ("brdfbake_glpre_" + std::to_string(getpid()));
+  return d;
+}
+
+int bake(const std::string& args) {
+  const std::string cmd = std::string("'") + BRDFBAKE_EXE + "' --table splitsum " + args + " > /dev/null 2>&1";
+  const int rc = std::system(cmd.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+struct File {
+  std::string path;
+  TableImage header;
+  glharness::Texels tex;
+};
+
+// The file as RGBA32F texels (float16 and float32 values are exact in float) and its header.
+File load(const fs::path& base) {
+  File f;
+  std::vector<float> px;
+  if (fs::exists(base.string() + ".ktx2")) {
+    f.path = base.string() + ".ktx2";
+    ktx2check::Texture t = ktx2check::read(f.path);
+    EXPECT_TRUE(t.problems.empty()) << f.path;
+    f.header = tableHeaderFromText(static_cast<int>(t.width), static_cast<int>(t.height), t.kv);
+    px.assign(static_cast<size_t>(t.width) * t.height * 4, 0.0f);
+    for (size_t i = 0; i < px.size() / 4; ++i)
+      for (int c = 0; c < t.components && c < 4; ++c) px[i * 4 + c] = static_cast<float>(t.texels[i * t.components + c]);
+  } else {
+    f.path = base.string() + ".exr";
+    f.header = readTableExr(f.path);
+    px.assign(static_cast<size_t>(f.header.width) * f.header.height * 4, 0.0f);
+    for (size_t i = 0; i < px.size() / 4; ++i)
+      for (size_t c = 0; c < f.header.planes.size(); ++c) px[i * 4 + c] = f.header.planes[c][i];
+  }
+  f.tex.width = f.header.width;
+  f.tex.height = f.header.height;
+  f.tex.assign(px);
+  return f;
+}
+
+struct Figures {
+  double engine = 0, generated = 0, agree = 0, predicted = 0;
+};
+
+// `expr`: the engine's GLSL, reading p.x = NoV, p.y = roughness, p.z = f0, writing vec3 spec.
+Figures run(const File& f, const std::string& expr) {
+  const std::string P = shaderPrefix(f.path);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<float> pts;
+  const int n = 2000, refPoints = 60;
+  for (int i = 0; i < n; ++i) pts.insert(pts.end(), {u(rng), u(rng), i % 2 ? 1.0f : 0.04f, 0});
+  std::vector<float> gpu = glharness::runOnGpu(
+      shaderForTable(f.path, f.header, ShaderLang::Glsl),
+      "  vec3 spec = vec3(0.0);\n" + (expr.empty() ? "" : "  " + expr + "\n") + "  res[2 * i] = vec4(spec, 0.0);\n" +
+          "  res[2 * i + 1] = vec4(" + P + "_Schlick(tab, vec3(p.z), p.x, p.y), 0.0);\n",
+      f.tex, pts, 2);
+  Figures fig;
+  fig.predicted = f.header.floats.at("brdf.error") + f.header.floats.at("brdf.interp-error");
+  if (gpu.empty()) return fig;
+  const int ndf = ndfId(f.header.strings.at("brdf.ndf")), gaf = gafId(f.header.strings.at("brdf.gaf"));
+  for (int i = 0; i < n; ++i) {
+    fig.agree = std::max(fig.agree, static_cast<double>(std::fabs(gpu[8 * i] - gpu[8 * i + 4])));
+    if (i >= refPoints) continue;
+    reference::Moments m = reference::albedo(ndf, gaf, pts[4 * i + 1], pts[4 * i]);
+    const double want = pts[4 * i + 2] * m.a + m.b, s = std::max(1.0, std::fabs(want));
+    fig.engine = std::max(fig.engine, std::fabs(gpu[8 * i] - want) / s);
+    fig.generated = std::max(fig.generated, std::fabs(gpu[8 * i + 4] - want) / s);
+  }
+  return fig;
+}
+
+TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
+  ASSERT_TRUE(gl().problem.empty()) << "no usable OpenGL ES through EGL: " << gl().problem;
+  // the engines' expressions (host/formats/layout.cpp cites the code each follows)
+  const std::vector<std::pair<std::string, std::string>> engines = {
+      // Filament light_indirect.fs: dfg = textureLod(light_iblDFG, vec2(NoV, roughness), 0.0).rg; mix(dfg.xxx, dfg.yyy, f0)
+      {"filament", "vec2 dfg = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = mix(dfg.xxx, dfg.yyy, vec3(p.z));"},
+      // Bevy environment_map.wgsl: f_ab = textureSample(lut, s, vec2(NdotV, perceptual_roughness)).rg; kS * f_ab.x + f_ab.y
+      {"bevy", "vec2 f_ab = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * f_ab.x + f_ab.y;"},
+      // HDRP PreIntegratedFGD.hlsl: preFGD = SAMPLE(float2(NdotV, perceptualRoughness)).xyz; lerp(preFGD.xxx, preFGD.yyy, f0)
+      {"unity-hdrp", "vec3 pre = textureLod(tab, vec2(p.x, p.y), 0.0).xyz; spec = mix(pre.xxx, pre.yyy, vec3(p.z));"}};
+  std::printf("%-12s %-6s %-9s %-11s %-11s %-10s %s\n", "preset", "size", "file", "engine", "generated", "predicted",
+              "engine vs generated");
+  for (const auto& [name, expr] : engines) {
+    ASSERT_EQ(bake("--layout " + name + " --size 32 -o '" + (dir() / name).string() + "'"), 0) << name;
+    File f = load(dir() / name / "splitsum_ggx_smith-correlated");
+    Figures fig = run(f, expr);
+    std::printf("%-12s %-6d %-9s %.2e    %.2e    %.2e   %.1e\n", name.c_str(), f.tex.width,
+                f.path.substr(f.path.rfind('.') + 1).c_str(), fig.engine, fig.generated, fig.predicted, fig.agree);
+    EXPECT_LE(fig.engine, fig.predicted) << name << ": the engine's lookup of our file is off the reference";
+    EXPECT_LE(fig.generated, fig.predicted) << name;
+    EXPECT_LT(fig.agree, 2e-5) << name << ": the generated code does not follow the layout";
+  }
+  // without a preset: transposed, flipped, (B, A+B); the engines' plain expression must then fail
+  ASSERT_EQ(bake("--axes r,mu --flip-y --channels B,A+B --size 32 --format exr -o '" + (dir() / "flags").string() + "'"), 0);
+  File f = load(dir() / "flags" / "splitsum_ggx_smith-correlated");
+  EXPECT_EQ(f.header.strings["brdf.axes"], "r,mu");
+  EXPECT_EQ(f.header.strings["brdf.layout.flip"], "y");
+  Figures fig = run(f, "vec2 ab = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * ab.x + ab.y;");
+  std::printf("%-12s %-6d %-9s %.2e    %.2e    %.2e   (an A,B reader of it: off by %.2f)\n", "flags", f.tex.width, "exr",
+              fig.engine, fig.generated, fig.predicted, fig.agree);
+  EXPECT_LE(fig.generated, fig.predicted);
+  EXPECT_GT(fig.engine, 0.1) << "a reader assuming mu,r and (A, B) must not match a transposed, flipped (B, A+B) file";
+}
+
+TEST(GlPipeline, UnknownLayoutPresetExits64WritingNothing) {
+  const fs::path out = dir() / "unknown";
+  EXPECT_EQ(bake("--layout godot-3 -o '" + out.string() + "'"), 64);
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(bake("--channels A+B,C -o '" + out.string() + "'"), 64);
+  EXPECT_EQ(bake("--axes x,y -o '" + out.string() + "'"), 64);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
