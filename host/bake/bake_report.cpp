@@ -1,0 +1,82 @@
+// The text a bake prints: its report (one line per file), and `info`'s warning when an energy
+// table exceeds 1 by more than its bound.
+#include <algorithm>
+#include <cstdio>
+
+#include "bake/bake.h"
+#include "common/format.h"
+
+namespace brdfbake {
+
+std::string formatReport(const std::vector<TableReport>& reports) {
+  // columns as wide as their longest entry
+  size_t wf = 4, wt = 5;
+  for (const auto& r : reports) {
+    wf = std::max(wf, r.path.size());
+    wt = std::max(wt, r.table.size());
+  }
+  std::string s;
+  char line[1024];
+  std::snprintf(line, sizeof line, "%-*s  %-*s  %9s  %9s  %7s\n", int(wf), "file", int(wt), "table", "size", "max error",
+                "seconds");
+  s += line;
+  for (const auto& r : reports) {
+    std::string size = std::to_string(r.width) + "x" + std::to_string(r.height) +
+                       (r.depth > 1 ? "x" + std::to_string(r.depth) : "");
+    std::snprintf(line, sizeof line, "%-*s  %-*s  %9s  %9.2e  %7.3f\n", int(wf), r.path.c_str(), int(wt), r.table.c_str(),
+                  size.c_str(), r.errorBound, r.seconds);
+    s += line;
+  }
+  return s;
+}
+
+std::string energyWarnings(const TableImage& t) {
+  auto str = [&](const char* k) {
+    auto it = t.strings.find(k);
+    return it == t.strings.end() ? std::string() : it->second;
+  };
+  std::string table = str("brdf.table");
+  // the energy quantity's channel: E = A + B (splitsum B), E (albedo R), E_avg (albedo-avg R)
+  std::string name, channel;
+  if (table == "splitsum") name = "A+B", channel = "B";
+  else if (table == "albedo") name = "E", channel = "R";
+  else if (table == "albedo-avg") name = "E_avg", channel = "R";
+  else return "";
+  for (size_t c = 0; c < t.channels.size(); ++c) {
+    if (t.channels[c] != channel) continue;
+    float mx = 0;
+    for (float v : t.planes[c]) mx = std::max(mx, v);
+    double tol = 0;
+    auto e = t.floats.find("brdf.error");
+    if (e != t.floats.end()) tol = e->second;
+    if (mx > 1 + tol) {
+      char b[64];
+      std::snprintf(b, sizeof b, "%.4g", mx);
+      if (str("brdf.material").rfind("merl:", 0) == 0)  // measured data: the file, not a model
+        return "warning: " + name + " exceeds 1 (max " + b + "): " + str("brdf.material") +
+               " reflects more than it receives (a measurement or calibration error in the data)\n";
+      if (!str("brdf.diffuse").empty() && table == "albedo") {
+        std::string d = str("brdf.diffuse");
+        std::string why = d == "burley" ? " (a known property of Burley's model: rough surfaces at grazing angles)"
+                          : d == "oren-nayar" ? " (a property of the qualitative model's A and B: E(0) = A + B/2 > 1 for small sigma)"
+                                              : " (an erratum of the source documents, kept on purpose)";
+        return "warning: " + name + " exceeds 1 (max " + b + "): the " + d + " diffuse model does not conserve energy" +
+               why + "; see docs/MODELS.md, \"Diffuse models\"\n";
+      }
+      if (str("brdf.ndf") == "charlie")
+        return "warning: " + name + " exceeds 1 (max " + b + ") at grazing views of smooth sheens: charlie with " +
+               str("brdf.gaf") +
+               (str("brdf.gaf") == "charlie-smith" ? " (a fitted Lambda, finite at grazing: G/(n.o) grows as mu -> 0)"
+                                                    : " (no masking: E(0, r) grows like 1/r)") +
+               " does not conserve energy there; clamp 1 - E in albedo scaling; see docs/MODELS.md, \"Sheen\"\n";
+      return "warning: " + name + " exceeds 1 (max " + b + "): a single-scattering albedo cannot; " + str("brdf.ndf") +
+             " with " + str("brdf.gaf") +
+             (str("brdf.gaf") == "none" ? " (G = 1, albedo ~ 1/mu at grazing)"
+                                        : " (a Lambda borrowed from Beckmann, not the NDF's own; " + str("brdf.gaf") + "-exact has the exact one)") +
+             " does not conserve energy; see docs/MODELS.md, \"Tables that exceed 1\"\n";
+    }
+  }
+  return "";
+}
+
+}  // namespace brdfbake
