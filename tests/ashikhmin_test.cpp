@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 #include <string>
 
+#include "cli_run.h"
 #include "bake/ashikhmin_textures.h"
 #include "common/brdf_host.h"
 #include "exr/table_file.h"
@@ -246,27 +247,10 @@ TEST(AshikhminRecombination, WholeBrdfIsDiffusePlusSpecularTimesCosine) {
 }
 
 // ---- the command line -----------------------------------------------------------------------
-struct CmdResult {
-  int code;
-  std::string out;
-};
-
-CmdResult run(const std::string& args) {
-  std::string cmd = "'" BRDFBAKE_EXE "' " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t k;
-  while ((k = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), k);
-  int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_as_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  return d;
-}
+using testing_cli::CmdResult;
+using testing_cli::bytes;
+using testing_cli::run;
+fs::path freshDir(const std::string& name) { return testing_cli::freshDir("as", name, false); }
 
 TEST(AshikhminCli, BakeWritesTheThreeTexturesWithTheirMetadata) {
   fs::path dir = freshDir("bake");

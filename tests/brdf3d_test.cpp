@@ -16,6 +16,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "cli_run.h"
 #include "bake/volume.h"
 #include "common/brdf3d_grid.h"
 #include "common/brdf_host.h"
@@ -32,32 +33,10 @@ using namespace brdfbake;
 using testing_device::runner;
 constexpr double kPi = 3.14159265358979323846;
 
-struct CmdResult {
-  int code;
-  std::string out;
-};
-CmdResult run(const std::string& args) {
-  std::string cmd = "'" BRDFBAKE_EXE "' " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_b3_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-std::string bytes(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
+using testing_cli::CmdResult;
+using testing_cli::bytes;
+using testing_cli::run;
+fs::path freshDir(const std::string& name) { return testing_cli::freshDir("b3", name); }
 
 Brdf3dSpec spec(int ndf, int gaf, Brdf3dParam param, bool sqrtIndex, Brdf3dGrid grid, int n, double r = 0.5) {
   Brdf3dSpec s;

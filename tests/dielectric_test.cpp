@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_run.h"
 #include "bake/dielectric_avg.h"
 #include "bake/dielectric_bake.h"
 #include "common/brdf_host.h"
@@ -200,25 +201,10 @@ TEST(Dielectric, AveragesMatchTightRuleWithHonestBounds) {
   }
 }
 
-struct CmdResult {
-  int code;
-  std::string out;
-};
-CmdResult run(const std::string& args) {
-  std::string cmd = "'" BRDFBAKE_EXE "' " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t k;
-  while ((k = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), k);
-  int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_diel_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  return d;
-}
+using testing_cli::CmdResult;
+using testing_cli::bytes;
+using testing_cli::run;
+fs::path freshDir(const std::string& name) { return testing_cli::freshDir("diel", name, false); }
 
 TEST(DielectricCli, BakesBothTablesWithMetadata) {
   fs::path d = freshDir("bake");

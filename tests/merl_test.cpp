@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_run.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "exr/table_file.h"
@@ -31,35 +32,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct CmdResult {
-  int code;
-  std::string out;
-};
-
-CmdResult run(const std::string& args) {
-  std::string cmd = "'" BRDFBAKE_EXE "' " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_merl_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-std::string bytes(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
+using testing_cli::CmdResult;
+using testing_cli::bytes;
+using testing_cli::run;
+fs::path freshDir(const std::string& name) { return testing_cli::freshDir("merl", name); }
 
 // ggx + smith-correlated, Schlick F0 (one value or three), perceptual roughness r.
 Brdf3dSpec material(double r, std::vector<double> f0 = {0.04}) {

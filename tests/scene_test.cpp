@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 
+#include "cli_run.h"
 #include "common/errors.h"
 #include "scene/scene.h"
 #include "scene/scene_plan.h"
@@ -23,26 +24,10 @@ namespace fs = std::filesystem;
 namespace {
 using namespace brdfbake;
 
-struct CmdResult {
-  int code;
-  std::string out;
-};
-CmdResult run(const std::string& args) {
-  std::string cmd = "'" BRDFBAKE_EXE "' " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_scene_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+using testing_cli::CmdResult;
+using testing_cli::bytes;
+using testing_cli::run;
+fs::path freshDir(const std::string& name) { return testing_cli::freshDir("scene", name); }
 void write(const fs::path& p, const std::string& text) {
   std::ofstream f(p, std::ios::binary);
   f << text;

@@ -14,6 +14,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "cli_run.h"
 #include "common/brdf_host.h"
 #include "common/models.h"
 #include "exr/table_file.h"
@@ -189,25 +190,10 @@ TEST(Sheen, KernelAlbedoAvgAndKp) {
 
 // ---- the command line ------------------------------------------------------------------------
 
-struct CmdResult {
-  int code;
-  std::string out;
-};
-CmdResult run(const std::string& args) {
-  std::string cmd = "'" BRDFBAKE_EXE "' " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t got;
-  while ((got = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), got);
-  int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_sheen_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  return d;
-}
+using testing_cli::CmdResult;
+using testing_cli::bytes;
+using testing_cli::run;
+fs::path freshDir(const std::string& name) { return testing_cli::freshDir("sheen", name, false); }
 
 // A sheen visibility with a non-sheen NDF, and charlie with a microfacet GAF: exit 64, one line that
 // says so, nothing written; the same for verify and energy.

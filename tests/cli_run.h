@@ -1,0 +1,51 @@
+// What the tests that run the brdfbake binary share: run it with arguments (stdout and stderr
+// together, the exit status), a scratch directory per test process, a file's bytes.
+// BRDFBAKE_EXE is the binary's path (tests/CMakeLists.txt defines it per test target).
+#pragma once
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace brdfbake::testing_cli {
+
+struct CmdResult {
+  int code;
+  std::string out;  // stdout and stderr
+};
+
+inline CmdResult run(const std::string& args) {
+  std::string cmd = "'" BRDFBAKE_EXE "' " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+  int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+// TempDir/brdfbake_<prefix>_<name>_<pid>, emptied; created unless `create` is false (tests that
+// check a failing run creates nothing). ctest runs each test in its own process, maybe in parallel.
+inline std::filesystem::path freshDir(const std::string& prefix, const std::string& name, bool create = true) {
+  std::filesystem::path d =
+      std::filesystem::path(testing::TempDir()) / ("brdfbake_" + prefix + "_" + name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(d);
+  if (create) std::filesystem::create_directories(d);
+  return d;
+}
+
+inline std::string bytes(const std::filesystem::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+}  // namespace brdfbake::testing_cli
