@@ -68,17 +68,7 @@ void writeDdsTemporary(const std::string& tmp, const std::string& path, const Sl
 
   TempFileWriter out(tmp, path);
   out.write(h);
-  const uint64_t sliceTexels = static_cast<uint64_t>(src.width) * src.height;
-  std::vector<std::vector<float>> planes;
-  std::string block;
-  for (int z0 = 0; z0 < src.depth; z0 += src.slicesPerBlock) {
-    const int zn = std::min(src.slicesPerBlock, src.depth - z0);
-    planes.clear();
-    src.fill(z0, zn, planes);
-    block.clear();
-    packTexels(path, planes, outChannels, p, sliceTexels * zn, sliceTexels * z0, src.width, src.height, block);
-    out.write(block);
-  }
+  writeSlices(out, src, path, outChannels, p);
   out.finish();
 }
 

@@ -87,6 +87,11 @@ class TempFileWriter {
   bool done_ = false;
 };
 
+// The texels of `src`, slab after slab (its slicesPerBlock slices at a time), packed as packTexels
+// does and appended to `out`: the level data of the formats that store slices one after another
+// (KTX2, DDS). Throws like packTexels and the writer.
+void writeSlices(TempFileWriter& out, const SliceSource& src, const std::string& path, int outChannels, Precision p);
+
 // Little-endian appends, for the binary headers.
 void putU8(std::string& s, uint32_t v);
 void putU16(std::string& s, uint32_t v);
