@@ -449,6 +449,22 @@ TEST(CliMaterials, DiffuseAlbedoTables) {
   EXPECT_NE(r.out.find("burley diffuse model"), std::string::npos) << r.out;
 }
 
+// Rough glass in the energy gate: E_R + E_T of the microfacet BSDF at the material's eta.
+TEST(CliMaterials, EnergyGateChecksRoughGlass) {
+  for (const char* eta : {"1.5", "0.6667"}) {
+    CmdResult r = run(std::string("energy --fresnel dielectric --eta ") + eta + " --transmission --size 9");
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("conserves: ggx+smith-correlated, rough glass (transmission)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("E_R         E_T"), std::string::npos) << r.out;
+  }
+  CmdResult r = run("energy --fresnel dielectric --transmission --gaf schlick-ggx");
+  EXPECT_EQ(r.code, 64) << r.out;
+  EXPECT_NE(r.out.find("--transmission: the rough dielectric takes --ndf ggx or beckmann"), std::string::npos) << r.out;
+  r = run("energy --fresnel schlick --transmission");
+  EXPECT_EQ(r.code, 64) << r.out;
+  EXPECT_NE(r.out.find("--transmission: rough glass takes --fresnel dielectric"), std::string::npos) << r.out;
+}
+
 TEST(CliMaterials, EnergyGateExitStatuses) {
   // conserving: the diffuse lobe gets what the specular left
   CmdResult r = run("energy --fresnel dielectric --diffuse lambert --coupling albedo-scaling --size 9");

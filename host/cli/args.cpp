@@ -296,6 +296,9 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         throw Error(kExitUsage, "--eta-range must be LO,HI with 0 < LO < HI <= 100 (the relative IOR eta_t/eta_i; "
                                 "below 1 leaves the denser medium), got '" + text + "'");
       req.etaRange = std::make_pair(v[0], v[1]);
+    } else if (opt == "--transmission" && cmd.kind == Command::Kind::Energy) {
+      once(opt, opt);
+      req.transmission = true;
     } else if (opt == "--coupling" && cmd.kind == Command::Kind::Energy) {
       once(opt, opt);
       req.coupling = value();
@@ -394,6 +397,8 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         throw Error(kExitUsage, std::string(o) + ": not an energy option (energy writes no tables)");
     if (req.sigma && req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
       throw Error(kExitUsage, "--sigma: only --diffuse oren-nayar and oren-nayar-as-printed take it");
+    if (req.transmission && (req.fresnel.model != FRESNEL_DIELECTRIC || req.diffuse >= 0))
+      throw Error(kExitUsage, "--transmission: rough glass takes --fresnel dielectric (its --eta) and no --diffuse");
   }
   if (cmd.kind == Command::Kind::Stress) {
     // stress runs its own fixed sweep of stiff cases: it takes only where to write and what device

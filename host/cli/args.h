@@ -35,6 +35,7 @@ struct BakeRequest {
   std::string preset;                // --preset gltf: glTF's reference-shading tables (plan/plan.cpp), or ""
   std::optional<double> sigma;       // energy: --sigma for oren-nayar (else swept)
   std::string coupling = "sum";      // energy: --coupling sum | albedo-scaling
+  bool transmission = false;         // energy: --transmission (rough glass: E_R + E_T, --fresnel dielectric)
   // --table dielectric, dielectric-avg: the eta axis's range (--eta-range LO,HI)
   std::optional<std::pair<double, double>> etaRange;
   std::vector<int> levels = {0, 1, 2, 3};                           // convergence: quadrature levels

@@ -58,7 +58,25 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
                      (orenNayar && req.sigma ? " sigma=" + fmtG(*req.sigma) : "") + ", coupling " +
                      req.coupling;
       std::vector<EnergyPoint> pts;
-      for (int c = 0; c < fc.channels(); ++c) {
+      if (req.transmission) {
+        // rough glass: reflected plus transmitted albedo at the material's eta, node grid of (mu, r)
+        if ((ndf != NDF_GGX && ndf != NDF_BECKMANN) || (gaf != GAF_SMITH && gaf != GAF_SMITH_CORRELATED))
+          throw Error(kExitUsage, "--transmission: the rough dielectric takes --ndf ggx or beckmann with --gaf smith or "
+                                  "smith-correlated, not " + ndfNames()[ndf] + "+" + gafNames()[gaf]);
+        res.secondLobe = "E_T";
+        res.material = ndfNames()[ndf] + "+" + gafNames()[gaf] + ", rough glass (transmission), " + fc.describe();
+        for (int c = 0; c < fc.channels(); ++c) {
+          double eta = fc.modelParams(c).first;
+          auto t = runner.dielectricSlab(ndf, gaf, n, n, {eta}, true, 2e-6f);
+          for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+              size_t k = static_cast<size_t>(j) * n + i;
+              double er = t[0][k], et = t[1][k];
+              pts.push_back({node(i, n, 0, 1), node(j, n, 0, 1), NAN, c, er, et, er + et, t[2][k] + kAllowance});
+            }
+        }
+      }
+      for (int c = 0; c < (req.transmission ? 0 : fc.channels()); ++c) {
         // the specular lobe's albedo with its Fresnel over (mu, r), node grid
         KernelTable spec;
         if (fc.isOne()) {
@@ -157,7 +175,8 @@ std::string formatEnergy(const std::vector<EnergyResult>& results) {
     for (double f : r.fresnelAvg) s += " " + fmtG(f);
     s += "\n";
     std::snprintf(line, sizeof line, "  %6s  %6s  %8s  %7s  %10s  %10s  %10s  %9s\n", "mu", "r",
-                  r.paramName.empty() ? "" : r.paramName.c_str(), "channel", "E_spec", "diffuse", "total", "bound");
+                  r.paramName.empty() ? "" : r.paramName.c_str(), "channel", r.secondLobe == "E_T" ? "E_R" : "E_spec",
+                  r.secondLobe.c_str(), "total", "bound");
     s += line;
     for (const EnergyPoint& p : r.worst) {
       char param[32] = "";

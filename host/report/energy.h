@@ -24,9 +24,12 @@ struct EnergyResult {
   std::vector<double> fresnelAvg;  // F_avg per channel
   std::string fresnelAvgHow;       // "closed form" or the quadrature
   std::string diffuseAlone;        // the diffuse lobe's own largest albedo, and where ("" without one)
+  std::string secondLobe = "diffuse";  // the column of EnergyPoint::diffuse: "E_T" for rough glass
 };
 
-// One result per NDF/GAF pair of the request (size = grid nodes per axis, default 33).
+// One result per NDF/GAF pair of the request (size = grid nodes per axis, default 33). With
+// --transmission (rough glass: --fresnel dielectric) the total is E_R + E_T of the microfacet BSDF
+// (Walter et al. 2007) at the material's eta.
 std::vector<EnergyResult> checkEnergy(const BakeRequest& req);
 // The verdict lines and the table of worst points.
 std::string formatEnergy(const std::vector<EnergyResult>& results);
