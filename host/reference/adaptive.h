@@ -7,7 +7,9 @@
 #pragma once
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace brdfbake::reference::detail {
 
@@ -38,5 +40,30 @@ auto adapt(F& f, double a, double b, double tol, unsigned depth, double rel) -> 
   double m = 0.5 * (a + b);
   return adapt(f, a, m, 0.5 * tol, depth - 1, rel) + adapt(f, m, b, 0.5 * tol, depth - 1, rel);
 }
+
+// Over [a, b], split first at the given interior points (outside ones are ignored), each piece by adapt.
+template <class F>
+auto adaptPieces(F f, double a, double b, std::vector<double> breaks, double tol, unsigned depth, double rel)
+    -> decltype(f(a)) {
+  breaks.push_back(a);
+  breaks.push_back(b);
+  std::sort(breaks.begin(), breaks.end());
+  decltype(f(a)) sum{};
+  for (size_t i = 0; i + 1 < breaks.size(); ++i) {
+    double lo = std::max(a, breaks[i]), hi = std::min(b, breaks[i + 1]);
+    if (hi > lo) sum = sum + adapt(f, lo, hi, tol, depth, rel);
+  }
+  return sum;
+}
+
+// Two quantities integrated together on the same nodes (E and a moment B): the vector value type.
+struct Pair {
+  double e = 0, b = 0;
+};
+inline Pair operator+(Pair x, Pair y) { return {x.e + y.e, x.b + y.b}; }
+inline Pair operator-(Pair x, Pair y) { return {x.e - y.e, x.b - y.b}; }
+inline Pair operator*(double s, Pair x) { return {s * x.e, s * x.b}; }
+inline Pair operator*(Pair x, double s) { return s * x; }
+inline double norm(Pair x) { return std::max(std::fabs(x.e), std::fabs(x.b)); }
 
 }  // namespace brdfbake::reference::detail

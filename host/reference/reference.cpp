@@ -22,14 +22,7 @@ constexpr double kTol = 1e-11;  // absolute, per integral
 constexpr unsigned kDepth = 18;
 
 // The two split-sum moments (E, B) integrated together: the same nodes serve both.
-struct Pair {
-  double e = 0, b = 0;
-};
-Pair operator+(Pair x, Pair y) { return {x.e + y.e, x.b + y.b}; }
-Pair operator-(Pair x, Pair y) { return {x.e - y.e, x.b - y.b}; }
-Pair operator*(double s, Pair x) { return {s * x.e, s * x.b}; }
-Pair operator*(Pair x, double s) { return s * x; }
-double norm(Pair x) { return std::max(std::fabs(x.e), std::fabs(x.b)); }
+using detail::Pair;
 
 using detail::adapt;
 
@@ -37,16 +30,7 @@ using detail::adapt;
 template <class F>
 auto integrate(F f, double a, double b, std::vector<double> breaks, unsigned depth = kDepth,
                double tol = kTol, double rel = 1e-10) -> decltype(f(a)) {
-  breaks.push_back(a);
-  breaks.push_back(b);
-  std::sort(breaks.begin(), breaks.end());
-  decltype(f(a)) sum{};
-  for (size_t i = 0; i + 1 < breaks.size(); ++i) {
-    double lo = std::max(a, breaks[i]), hi = std::min(b, breaks[i + 1]);
-    if (hi <= lo) continue;
-    sum = sum + adapt(f, lo, hi, tol, depth, rel);
-  }
-  return sum;
+  return detail::adaptPieces(f, a, b, std::move(breaks), tol, depth, rel);
 }
 
 // Breakpoints at multiples of the lobe width, where an adaptive rule could otherwise step over it.

@@ -12,28 +12,13 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct Pair {
-  double e = 0, b = 0;
-};
-Pair operator+(Pair x, Pair y) { return {x.e + y.e, x.b + y.b}; }
-Pair operator-(Pair x, Pair y) { return {x.e - y.e, x.b - y.b}; }
-Pair operator*(double s, Pair x) { return {s * x.e, s * x.b}; }
-Pair operator*(Pair x, double s) { return s * x; }
-double norm(Pair x) { return std::max(std::fabs(x.e), std::fabs(x.b)); }
+using detail::Pair;
 using detail::adapt;
 using detail::norm;
 
 template <class F>
 auto integrate(F f, double a, double b, std::vector<double> br, double tol, double rel) -> decltype(f(a)) {
-  br.push_back(a);
-  br.push_back(b);
-  std::sort(br.begin(), br.end());
-  decltype(f(a)) sum{};
-  for (size_t k = 0; k + 1 < br.size(); ++k) {
-    double lo = std::max(a, br[k]), hi = std::min(b, br[k + 1]);
-    if (hi > lo) sum = sum + adapt(f, lo, hi, tol, 24, rel);
-  }
-  return sum;
+  return detail::adaptPieces(f, a, b, std::move(br), tol, 24, rel);
 }
 
 // Breaks geometric towards 0 and at the lobe's scale sqrt(alpha) and the view's mu.
