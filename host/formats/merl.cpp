@@ -13,6 +13,7 @@
 
 #include "common/errors.h"
 #include "exr/table_file.h"  // temporaryPathFor
+#include "formats/storage.h"  // TempFileWriter
 
 namespace brdfbake {
 
@@ -92,31 +93,9 @@ void writeMerlTemporary(const std::string& tmp, const std::string& path, const s
           putF64(plane + merlIndex(x, y, z) * 8, double(v) / kMerlScale[c]);
         }
   }
-  int fd;
-  do {
-    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0666);
-  } while (fd < 0 && errno == EINTR);
-  if (fd < 0) {
-    const int err = errno;
-    throw Error(kExitCantCreat, "cannot create " + path + ": " + errnoText(err) + " (temporary file " + tmp + ")");
-  }
-  auto fail = [&](const std::string& what, int err) {
-    if (fd >= 0) ::close(fd);
-    ::unlink(tmp.c_str());
-    throw Error(kExitIoErr, "cannot write " + path + ": " + what + errnoText(err));
-  };
-  size_t done = 0;
-  while (done < buf.size()) {
-    ssize_t r = ::write(fd, buf.data() + done, buf.size() - done);
-    if (r < 0 && errno == EINTR) continue;
-    if (r < 0) fail("", errno);
-    if (r == 0) fail("", EIO);
-    done += static_cast<size_t>(r);
-  }
-  if (::fsync(fd) != 0) fail("fsync: ", errno);
-  int r = ::close(fd);
-  fd = -1;
-  if (r != 0) fail("close: ", errno);
+  TempFileWriter out(tmp, path);  // created, written, synced; removed on any failure
+  out.write(buf.data(), buf.size());
+  out.finish();
 }
 
 void writeMerl(const std::string& path, const std::vector<std::vector<float>>& planes) {
