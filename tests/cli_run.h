@@ -20,8 +20,9 @@ struct CmdResult {
   std::string out;  // stdout and stderr
 };
 
-inline CmdResult run(const std::string& args) {
-  std::string cmd = "'" BRDFBAKE_EXE "' " + args + " 2>&1";
+// `cwd`: the directory to run in ("" = the test's); `env`: assignments put before the command.
+inline CmdResult run(const std::string& args, const std::string& cwd = "", const std::string& env = "") {
+  std::string cmd = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + env + " '" BRDFBAKE_EXE "' " + args + " 2>&1";
   FILE* p = popen(cmd.c_str(), "r");
   std::string out;
   std::array<char, 4096> buf;

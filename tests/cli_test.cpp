@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli_run.h"
 #include "common/brdf_host.h"
 #include "exr/table_file.h"
 #include "reference/reference.h"
@@ -24,29 +25,10 @@
 namespace fs = std::filesystem;
 namespace {
 
-struct CmdResult {
-  int code;
-  std::string out;  // stdout and stderr
-};
-
-CmdResult run(const std::string& args, const std::string& cwd = "", const std::string& env = "") {
-  std::string cmd = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + env + " '" BRDFBAKE_EXE "' " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-// ctest runs each test in its own process, possibly in parallel: directories are per process
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_cli_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+using brdfbake::testing_cli::bytes;
+using brdfbake::testing_cli::CmdResult;
+using brdfbake::testing_cli::run;
+fs::path freshDir(const std::string& name) { return brdfbake::testing_cli::freshDir("cli", name); }
 
 size_t countFiles(const fs::path& d) {
   if (!fs::exists(d)) return 0;
@@ -55,12 +37,6 @@ size_t countFiles(const fs::path& d) {
   return n;
 }
 
-std::string bytes(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
 
 // One default bake shared by the tests that read its files.
 const fs::path& defaultBake() {
