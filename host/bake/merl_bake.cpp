@@ -50,7 +50,23 @@ std::vector<TableReport> runMerlPlan(const Plan& plan) {
   images.reserve(plan.jobs.size());  // the files point into it
   for (const TableJob& job : plan.jobs) {
     auto t0 = std::chrono::steady_clock::now();
-    images.push_back(merlTable(data, merlMaterialName(plan.merl), job.kind, job.width, job.nodeGrid, job.half));
+    // albedo and splitsum of a measured material hold the same values (its directional albedo,
+    // labelled for each use): computed once when both are asked for
+    const TableImage* same = nullptr;
+    for (size_t k = 0; k < images.size(); ++k) {
+      const TableJob& o = plan.jobs[k];
+      bool pair = (o.kind == TableKind::Albedo && job.kind == TableKind::SplitSum) ||
+                  (o.kind == TableKind::SplitSum && job.kind == TableKind::Albedo);
+      if (pair && o.width == job.width && o.nodeGrid == job.nodeGrid && o.half == job.half) same = &images[k];
+    }
+    if (same) {
+      TableImage img = *same;
+      img.strings["brdf.table"] = tableName(job.kind);
+      img.strings["brdf.channels"] = merlChannels(job.kind);
+      images.push_back(img);
+    } else {
+      images.push_back(merlTable(data, merlMaterialName(plan.merl), job.kind, job.width, job.nodeGrid, job.half));
+    }
     TableReport r;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.table = tableName(job.kind);

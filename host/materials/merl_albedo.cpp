@@ -239,6 +239,13 @@ AlbedoEstimate hSpaceAlbedoAvg(const RusinkiewiczFn& f, int threads, const std::
   return r;
 }
 
+std::string merlChannels(TableKind kind) {
+  return kind == TableKind::Albedo
+             ? "R,G,B=E (the measured material's directional albedo per colour channel)"
+             : "R,G,B=E (the split sum's second factor of a measured material: its directional albedo, Fresnel and "
+               "colour included; shade with prefiltered radiance times E(mu))";
+}
+
 TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind, int width, bool nodeGrid, bool half) {
   if (kind != TableKind::Albedo && kind != TableKind::SplitSum && kind != TableKind::AlbedoAvg)
     throw Error(kExitUsage, "--brdf merl: --table " + tableName(kind) + " has no measured form");
@@ -291,11 +298,7 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
     img.strings["brdf.axes"] = "mu";
     img.strings["brdf.grid"] = nodeGrid ? "node" : "texel-center";
     img.v2f["brdf.mu.range"] = {0.0f, 1.0f};
-    img.strings["brdf.channels"] =
-        kind == TableKind::Albedo
-            ? "R,G,B=E (the measured material's directional albedo per colour channel)"
-            : "R,G,B=E (the split sum's second factor of a measured material: its directional albedo, Fresnel and "
-              "colour included; shade with prefiltered radiance times E(mu))";
+    img.strings["brdf.channels"] = merlChannels(kind);
     img.strings["brdf.method"] = rule;
   }
   img.floats["brdf.merl.unsupported"] = static_cast<float>(lost);

@@ -50,6 +50,8 @@ AlbedoEstimate hSpaceAlbedoAvg(const RusinkiewiczFn& f, int threads = 0, const s
 //   albedo-avg: 1 x 1, E_avg per channel.
 // `name` is the material's name (brdf.material = "merl:<name>"); progress lines go to stderr when
 // a table takes more than two seconds.
+// brdf.channels of a measured material's albedo or splitsum table (the same values, two uses).
+std::string merlChannels(TableKind kind);
 TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind, int width, bool nodeGrid, bool half);
 
 }  // namespace brdfbake
