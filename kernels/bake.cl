@@ -1,7 +1,9 @@
 /* bake.cl: one texel per work-item, no barriers. The host prepends a prelude that fixes the model
  * pair, e.g. "#define BRDF_NDF 0\n#define BRDF_GAF 10\n", so every model switch folds at compile
- * time, then compat.h, the pointwise headers twice (one value, then lanes) and the integrators:
- * kernelSource() in host/cl/runner.cpp. */
+ * time, or (one program for many pairs, host/cl/runner.h) "#define BRDF_NDF sel_ndf" and the same
+ * for the GAF, so that the pair is the kernels' last two arguments, then compat.h, the pointwise
+ * headers twice (one value, then lanes) and the integrators: kernelSource() in host/cl/runner.cpp.
+ * The pair arguments are there in both forms (a specialised program ignores them). */
 #ifndef BRDF_NDF
 #error "BRDF_NDF must be defined by the prelude"
 #endif
@@ -22,57 +24,52 @@ static inline float grid_coord(int i, int n, float lo, float hi, int node_grid) 
 /* The albedo's two moments over (mu, r), split by the weight w(o.h) that `moments` names (ndf.h
  * BrdfParams): A = int H (1 - w), B = int H w, E = A + B (the F = 1 albedo), and a bound on the
  * texel's largest error relative to max(1, |value|). HEMI_SPLIT gives the split-sum pair;
- * HEMI_FRESNEL with a Fresnel model and its parameters (fr_x, fr_y) gives that model's albedo in B. */
+ * HEMI_FRESNEL with a Fresnel model and its parameters (fr_x, fr_y) gives that model's albedo in B.
+ * mu_list = 1: the quadrature nodes of the average albedo instead (host/cl/runner_avg.cpp): work-item
+ * (i, j) takes (mu, r, refinement target) from nodes[j * nx + i], and out_e, out_err hold the value
+ * the average needs (E for the split, else the weighted moment B, a Fresnel model's albedo) and its
+ * absolute bound. One kernel
+ * for both, with one call of the estimator, keeps the code a program compiles to one copy of it
+ * (PoCL inlines every call site). */
 kernel void bake_hemisphere(global float* out_a, global float* out_b, global float* out_e,
                             global float* out_err, int nx, int ny, float mu_lo, float mu_hi,
                             float r_lo, float r_hi, int node_grid, int moments, int fresnel,
-                            float fr_x, float fr_y, int level) {
+                            float fr_x, float fr_y, int level, int mu_list, global const float4* nodes, int sel_ndf,
+                            int sel_gaf) {
   int i = get_global_id(0), j = get_global_id(1);
   if (i >= nx || j >= ny) return;
-  float mu = grid_coord(i, nx, mu_lo, mu_hi, node_grid);
-  float r = grid_coord(j, ny, r_lo, r_hi, node_grid);
-  HemiResult h;
-  if (level < 0) {
-    h = hemisphere_texel_weighted(BRDF_NDF, BRDF_GAF, mu, r, BAKE_TARGET, moments, fresnel, fr_x, fr_y);
-  } else { /* one budget everywhere (brdfbake convergence): level 0 default, 1 refined, more finer */
-    BrdfParams p = hemisphere_texel_params(BRDF_NDF, BRDF_GAF, mu, r);
-    p.moments = moments;
-    p.fresnel = fresnel;
-    p.fr_x = fr_x;
-    p.fr_y = fr_y;
-    h = hemisphere_moments(BRDF_NDF, BRDF_GAF, p, mu, level);
-  }
   int t = j * nx + i;
-  out_a[t] = (float)h.a;
-  out_b[t] = (float)h.b;
-  out_e[t] = (float)(h.a + h.b);
-  out_err[t] = hemi_rel_error(h);
-}
-
-/* Average albedo E_avg(r), first step: E (or a Fresnel model's albedo, see bake_hemisphere) at the rule's nodes, E(AVG_MU[i], r_j) and its bound
- * (absolute), one node per work-item, out[j * AVG_NODES + i]. The host forms each r's weighted
- * sums and bound (kernels/integrate/hemisphere.h, AVG_MU). A 2D range (AVG_NODES x n) fills a
- * device as the albedo table does, where one work-item per r ran its ~100 nodes in series. */
-kernel void bake_albedo_nodes(global float* out_e, global float* out_err, int n, float r_lo, float r_hi,
-                              int node_grid, int moments, int fresnel, float fr_x, float fr_y) {
-  int i = get_global_id(0), j = get_global_id(1);
-  if (i >= AVG_NODES || j >= n) return;
-  float r = grid_coord(j, n, r_lo, r_hi, node_grid);
-  BrdfParams p = brdf_params(BRDF_NDF, BRDF_GAF, r);
+  float mu = grid_coord(i, nx, mu_lo, mu_hi, node_grid), r = grid_coord(j, ny, r_lo, r_hi, node_grid);
+  float target = BAKE_TARGET;
+  if (mu_list) {
+    float4 q = nodes[t];
+    mu = q.x;
+    r = q.y;
+    target = q.z;
+  }
+  BrdfParams p = hemisphere_texel_params(BRDF_NDF, BRDF_GAF, mu, r);
   p.moments = moments;
   p.fresnel = fresnel;
   p.fr_x = fr_x;
   p.fr_y = fr_y;
-  HemiResult h = hemisphere_moments_to(BRDF_NDF, BRDF_GAF, p, AVG_MU[i], avg_node_target(i));
-  int t = j * AVG_NODES + i;
-  /* E (F = 1) for the split, else the weighted moment B (a Fresnel model's albedo) */
-  int split = moments == HEMI_SPLIT;
-  out_e[t] = (float)(split ? h.a + h.b : h.b);
-  out_err[t] = (float)(split ? h.err_a + h.err_b : h.err_b);
+  /* level < 0: the bake's adaptive budget; else that one everywhere (brdfbake convergence: 0
+   * default, 1 refined, more finer) */
+  HemiResult h = hemisphere_moments_at(BRDF_NDF, BRDF_GAF, p, mu, level, target);
+  out_a[t] = (float)h.a;
+  out_b[t] = (float)h.b;
+  if (mu_list) {
+    int split = moments == HEMI_SPLIT;
+    out_e[t] = (float)(split ? h.a + h.b : h.b);
+    out_err[t] = (float)(split ? h.err_a + h.err_b : h.err_b);
+  } else {
+    out_e[t] = (float)(h.a + h.b);
+    out_err[t] = hemi_rel_error(h);
+  }
 }
 
 /* k_p of the NDF's raw shape over r. */
-kernel void bake_kp(global float* out, global float* out_err, int n, float r_lo, float r_hi, int node_grid) {
+kernel void bake_kp(global float* out, global float* out_err, int n, float r_lo, float r_hi, int node_grid,
+                    int sel_ndf, int sel_gaf) {
   int j = get_global_id(0);
   if (j >= n) return;
   float r = grid_coord(j, n, r_lo, r_hi, node_grid);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
 
 #include "cl/device.h"
@@ -200,5 +201,54 @@ TEST_P(PairTest, NodeTableNearTheCornerReadsWhatTheInsideHolds) {
   double ref = reference::albedo(ndf, gaf, r, mu).e();
   std::printf("%s: lookup %.4f, reference %.4f\n", pairName(ndf, gaf).c_str(), lookup, ref);
   EXPECT_NEAR(lookup, ref, 0.03) << pairName(ndf, gaf);  // measured: at most 0.023 (kelemen)
+}
+}  // namespace
+
+namespace {
+// A plan of many pairs runs their integrators in one shared program (the pair a kernel argument,
+// host/cl/runner.h Sharing); it must give every table the same bits as the pair's own program, so
+// that what a file holds does not depend on what else was baked with it. 15 pairs cover every
+// NDF and every GAF; each table kind the two programs hold (split sum and a Fresnel albedo on
+// texel centres and node edges, albedo-avg, k_p).
+TEST(SharedProgram, SameBitsAsEachPairsOwnProgram) {
+  KernelRunner own(selectDevice("").device), shared(selectDevice("").device);
+  own.setSharing(KernelRunner::Sharing::PerPair);
+  shared.setSharing(KernelRunner::Sharing::Shared);
+  const std::vector<std::pair<std::string, std::string>> pairs = {
+      {"ggx", "none"}, {"ggx", "cook-torrance"}, {"ggx", "smith-correlated"}, {"ggx", "smith"},
+      {"beckmann", "implicit"}, {"beckmann", "neumann"}, {"beckmann", "schlick-beckmann"},
+      {"blinn-phong", "kelemen"}, {"blinn-phong", "smith-exact"}, {"blinn-phong", "schlick-ggx-direct"},
+      {"gaussian", "ashikhmin-premoze"}, {"gaussian", "smith-correlated-exact"}, {"gaussian", "schlick-ggx"},
+      {"charlie", "charlie-smith"}, {"charlie", "neubelt"}};
+  HemiWeight glass;
+  glass.moments = HEMI_FRESNEL;
+  glass.fresnel = FRESNEL_DIELECTRIC;
+  glass.x = 1.5f;
+  auto same = [](const KernelTable& a, const KernelTable& b, const std::string& what) {
+    ASSERT_EQ(a.planes.size(), b.planes.size()) << what;
+    for (size_t c = 0; c < a.planes.size(); ++c)
+      EXPECT_EQ(0, std::memcmp(a.planes[c].data(), b.planes[c].data(), a.planes[c].size() * sizeof(float)))
+          << what << ", plane " << c;
+    EXPECT_EQ(0, std::memcmp(a.err.data(), b.err.data(), a.err.size() * sizeof(float))) << what << ", bounds";
+  };
+  std::vector<KernelRunner::TableNeed> needs;
+  for (const auto& [n, g] : pairs)
+    for (TableKind k : {TableKind::SplitSum, TableKind::AlbedoAvg, TableKind::Kp}) needs.push_back({k, ndfId(n), gafId(g)});
+  own.prepareAll(needs);
+  shared.prepareAll(needs);
+  for (const auto& [n, g] : pairs) {
+    int ndf = ndfId(n), gaf = gafId(g);
+    std::string name = n + "+" + g;
+    same(own.hemisphere(ndf, gaf, 6, 5, false), shared.hemisphere(ndf, gaf, 6, 5, false), name + " split sum");
+    if (gaf != GAF_NONE)
+      same(own.hemisphere(ndf, gaf, 5, 5, true), shared.hemisphere(ndf, gaf, 5, 5, true), name + " node grid");
+    if (!isSheenNdf(ndf))
+      same(own.hemisphere(ndf, gaf, 4, 4, false, glass), shared.hemisphere(ndf, gaf, 4, 4, false, glass),
+           name + " dielectric albedo");
+    same(own.albedoAvg(ndf, gaf, 4, false), shared.albedoAvg(ndf, gaf, 4, false), name + " albedo-avg");
+    same(own.kp(ndf, 4, false), shared.kp(ndf, 4, false), name + " k_p");
+  }
+  EXPECT_FALSE(own.sharedProgramBuilt());
+  EXPECT_TRUE(shared.sharedProgramBuilt());
 }
 }  // namespace

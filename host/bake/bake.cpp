@@ -75,8 +75,9 @@ std::string modelsOf(const TableJob& job) {
 std::string methodText(TableKind kind) {
   switch (kind) {
     case TableKind::AlbedoAvg:
-      return "E_avg = 2 int E(mu) mu dmu by one Gauss-Kronrod 15/31 rule on [0,1] (" + std::to_string(AVG_NODES) +
-             " mu nodes, sums in double on the host; error |K31-G15| + node bounds), E at each node by " +
+      return "E_avg = 2 int E(mu) mu dmu by Gauss-Kronrod 15/31 panels on [0,1] (" + std::to_string(AVG_NODES) +
+             " mu nodes each, starting from one panel, the worst halved until the bound is under " +
+             fmtG(KernelRunner::kAvgGoal) + "; sums in double on the host; error |K31-G15| + node bounds), E at each node by " +
              hemisphereMethod();
     case TableKind::Kp:
       return "k_p = int e^-v p/D_grid dv by GK15 panels on v in [0," + fmtG(brdf64::HEMI_BREAKS[HEMI_NBREAKS - 1]) +

@@ -62,8 +62,13 @@ std::string dielectricKernelSource(int ndf, int gaf) {
 std::string kernelSource(int ndf, int gaf) {
   if (gaf >= kDielectricProgram) return dielectricKernelSource(ndf, gaf - kDielectricProgram);
   if (gaf >= kVolumeProgram) return volumeKernelSource(ndf, gaf - kVolumeProgram);
-  std::string src = "/* brdfbake prelude: " + ndfNames()[ndf] + " + " + gafNames()[gaf] + " */\n";
-  src += "#define BRDF_NDF " + std::to_string(ndf) + "\n#define BRDF_GAF " + std::to_string(gaf) + "\n";
+  std::string src;
+  if (ndf == kSharedProgram) {  // the pair is the kernels' sel_ndf, sel_gaf arguments (kernels/bake.cl)
+    src = "/* brdfbake prelude: every pair */\n#define BRDF_NDF sel_ndf\n#define BRDF_GAF sel_gaf\n";
+  } else {
+    src = "/* brdfbake prelude: " + ndfNames()[ndf] + " + " + gafNames()[gaf] + " */\n";
+    src += "#define BRDF_NDF " + std::to_string(ndf) + "\n#define BRDF_GAF " + std::to_string(gaf) + "\n";
+  }
   const char* pointwise[] = {"kernels/brdf/smith_tables.h", "kernels/brdf/ndf.h", "kernels/brdf/gaf.h", "kernels/brdf/fresnel.h",
                              "kernels/brdf/diffuse.h", "kernels/integrate/integrand.h"};
   append(src, "kernels/brdf/compat.h");
@@ -104,6 +109,9 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
     k.setArg(10, 0);
     setWeightArgs(k, 11, {});
     k.setArg(15, -1);
+    k.setArg(16, 0);
+    k.setArg(17, dummy);
+    setPairArgs(k, 18, 0, 0);
   } else if (name == kDielectric || name == kDielectricNodes) {
     // (out, etas, nx, ny, zn, grid, target) or (out, mus, rs, etas, n, target)
     int bufs = name == kDielectric ? 2 : 4, ints = name == kDielectric ? 4 : 1;
@@ -131,7 +139,7 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
     k.setArg(3, 0.0f);
     k.setArg(4, 0.0f);
     k.setArg(5, 0);
-    if (name == kAlbedoNodes) setWeightArgs(k, 6, {});
+    setPairArgs(k, 6, 0, 0);
   }
 }
 }  // namespace
@@ -150,8 +158,9 @@ void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* don
   }
   if (rc != CL_SUCCESS) {
     if (log.empty()) log = prog.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
-    throw Error(kExitSoftware, "OpenCL kernel build failed for " + ndfNames()[w.ndf] + " + " +
-                                   gafNames()[w.gaf % kVolumeProgram] +
+    throw Error(kExitSoftware, "OpenCL kernel build failed for " +
+                                   (w.ndf == kSharedProgram ? std::string("every pair (the shared program)")
+                                                            : ndfNames()[w.ndf] + " + " + gafNames()[w.gaf % kVolumeProgram]) +
                                    (w.gaf >= kDielectricProgram ? " (rough dielectric)"
                                     : w.gaf >= kVolumeProgram   ? " (3D tables)"
                                                                 : "") +
@@ -177,9 +186,12 @@ void KernelRunner::compileKernel(Compiled& c, const std::string& name) {
   c.kernels.push_back(name);
 }
 
-// The pair's program: the copy that has `kernel` compiled, else the first built.
+// The pair's program: the copy that has `kernel` compiled, else the first built; for the
+// integrators (gaf < kVolumeProgram) the shared program when the pair has none of its own.
 KernelRunner::Compiled* KernelRunner::find(int ndf, int gaf, const char* kernel) {
   auto it = programs_.find({ndf, gaf});
+  if ((it == programs_.end() || it->second.empty()) && gaf < kVolumeProgram)
+    it = programs_.find({kSharedProgram, kSharedProgram});
   if (it == programs_.end() || it->second.empty()) return nullptr;
   if (kernel)
     for (auto& c : it->second)
@@ -188,23 +200,44 @@ KernelRunner::Compiled* KernelRunner::find(int ndf, int gaf, const char* kernel)
 }
 
 // k_p runs in any built program of its NDF (the lowest GAF, for a fixed choice), else in the
-// NDF + none program.
+// shared program, else in the NDF + none program.
 KernelRunner::Compiled* KernelRunner::kpProgram(int ndf) {
   auto it = programs_.lower_bound({ndf, 0});
   if (it != programs_.end() && it->first.first == ndf && it->first.second < kVolumeProgram)
     return find(ndf, it->first.second, kKp);
+  if (programs_.count({kSharedProgram, kSharedProgram})) return find(kSharedProgram, kSharedProgram, kKp);
   return nullptr;
 }
 
+// The integrators' programs built for single pairs so far.
+int KernelRunner::pairPrograms() const {
+  int n = 0;
+  for (const auto& p : programs_) n += p.first.first >= 0 && p.first.second < kVolumeProgram;
+  return n;
+}
+
+// Where a pair's integrator kernels go when it has no program yet: its own, or the shared one
+// (Sharing::Auto: once a runner would hold kSharedFrom pair programs).
+bool KernelRunner::shareFor(int newPairs) const {
+  if (sharing_ == Sharing::Shared) return true;
+  if (sharing_ == Sharing::PerPair) return false;
+  return programs_.count({kSharedProgram, kSharedProgram}) || pairPrograms() + newPairs >= kSharedFrom;
+}
+
 KernelRunner::Compiled& KernelRunner::compiled(int ndf, int gaf, const char* kernel) {
-  if (!find(ndf, gaf)) buildHere(ndf, gaf);
+  if (!find(ndf, gaf)) {
+    if (gaf < kVolumeProgram && shareFor(1)) buildHere(kSharedProgram, kSharedProgram);
+    else buildHere(ndf, gaf);
+  }
   Compiled& c = *find(ndf, gaf, kernel);
   compileKernel(c, kernel);
   return c;
 }
 
 void KernelRunner::prepare(int ndf, int gaf) {
-  if (!planned_ && !find(ndf, gaf)) buildHere(ndf, gaf);
+  if (planned_ || find(ndf, gaf)) return;
+  if (shareFor(1)) buildHere(kSharedProgram, kSharedProgram);
+  else buildHere(ndf, gaf);
 }
 
 // The pair's program, built in the main context on this thread.
@@ -221,7 +254,7 @@ void KernelRunner::prepare(TableKind kind, int ndf, int gaf) {
       compiled(ndf, gaf, kHemisphere);
       break;
     case TableKind::AlbedoAvg:
-      compiled(ndf, gaf, kAlbedoNodes);
+      compiled(ndf, gaf, kHemisphere);
       break;
     case TableKind::Kp:
       if (Compiled* c = kpProgram(ndf)) compileKernel(*c, kKp);
@@ -243,7 +276,8 @@ void KernelRunner::prepare(TableKind kind, int ndf, int gaf) {
 }
 
 // The programs and kernels the tables need, in the tables' order; k_p goes to a program of its
-// NDF that is built anyway, else to the NDF + none one.
+// NDF that is built anyway, else to the NDF + none one. When the tables name kSharedFrom pairs or
+// more (counting those built already), one shared program serves all of their integrators.
 std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<TableNeed>& tables) const {
   std::vector<Work> work;
   auto add = [&](int ndf, int gaf, const char* kernel) {
@@ -254,9 +288,33 @@ std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<TableNeed>&
     }
     if (std::find(it->kernels.begin(), it->kernels.end(), kernel) == it->kernels.end()) it->kernels.push_back(kernel);
   };
+  auto integrator = [](TableKind k) {
+    return k == TableKind::SplitSum || k == TableKind::Albedo || k == TableKind::AlbedoAvg || k == TableKind::Kp;
+  };
+  // the pairs (k_p: its NDF) without a program of their own yet
+  std::vector<std::pair<int, int>> fresh;
   for (const TableNeed& t : tables) {
-    if (t.kind == TableKind::SplitSum || t.kind == TableKind::Albedo) add(t.ndf, t.gaf, kHemisphere);
-    if (t.kind == TableKind::AlbedoAvg) add(t.ndf, t.gaf, kAlbedoNodes);
+    if (!integrator(t.kind)) continue;
+    std::pair<int, int> key = t.kind == TableKind::Kp ? std::make_pair(t.ndf, -1) : std::make_pair(t.ndf, t.gaf);
+    bool built = t.kind == TableKind::Kp ? std::any_of(programs_.begin(), programs_.end(),
+                                                       [&](const auto& p) { return p.first.first == t.ndf && p.first.second < kVolumeProgram; })
+                                         : programs_.count(key) > 0;
+    if (!built && std::find(fresh.begin(), fresh.end(), key) == fresh.end()) fresh.push_back(key);
+  }
+  // a k_p whose NDF has a pair in the plan needs no program of its own
+  fresh.erase(std::remove_if(fresh.begin(), fresh.end(),
+                             [&](const std::pair<int, int>& k) {
+                               return k.second < 0 && std::any_of(fresh.begin(), fresh.end(), [&](const auto& o) {
+                                        return o.first == k.first && o.second >= 0;
+                                      });
+                             }),
+              fresh.end());
+  bool shared = !fresh.empty() && shareFor(static_cast<int>(fresh.size()));
+  for (const TableNeed& t : tables) {
+    if (t.kind == TableKind::SplitSum || t.kind == TableKind::Albedo || t.kind == TableKind::AlbedoAvg) {
+      if (shared && !programs_.count({t.ndf, t.gaf})) add(kSharedProgram, kSharedProgram, kHemisphere);
+      else add(t.ndf, t.gaf, kHemisphere);
+    }
     if (t.kind == TableKind::Brdf3d) add(t.ndf, t.gaf + kVolumeProgram, kBrdf3d);
     if (t.kind == TableKind::Dielectric || t.kind == TableKind::DielectricAvg)
       add(t.ndf, t.gaf + kDielectricProgram, t.kind == TableKind::Dielectric ? kDielectric : kDielectricNodes);
@@ -270,7 +328,9 @@ std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<TableNeed>&
         gaf = p.first.second;
     for (const Work& w : work)
       if (w.ndf == t.ndf && w.gaf < kVolumeProgram && (gaf < 0 || w.gaf < gaf)) gaf = w.gaf;
-    add(t.ndf, gaf < 0 ? GAF_NONE : gaf, kKp);
+    if (gaf >= 0) add(t.ndf, gaf, kKp);
+    else if (shared || programs_.count({kSharedProgram, kSharedProgram})) add(kSharedProgram, kSharedProgram, kKp);
+    else add(t.ndf, GAF_NONE, kKp);
   }
   return work;
 }
@@ -296,8 +356,9 @@ void KernelRunner::prepareAll(const std::vector<TableNeed>& tables) {
     while (static_cast<int>(todo.size()) < threads) {
       auto most = std::max_element(todo.begin(), todo.end(),
                                    [](const Work& a, const Work& b) { return a.kernels.size() < b.kernels.size(); });
-      if (most->kernels.size() < 2) break;
-      Work rest{most->ndf, most->gaf, {}};  // the first kernel stays (the split-sum's), k_p is cheap
+      // k_p alone is not worth a second build (it compiles in a tenth of the split-sum's time)
+      if (most->kernels.size() < 2 || (most->kernels.size() == 2 && most->kernels[1] == kKp)) break;
+      Work rest{most->ndf, most->gaf, {}};  // the first kernel stays
       rest.kernels.assign(most->kernels.begin() + 1, most->kernels.end());
       most->kernels.resize(1);
       todo.push_back(rest);

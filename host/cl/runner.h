@@ -72,11 +72,17 @@ class KernelRunner {
   // adaptive choice.
   KernelTable hemisphereRange(int ndf, int gaf, int nx, int ny, float muLo, float muHi, float rLo, float rHi,
                               bool nodeGrid, const HemiWeight& w = {}, int level = -1);
-  // E_avg over r: E at the 31 nodes of kernels/integrate/hemisphere.h's rule for every r on the
-  // device (one work-item per node), the weighted sums and bounds here in double.
-  // With a Fresnel weight, the average of that model's albedo.
+  // E_avg over r: GK31 panels over mu, halved where the bound is largest until it meets the
+  // target (host/cl/runner_avg.cpp); E at every node on the device (one work-item per node), the
+  // weighted sums and bounds here in double. With a Fresnel weight, the average of that model's
+  // albedo.
   KernelTable albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w = {}, float rLo = 0.0f,
                         float rHi = 1.0f);
+  static constexpr double kAvgGoal = 8e-6;  // an entry's bound (relative to max(1, E_avg)), as a texel's
+  // The hemisphere kernel at arbitrary points: nodes[k] = (mu, r, refinement target, unused);
+  // planes {the value (E, or with a Fresnel weight that model's albedo), its absolute bound}.
+  std::vector<std::vector<float>> hemisphereNodes(int ndf, int gaf, const std::vector<cl_float4>& nodes,
+                                                  const HemiWeight& w = {});
   // k_p over r.
   KernelTable kp(int ndf, int n, bool nodeGrid, float rLo = 0.0f, float rHi = 1.0f);
 
@@ -96,6 +102,17 @@ class KernelRunner {
 
   // Whether the device has cl_khr_fp64 (the 3D and dielectric programs then compute in double).
   bool hasDouble() const { return fp64_; }
+
+  // Which program the integrator kernels (split sum, albedo, albedo-avg, k_p) of a pair run in:
+  // Auto (default) builds each pair its own specialised program until a runner would hold
+  // kSharedFrom of them, then one program for every pair, the pair an argument (builds in about
+  // the time of two pair programs and runs ~8% slower: for a plan of many pairs it saves most of
+  // the build time). The values are the same bits either way (tests/kernel_test.cpp).
+  enum class Sharing { Auto, PerPair, Shared };
+  static constexpr int kSharedFrom = 3;
+  void setSharing(Sharing s) { sharing_ = s; }
+  // Whether the shared program has been built (the tables of several pairs have run in it).
+  bool sharedProgramBuilt() const { return programs_.count({-1, -1}) > 0; }
 
   // Threads prepareAll uses (default: hardware_concurrency; 1 = in order on this thread).
   void setBuildThreads(int n) { buildThreads_ = n; }
@@ -120,6 +137,8 @@ class KernelRunner {
   void buildHere(int ndf, int gaf);
   void compileKernel(Compiled& c, const std::string& kernel);
   std::vector<Work> plan(const std::vector<TableNeed>& tables) const;
+  int pairPrograms() const;
+  bool shareFor(int newPairs) const;
   void run(Compiled& c, cl::Kernel& k, size_t gx, size_t gy);
 
   cl::Device device_;
@@ -127,6 +146,7 @@ class KernelRunner {
   bool fp64_ = false;  // the device has cl_khr_fp64: the 3D tables' programs compute in double
   bool planned_ = false;  // prepareAll() has run
   int buildThreads_ = 0;
+  Sharing sharing_ = Sharing::Auto;
   std::vector<std::unique_ptr<Slot>> slots_;  // [0]: the main context
   // per pair: its program, in one context, or in several with different kernels compiled
   std::map<std::pair<int, int>, std::vector<std::unique_ptr<Compiled>>> programs_;

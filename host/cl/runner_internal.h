@@ -11,9 +11,11 @@
 namespace brdfbake::runner_detail {
 
 inline const char* const kHemisphere = "bake_hemisphere";
-inline const char* const kAlbedoNodes = "bake_albedo_nodes";
 inline const char* const kKp = "bake_kp";
 inline const char* const kBrdf3d = "bake_brdf3d";
+// The one program for every pair (kernels/bake.cl: the pair is an argument), under
+// {kSharedProgram, kSharedProgram}.
+constexpr int kSharedProgram = -1;
 // 3D tables have programs of their own (volumeKernelSource): kept under the pair's GAF + this.
 constexpr int kVolumeProgram = 1000;
 // The rough dielectric's program (dielectricKernelSource): under the pair's GAF + this.
@@ -33,6 +35,13 @@ inline void setWeightArgs(cl::Kernel& k, int first, const HemiWeight& w) {
   k.setArg(first + 1, w.fresnel);
   k.setArg(first + 2, w.x);
   k.setArg(first + 3, w.y);
+}
+
+// The pair arguments (sel_ndf, sel_gaf) at `first`, `first + 1`: read by the shared program,
+// ignored by a pair's own.
+inline void setPairArgs(cl::Kernel& k, int first, int ndf, int gaf) {
+  k.setArg(first, ndf);
+  k.setArg(first + 1, gaf);
 }
 
 }  // namespace brdfbake::runner_detail

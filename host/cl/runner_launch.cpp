@@ -69,6 +69,9 @@ KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, floa
   setGridArgs(k, 4, nx, ny, muLo, muHi, rLo, rHi, nodeGrid);
   setWeightArgs(k, 11, w);
   k.setArg(15, level);
+  k.setArg(16, 0);  // the grid's mu, not a list
+  k.setArg(17, a);  // (unread)
+  setPairArgs(k, 18, ndf, gaf);
   run(c, k, nx, ny);
   KernelTable t;
   t.width = nx;
@@ -91,39 +94,30 @@ void setRArgs(cl::Kernel& k, const cl::Buffer& values, const cl::Buffer& bounds,
 }
 }  // namespace
 
-KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w, float rLo,
-                                    float rHi) {
-  Compiled& c = compiled(ndf, gaf, kAlbedoNodes);
+// Quadrature nodes (mu, r, target) for the hemisphere kernel: planes {value, absolute bound}
+// (bake.cl, mu_list = 1). The average albedo's rule that chooses them is host/cl/runner_avg.cpp.
+std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, const std::vector<cl_float4>& nodes,
+                                                              const HemiWeight& w) {
+  Compiled& c = compiled(ndf, gaf, kHemisphere);
   Slot& s = *slots_[c.slot];
-  const int m = AVG_NODES;
-  size_t count = static_cast<size_t>(m) * n;
-  cl::Buffer e = outBuffer(s.context, count), err = outBuffer(s.context, count);
-  cl::Kernel k(c.program, kAlbedoNodes);
-  setRArgs(k, e, err, n, nodeGrid, rLo, rHi);
-  setWeightArgs(k, 6, w);
-  run(c, k, m, n);
-  std::vector<float> ev = readBack(s.queue, e, count), errv = readBack(s.queue, err, count);
-  // The rule (kernels/integrate/albedo_avg.h) in double: weights from the double tables, mu as
-  // the device evaluated it (the float node).
-  KernelTable t;
-  t.width = n;
-  t.height = 1;
-  t.planes = {std::vector<float>(n)};
-  t.err.resize(n);
-  for (int j = 0; j < n; ++j) {
-    double sum = 0, diff = 0, inner = 0;
-    for (int i = 0; i < m; ++i) {
-      double mu = static_cast<float>(brdf64::AVG_MU[i]);
-      size_t x = static_cast<size_t>(j) * m + i;
-      double f = 2 * mu * ev[x];
-      sum += brdf64::AVG_WK[i] * f;
-      diff += brdf64::AVG_WD[i] * f;
-      inner += brdf64::AVG_WK[i] * 2 * mu * errv[x];
-    }
-    t.planes[0][j] = static_cast<float>(sum);
-    t.err[j] = static_cast<float>((std::fabs(diff) + inner) / std::max(1.0, std::fabs(sum)));
-  }
-  return t;
+  size_t count = nodes.size();
+  cl::Buffer a = outBuffer(s.context, count), b = outBuffer(s.context, count), e = outBuffer(s.context, count),
+             err = outBuffer(s.context, count);
+  cl::Buffer in(s.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, count * sizeof(cl_float4),
+                const_cast<cl_float4*>(nodes.data()));
+  cl::Kernel k(c.program, kHemisphere);
+  k.setArg(0, a);
+  k.setArg(1, b);
+  k.setArg(2, e);
+  k.setArg(3, err);
+  setGridArgs(k, 4, static_cast<int>(count), 1, 0.0f, 1.0f, 0.0f, 1.0f, false);
+  setWeightArgs(k, 11, w);
+  k.setArg(15, -1);
+  k.setArg(16, 1);  // (mu, r, target) from the list
+  k.setArg(17, in);
+  setPairArgs(k, 18, ndf, gaf);
+  run(c, k, count, 1);
+  return {readBack(s.queue, e, count), readBack(s.queue, err, count)};
 }
 
 KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid, float rLo, float rHi) {
@@ -134,6 +128,7 @@ KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid, float rLo, float rHi
   cl::Buffer v = outBuffer(s.context, n), err = outBuffer(s.context, n);
   cl::Kernel k(c.program, kKp);
   setRArgs(k, v, err, n, nodeGrid, rLo, rHi);
+  setPairArgs(k, 6, ndf, GAF_NONE);
   run(c, k, n, 0);
   KernelTable t;
   t.width = n;

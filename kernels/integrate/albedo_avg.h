@@ -1,21 +1,15 @@
 /* albedo_avg.h: the average albedo's rule (the estimator of E it averages is hemisphere.h). */
-/* Average albedo E_avg = 2 int_0^1 E(mu) mu dmu (Kulla and Conty 2017), by one Gauss-Kronrod 15/31
- * rule on [0, 1]: E at the 31 Kronrod nodes AVG_MU, the value sum AVG_WK 2 mu E, the bound
- * |sum AVG_WD 2 mu E| (Kronrod minus Gauss weights, the 15 Gauss nodes are the odd ones) plus
- * sum AVG_WK 2 mu err_E. The nodes do not depend on alpha: the weight 2 mu makes the horizon layer
- * mu ~ alpha, where E changes fastest, contribute O(alpha^2), so one rule over [0, 1] resolves it
- * where it matters (measured on the device against the reference, every pair, size 32 and the node
- * grid: error <= 5.7e-7, whole bound <= 6.4e-6, mostly |K31 - G15|, largest for the schlick GAFs;
- * brdfbake-bench --albedo-avg). Graded GK15 panels from alpha/4 (the rule before) took 30 to 120
- * nodes per r, in series in one work-item, for a bound up to 4.3e-5.
- * The device evaluates E(AVG_MU[i], r) one node per work-item (kernels/bake.cl bake_albedo_nodes,
- * refined where the node's bound exceeds avg_node_target); the host forms the sums in double
- * (KernelRunner::albedoAvg in host/cl/runner.cpp). */
+/* Average albedo E_avg = 2 int_0^1 E(mu) mu dmu (Kulla and Conty 2017): the Gauss-Kronrod 15/31
+ * rule on [0, 1] its panels use, nodes AVG_MU, Kronrod weights AVG_WK and Kronrod minus Gauss
+ * weights AVG_WD (the 15 Gauss nodes are the odd ones), so that a panel's value is sum AVG_WK 2 mu E
+ * and its estimate |sum AVG_WD 2 mu E|. The rule itself (panels, halving, bounds) runs on the host,
+ * host/cl/runner_avg.cpp, which hands the device its nodes (kernels/bake.cl, mu_list). */
 #define AVG_NODES 31
 /* The inner bounds' share of E_avg's bound, split evenly over the nodes by weight: node k is
- * refined when its bound exceeds AVG_TARGET / (31 * 2 mu_k * wk_k), so that the inner term
- * sum wk 2 mu err_E stays near AVG_TARGET. The grazing nodes (mu = 0.001, 0.006), where E costs
- * most, weigh least, and are refined least. */
+ * refined when its bound exceeds AVG_TARGET / (31 * 2 mu_k * wk_k) (but never below the albedo's
+ * own target, host/cl/runner_avg.cpp), so that the inner term sum wk 2 mu err_E stays near
+ * AVG_TARGET. The grazing nodes (mu = 0.001, 0.006), where E costs most, weigh least, and are
+ * refined least. */
 #define AVG_TARGET RC(8e-6)
 BRDF_CONST real AVG_MU[AVG_NODES] = {
     RC(0.000998850653301469857413579923864), RC(0.00600374098975728575521714070669),

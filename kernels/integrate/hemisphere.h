@@ -299,15 +299,27 @@ BRDF_FN real hemi_rel_error(HemiResult h) {
   return fmax(ee, fmax(ea, eb)) + HEMI_ERR_FLOOR;
 }
 
-/* The default budget, and the refined one where its bound exceeds `target`. */
-BRDF_FN HemiResult hemisphere_moments_to(int ndf, int gaf, BrdfParams p, real mu, real target) {
-  HemiResult h = hemisphere_moments(ndf, gaf, p, mu, 0);
-  real e = hemi_rel_error(h);
-  if (e > target) {
-    HemiResult r = hemisphere_moments(ndf, gaf, p, mu, 1);
-    if (hemi_rel_error(r) < e) h = r;
+/* The default budget, and the refined one where its bound exceeds `target` (the refined result
+ * is kept if its bound is smaller); level >= 0 instead: that budget alone. Written as a loop
+ * around a single call so that a kernel compiles one copy of the estimator, not one per budget. */
+BRDF_FN HemiResult hemisphere_moments_at(int ndf, int gaf, BrdfParams p, real mu, int level, real target) {
+  HemiResult h;
+  real e = RC(0.0);
+  int first = 1;
+  for (int l = level < 0 ? 0 : level;; l = 1) {
+    HemiResult c = hemisphere_moments(ndf, gaf, p, mu, l);
+    real ec = hemi_rel_error(c);
+    if (first || ec < e) {
+      h = c;
+      e = ec;
+    }
+    if (level >= 0 || !first || e <= target) break;
+    first = 0;
   }
   return h;
+}
+BRDF_FN HemiResult hemisphere_moments_to(int ndf, int gaf, BrdfParams p, real mu, real target) {
+  return hemisphere_moments_at(ndf, gaf, p, mu, -1, target);
 }
 
 /* The value a table holds at (mu, r), its edges included.
