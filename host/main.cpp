@@ -15,6 +15,7 @@
 #include "cli/args.h"
 #include "common/errors.h"
 #include "exr/table_file.h"
+#include "formats/readers/table_reader.h"
 #include "plan/plan.h"
 #include "report/convergence.h"
 #include "report/energy.h"
@@ -36,10 +37,12 @@ int main(int argc, char** argv) {
       case Command::Kind::Devices:
         std::cout << describeDevices();
         return kExitOk;
-      case Command::Kind::Info:
-        std::cout << describeTableExr(cmd.file);
-        std::cout << energyWarnings(readTableExr(cmd.file));
+      case Command::Kind::Info: {
+        const TableFile file = readTableFile(cmd.file);  // any format the baker writes
+        std::cout << describeTableFile(file);
+        std::cout << energyWarnings(file.table);
         return kExitOk;
+      }
       case Command::Kind::ScenePlan:
         return runScenePlan(cmd.scene);
       case Command::Kind::SceneBake:

@@ -1,10 +1,12 @@
 // Layout presets on the GL pipeline: each preset's file, read by a reader other than our writer
-// (tests/ktx2_reader.h, or OpenImageIO-independent EXR reading through our reader where the preset
-// writes EXR), sampled with that engine's own lookup expression, written here in GLSL from the
+// (tests/ktx2_reader.h, tests/dds_reader.h, OpenImageIO for PNG; our EXR reader where the preset
+// writes EXR) and uploaded as the engine does (unreal: unorm16 RG; the glTF Sample Viewer: 8-bit
+// RGBA from its PNG), sampled with that engine's own lookup expression, written here in GLSL from the
 // convention cited in host/formats/layout.cpp, must match the reference F0 A + B within the file's
 // brdf.error + brdf.interp-error, and agree with the generated code's Schlick lookup (which builds
 // the layout in). The flags without a preset (--axes r,mu --flip-y --channels B,A+B) through the
 // generated code; an unknown preset exits 64 with the list and writes nothing.
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,9 +15,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <random>
 
 #include "common/models.h"
+#include "dds_reader.h"
 #include "exr/table_file.h"
 #include "gl_harness.h"
 #include "ktx2_reader.h"
@@ -44,20 +48,60 @@ struct File {
   glharness::Texels tex;
 };
 
-// The file as RGBA32F texels (float16 and float32 values are exact in float) and its header.
-File load(const fs::path& base) {
+// The file, read by a reader other than our writer, as the engine uploads it, and its header:
+// KTX2 (tests/ktx2_reader.h) and EXR as RGBA32F (float16 and float32 values are exact in float);
+// DDS (tests/dds_reader.h, unorm16) as RGBA16 codes, its header the KTX2 twin's key/value data
+// (DDS has none); PNG (OpenImageIO) as RGBA8, the 8 bits of each 16-bit sample a browser's decoder
+// hands WebGL's texImage2D(RGBA, UNSIGNED_BYTE), its header the text chunks.
+File load(const std::string& path) {
   File f;
+  f.path = path;
+  const std::string ext = path.substr(path.rfind('.'));
   std::vector<float> px;
-  if (fs::exists(base.string() + ".ktx2")) {
-    f.path = base.string() + ".ktx2";
+  if (ext == ".ktx2") {
     ktx2check::Texture t = ktx2check::read(f.path);
     EXPECT_TRUE(t.problems.empty()) << f.path;
     f.header = tableHeaderFromText(static_cast<int>(t.width), static_cast<int>(t.height), t.kv);
     px.assign(static_cast<size_t>(t.width) * t.height * 4, 0.0f);
     for (size_t i = 0; i < px.size() / 4; ++i)
       for (int c = 0; c < t.components && c < 4; ++c) px[i * 4 + c] = static_cast<float>(t.texels[i * t.components + c]);
+  } else if (ext == ".dds") {
+    ddscheck::Texture t = ddscheck::read(f.path);
+    EXPECT_TRUE(t.problems.empty()) << f.path;
+    EXPECT_TRUE(!t.isFloat && t.bits == 16) << "the unreal preset stores unorm16, as PF_G16R16";
+    const std::string twin = path.substr(0, path.size() - 4) + ".ktx2";
+    f.header = tableHeaderFromText(static_cast<int>(t.width), static_cast<int>(t.height), ktx2check::read(twin).kv);
+    std::vector<uint16_t> codes(static_cast<size_t>(t.width) * t.height * 4, 0);
+    for (size_t i = 0; i < codes.size() / 4; ++i)
+      for (int c = 0; c < t.components && c < 4; ++c)
+        codes[i * 4 + c] = static_cast<uint16_t>(std::lround(t.texels[i * t.components + c] * 65535.0));
+    f.tex.internalFormat = glharness::kRgba16Ext;
+    f.tex.type = GL_UNSIGNED_SHORT;
+    f.tex.width = f.header.width;
+    f.tex.height = f.header.height;
+    f.tex.assign(codes);
+    return f;
+  } else if (ext == ".png") {
+    auto in = OIIO::ImageInput::open(path);
+    EXPECT_TRUE(in) << OIIO::geterror();
+    if (!in) return f;
+    const OIIO::ImageSpec& spec = in->spec();
+    std::map<std::string, std::string> kv;
+    for (const auto& a : spec.extra_attribs) kv[a.name().string()] = a.get_string();
+    f.header = tableHeaderFromText(spec.width, spec.height, kv);
+    const size_t n = static_cast<size_t>(spec.width) * spec.height;
+    std::vector<uint16_t> samples(n * 3);
+    EXPECT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT16, samples.data()));
+    std::vector<uint8_t> bytes(n * 4, 255);
+    for (size_t i = 0; i < n; ++i)
+      for (int c = 0; c < 3; ++c) bytes[i * 4 + c] = static_cast<uint8_t>(std::lround(samples[i * 3 + c] / 257.0));
+    f.tex.internalFormat = GL_RGBA8;
+    f.tex.type = GL_UNSIGNED_BYTE;
+    f.tex.width = spec.width;
+    f.tex.height = spec.height;
+    f.tex.assign(bytes);
+    return f;
   } else {
-    f.path = base.string() + ".exr";
     f.header = readTableExr(f.path);
     px.assign(static_cast<size_t>(f.header.width) * f.header.height * 4, 0.0f);
     for (size_t i = 0; i < px.size() / 4; ++i)
@@ -87,7 +131,8 @@ Figures run(const File& f, const std::string& expr) {
           "  res[2 * i + 1] = vec4(" + P + "_Schlick(tab, vec3(p.z), p.x, p.y), 0.0);\n",
       f.tex, pts, 2);
   Figures fig;
-  fig.predicted = f.header.floats.at("brdf.error") + f.header.floats.at("brdf.interp-error");
+  fig.predicted = f.header.floats.at("brdf.error") + f.header.floats.at("brdf.interp-error") +
+                  (f.tex.type == GL_UNSIGNED_BYTE ? 2.0 / 255 : 0.0);  // 8 bits: rounding, and llvmpipe's 8-bit filter
   if (gpu.empty()) return fig;
   const int ndf = ndfId(f.header.strings.at("brdf.ndf")), gaf = gafId(f.header.strings.at("brdf.gaf"));
   for (int i = 0; i < n; ++i) {
@@ -110,14 +155,26 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
       // Bevy environment_map.wgsl: f_ab = textureSample(lut, s, vec2(NdotV, perceptual_roughness)).rg; kS * f_ab.x + f_ab.y
       {"bevy", "vec2 f_ab = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * f_ab.x + f_ab.y;"},
       // HDRP PreIntegratedFGD.hlsl: preFGD = SAMPLE(float2(NdotV, perceptualRoughness)).xyz; lerp(preFGD.xxx, preFGD.yyy, f0)
-      {"unity-hdrp", "vec3 pre = textureLod(tab, vec2(p.x, p.y), 0.0).xyz; spec = mix(pre.xxx, pre.yyy, vec3(p.z));"}};
-  std::printf("%-12s %-6s %-9s %-11s %-11s %-10s %s\n", "preset", "size", "file", "engine", "generated", "predicted",
+      {"unity-hdrp", "vec3 pre = textureLod(tab, vec2(p.x, p.y), 0.0).xyz; spec = mix(pre.xxx, pre.yyy, vec3(p.z));"},
+      // Unreal BRDF.ush EnvBRDF: AB = Texture2DSampleLevel(PreIntegratedGF, s, float2(NoV, Roughness), 0).rg;
+      // SpecularColor * AB.x + saturate(50.0 * SpecularColor.g) * AB.y
+      {"unreal", "vec2 AB = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * AB.x + clamp(50.0 * p.z, 0.0, 1.0) * AB.y;"},
+      // glTF Sample Viewer ibl.glsl: brdf = texture(u_GGXLUT, clamp(vec2(NdotV, perceptualRoughness), 0, 1)).rg;
+      // specularColor * brdf.x + brdf.y (textureLod at 0: a compute shader has no implicit level; the LUT has one)
+      {"gltf-sample-viewer",
+       "vec2 brdf = textureLod(tab, clamp(vec2(p.x, p.y), vec2(0.0), vec2(1.0)), 0.0).rg; spec = vec3(p.z) * brdf.x + brdf.y;"}};
+  std::printf("%-19s %-6s %-9s %-11s %-11s %-10s %s\n", "preset", "size", "file", "engine", "generated", "predicted",
               "engine vs generated");
   for (const auto& [name, expr] : engines) {
-    ASSERT_EQ(bake("--layout " + name + " --size 32 -o '" + (dir() / name).string() + "'"), 0) << name;
-    File f = load(dir() / name / "splitsum_ggx_smith-correlated");
+    // the preset's own format; the DDS (no metadata) with its KTX2 twin beside it for the header
+    const std::string ext = name == "unreal" ? ".dds" : name == "gltf-sample-viewer" ? ".png" : name == "unity-hdrp" ? ".exr" : ".ktx2";
+    ASSERT_EQ(bake("--layout " + name + " --size 32" + (name == "unreal" ? " --format dds,ktx2" : "") + " -o '" +
+                   (dir() / name).string() + "'"),
+              0)
+        << name;
+    File f = load((dir() / name / "splitsum_ggx_smith-correlated").string() + ext);
     Figures fig = run(f, expr);
-    std::printf("%-12s %-6d %-9s %.2e    %.2e    %.2e   %.1e\n", name.c_str(), f.tex.width,
+    std::printf("%-19s %-6d %-9s %.2e    %.2e    %.2e   %.1e\n", name.c_str(), f.tex.width,
                 f.path.substr(f.path.rfind('.') + 1).c_str(), fig.engine, fig.generated, fig.predicted, fig.agree);
     EXPECT_LE(fig.engine, fig.predicted) << name << ": the engine's lookup of our file is off the reference";
     EXPECT_LE(fig.generated, fig.predicted) << name;
@@ -125,11 +182,11 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
   }
   // without a preset: transposed, flipped, (B, A+B); the engines' plain expression must then fail
   ASSERT_EQ(bake("--axes r,mu --flip-y --channels B,A+B --size 32 --format exr -o '" + (dir() / "flags").string() + "'"), 0);
-  File f = load(dir() / "flags" / "splitsum_ggx_smith-correlated");
+  File f = load((dir() / "flags" / "splitsum_ggx_smith-correlated.exr").string());
   EXPECT_EQ(f.header.strings["brdf.axes"], "r,mu");
   EXPECT_EQ(f.header.strings["brdf.layout.flip"], "y");
   Figures fig = run(f, "vec2 ab = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * ab.x + ab.y;");
-  std::printf("%-12s %-6d %-9s %.2e    %.2e    %.2e   (an A,B reader of it: off by %.2f)\n", "flags", f.tex.width, "exr",
+  std::printf("%-19s %-6d %-9s %.2e    %.2e    %.2e   (an A,B reader of it: off by %.2f)\n", "flags", f.tex.width, "exr",
               fig.engine, fig.generated, fig.predicted, fig.agree);
   EXPECT_LE(fig.generated, fig.predicted);
   EXPECT_GT(fig.engine, 0.1) << "a reader assuming mu,r and (A, B) must not match a transposed, flipped (B, A+B) file";
@@ -141,6 +198,10 @@ TEST(GlPipeline, UnknownLayoutPresetExits64WritingNothing) {
   EXPECT_FALSE(fs::exists(out));
   EXPECT_EQ(bake("--channels A+B,C -o '" + out.string() + "'"), 64);
   EXPECT_EQ(bake("--axes x,y -o '" + out.string() + "'"), 64);
+  EXPECT_FALSE(fs::exists(out));
+  // two channels cannot be a PNG (RGB or RGBA): 64, not an internal error
+  EXPECT_EQ(bake("--channels A,B --format png16 -o '" + out.string() + "'"), 64);
+  EXPECT_EQ(bake("--layout unreal --format png16 -o '" + out.string() + "'"), 64);
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -101,6 +101,10 @@ std::vector<PlannedFile> tableOutputs(const TableJob& job, const TableImage& bak
 
   std::vector<PlannedFile> files;
   const int nchan = static_cast<int>(img.channels.size());
+  if (nchan < 3 && std::find(job.formats.begin(), job.formats.end(), FileFormat::Png16) != job.formats.end())
+    throw Error(kExitUsage, stem + ".png: --format png16 stores RGB or RGBA, and this " + table + " table has " +
+                                std::to_string(nchan) + " channels (--channels); give three (e.g. --channels A,B,A+B) or "
+                                "another format (ktx2, dds, exr, header); nothing was written");
   SliceSource src;
   src.width = img.width;
   src.height = img.height;

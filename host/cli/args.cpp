@@ -160,7 +160,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     return cmd;
   }
   if (first == "info") {
-    if (args.size() != 2) throw Error(kExitUsage, "info: expected exactly one FILE.exr argument");
+    if (args.size() != 2) throw Error(kExitUsage, "info: expected exactly one table file (.exr, .ktx2, .dds, .png, .h, .mjs)");
     cmd.kind = Command::Kind::Info;
     cmd.file = args[1];
     return cmd;

@@ -56,27 +56,6 @@ const char* compressionName(Imf::Compression c) {
   }
 }
 
-// Keeps one attribute per line: control characters and backslashes are escaped.
-std::string escapeText(const std::string& s) {
-  std::string out;
-  for (unsigned char ch : s) {
-    if (ch == '\\') {
-      out += "\\\\";
-    } else if (ch == '\n') {
-      out += "\\n";
-    } else if (ch == '\t') {
-      out += "\\t";
-    } else if (ch < 0x20 || ch == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", ch);
-      out += buf;
-    } else {
-      out += static_cast<char>(ch);
-    }
-  }
-  return out;
-}
-
 std::string attributeValue(const Imf::Attribute& a) {
   if (auto s = as<Imf::StringAttribute>(a)) return escapeText(s->value());
   if (auto f = as<Imf::FloatAttribute>(a)) return fmtG9(f->value());

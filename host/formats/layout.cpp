@@ -26,6 +26,20 @@ const std::vector<LayoutPreset>& layoutPresets() {
        "s_linear_clamp_sampler, float2(NdotV, perceptualRoughness), 0); specularFGD = lerp(preFGD.xxx, "
        "preFGD.yyy, fresnel0): R = B, G = A + B (the linear-NdotV form; later HDRP samples sqrt(NdotV), which "
        "the baker's linear mu axis does not hold)"},
+      {"unreal", {false, false, false, {"A", "B"}}, FileFormat::Dds, Precision::Unorm16, 128,
+       "Epic Games' Unreal Engine (its repository is access-restricted; read in the public mirror "
+       "chenyong2github/UnrealEngine) Engine/Shaders/Private/BRDF.ush: EnvBRDF: AB = Texture2DSampleLevel("
+       "PreIntegratedGF, PreIntegratedGFSampler, float2(NoV, Roughness), 0).rg; SpecularColor * AB.x + "
+       "saturate(50.0 * SpecularColor.g) * AB.y; Engine/Source/Runtime/Renderer/Private/SystemTextures.cpp "
+       "(PreintegratedGF): x is NoV = (x + 0.5) / width, y is Roughness = (y + 0.5) / height, PF_G16R16 with "
+       "Dest[0] = A, Dest[1] = B as unorm16: R = A, G = B, row 0 = roughness 0"},
+      {"gltf-sample-viewer", {false, false, false, {}}, FileFormat::Png16, Precision::Unorm16, 128,
+       "KhronosGroup/glTF-Sample-Viewer source/Renderer/shaders/ibl.glsl: brdf = texture(u_GGXLUT, "
+       "clamp(vec2(NdotV, perceptualRoughness), 0.0, 1.0)).rg; specularColor * brdf.x + brdf.y: R = A, G = B "
+       "(the baker's B = A + B rides along in the PNG's third channel); source/Renderer/webgl.js setTexture: "
+       "UNPACK_FLIP_Y_WEBGL false, texImage2D(RGBA, UNSIGNED_BYTE) of the PNG (linear: gltfTextureInfo's "
+       "default in source/gltf/texture.js): the PNG's first row is texel row 0, roughness 0; the browser "
+       "hands the viewer 8 bits of each 16-bit sample"},
   };
   return presets;
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "formats/readers/table_reader.h"  // tableHeaderFromText, for callers that read files themselves
 #include "formats/table_image.h"
 
 namespace brdfbake {
@@ -22,13 +23,8 @@ std::string shaderPrefix(const std::string& path);
 // Throws Error(kExitDataErr) naming the file when the header lacks what the code needs.
 std::string shaderForTable(const std::string& path, const TableImage& header, ShaderLang lang);
 
-// A header from text metadata (KTX2 key/value data, PNG text chunks; formats/storage.h
-// attributesAsText): every attribute as a string, those that are all number also as floats,
-// "brdf.<axis>.range" = "lo,hi" as a V2f. A png16 file's brdf.mapping.scale/offset go into the
-// generated lookups (value = stored * scale + offset).
-TableImage tableHeaderFromText(int width, int height, const std::map<std::string, std::string>& attributes);
-
-// `brdfbake shader --lang L FILE...`: every file's functions, plus the glue to
+// `brdfbake shader --lang L FILE...`: every file's functions (EXR, KTX2, PNG, the header format; a DDS
+// with the metadata of the file beside it: formats/readers/table_reader.h tableMetadata), plus the glue to
 // shaders/multiscatter.glsl (lookupE, lookupEavg, lookupAB) when the albedo, albedo-avg and
 // split-sum tables of one pair are among the files.
 std::string shaderForFiles(const std::vector<std::string>& paths, ShaderLang lang);
