@@ -39,7 +39,11 @@ kernel void bake_hemisphere(global float* out_a, global float* out_b, global flo
   int i = get_global_id(0), j = get_global_id(1);
   if (i >= nx || j >= ny) return;
   int t = j * nx + i;
-  float mu = grid_coord(i, nx, mu_lo, mu_hi, node_grid), r = grid_coord(j, ny, r_lo, r_hi, node_grid);
+  /* node_grid bit 0: nodes, else texel centres; bit 1: the x axis is u = sqrt(mu) (mu = u^2, the
+   * coordinate Unity HDRP's newer pre-integrated FGD samples), else mu itself */
+  int nodes_on = node_grid & 1;
+  float u = grid_coord(i, nx, mu_lo, mu_hi, nodes_on), r = grid_coord(j, ny, r_lo, r_hi, nodes_on);
+  float mu = (node_grid & 2) ? u * u : u;
   float target = BAKE_TARGET;
   if (mu_list) {
     float4 q = nodes[t];

@@ -252,3 +252,26 @@ TEST(SharedProgram, SameBitsAsEachPairsOwnProgram) {
   EXPECT_TRUE(shared.sharedProgramBuilt());
 }
 }  // namespace
+
+namespace {
+// The sqrt(mu) x axis (Unity HDRP's newer FGD lookup): texel i of n holds the table at mu = u^2,
+// u = (i + 0.5)/n (texel centres) or i/(n - 1) (nodes), the same bits as a one-point evaluation
+// there, and the r axis is unchanged.
+TEST(Grid, SqrtMuAxisHoldsTheTableAtMuSquared) {
+  KernelRunner& k = runner();
+  for (bool nodes : {false, true}) {
+    const int n = 5;
+    KernelTable t = k.hemisphere(NDF_GGX, GAF_SMITH_CORRELATED, n, n, nodes, {}, true);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        float u = nodes ? static_cast<float>(i) / static_cast<float>(n - 1) : (static_cast<float>(i) + 0.5f) / n;
+        float r = nodes ? static_cast<float>(j) / static_cast<float>(n - 1) : (static_cast<float>(j) + 0.5f) / n;
+        float mu = u * u;
+        KernelTable p = k.hemisphereRange(NDF_GGX, GAF_SMITH_CORRELATED, 1, 1, mu, mu, r, r, true);
+        size_t x = static_cast<size_t>(j) * n + i;
+        EXPECT_EQ(t.planes[0][x], p.planes[0][0]) << "A at u=" << u << " r=" << r << (nodes ? " (nodes)" : "");
+        EXPECT_EQ(t.planes[1][x], p.planes[1][0]) << "B at u=" << u << " r=" << r;
+      }
+  }
+}
+}  // namespace

@@ -66,12 +66,14 @@ class KernelRunner {
   void prepareAll(const std::vector<std::pair<int, int>>& pairs);
 
   // A, B, E over (mu, r), nx x ny.
-  KernelTable hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid, const HemiWeight& w = {});
+  // muSqrt: the x axis is u = sqrt(mu) over [0, 1] (texel i holds mu = u_i^2), else mu.
+  KernelTable hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid, const HemiWeight& w = {},
+                         bool muSqrt = false);
   // The same over mu in [muLo, muHi] and r in [rLo, rHi] (a 1 x 1 node grid evaluates one point).
   // level >= 0: that budget at every texel (0 default, 1 refined, 2.. finer) instead of the bake's
   // adaptive choice.
   KernelTable hemisphereRange(int ndf, int gaf, int nx, int ny, float muLo, float muHi, float rLo, float rHi,
-                              bool nodeGrid, const HemiWeight& w = {}, int level = -1);
+                              bool nodeGrid, const HemiWeight& w = {}, int level = -1, bool muSqrt = false);
   // E_avg over r: GK31 panels over mu, halved where the bound is largest until it meets the
   // target (host/cl/runner_avg.cpp); E at every node on the device (one work-item per node), the
   // weighted sums and bounds here in double. With a Fresnel weight, the average of that model's

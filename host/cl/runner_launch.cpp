@@ -36,8 +36,9 @@ void KernelRunner::run(Compiled& c, cl::Kernel& k, size_t gx, size_t gy) {
   }
 }
 
-KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid, const HemiWeight& w) {
-  return hemisphereRange(ndf, gaf, nx, ny, 0.0f, 1.0f, 0.0f, 1.0f, nodeGrid, w);
+KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid, const HemiWeight& w,
+                                     bool muSqrt) {
+  return hemisphereRange(ndf, gaf, nx, ny, 0.0f, 1.0f, 0.0f, 1.0f, nodeGrid, w, -1, muSqrt);
 }
 
 namespace {
@@ -55,7 +56,7 @@ void setGridArgs(cl::Kernel& k, int first, int nx, int ny, float xLo, float xHi,
 }  // namespace
 
 KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, float muLo, float muHi, float rLo,
-                                          float rHi, bool nodeGrid, const HemiWeight& w, int level) {
+                                          float rHi, bool nodeGrid, const HemiWeight& w, int level, bool muSqrt) {
   Compiled& c = compiled(ndf, gaf, kHemisphere);
   Slot& s = *slots_[c.slot];
   size_t n = static_cast<size_t>(nx) * ny;
@@ -67,6 +68,7 @@ KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, floa
   k.setArg(2, e);
   k.setArg(3, err);
   setGridArgs(k, 4, nx, ny, muLo, muHi, rLo, rHi, nodeGrid);
+  if (muSqrt) k.setArg(10, (nodeGrid ? 1 : 0) | 2);  // x is sqrt(mu) (bake.cl)
   setWeightArgs(k, 11, w);
   k.setArg(15, level);
   k.setArg(16, 0);  // the grid's mu, not a list
