@@ -57,8 +57,19 @@ TEST(Dielectric, KernelMatchesReference) {
       worst = std::max({worst, er, et});
       EXPECT_LT(er, 1e-5) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " mu " << mu << " r " << r << " eta " << etas[z];
       EXPECT_LT(et, 1e-5) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " mu " << mu << " r " << r << " eta " << etas[z];
-      EXPECT_LE(std::max(er, et), t[2][k] + 1e-6) << "bound not honest at mu " << mu << " r " << r << " eta " << etas[z];
+      // the reference's own accuracy: ~1e-8 (two methods agree to 6e-8, README "Rough glass")
+      EXPECT_LE(std::max(er, et), t[2][k] + 1e-7) << "bound not honest at mu " << mu << " r " << r << " eta " << etas[z];
     }
+  }
+  // a rough surface, eta = 2.13: the refracting half-vector reaches the horizon inside the lobe, where
+  // D jumps to 0; the reference missed 7.4e-7 of E_T here (a cell of brdfbake-bench --dielectric over
+  // its bound 7.6e-7) until its circles split at that plane too.
+  {
+    double mu = 15.5 / 32, r = 29.5 / 32, eta = 2.13;  // the device run tight (bound ~5e-10)
+    auto t = runner().dielectricPoints(NDF_GGX, GAF_SMITH_CORRELATED, {mu}, {r}, {eta}, 1e-9f);
+    auto ref = reference::dielectricAlbedo(NDF_GGX, GAF_SMITH_CORRELATED, mu, r, eta);
+    double er = rel(t[0][0], ref.r), et = rel(t[1][0], ref.t);
+    EXPECT_LE(std::max(er, et), t[2][0] + 1e-7) << "E_T " << t[1][0] << " reference " << ref.t;
   }
   // grazing view under TIR of the mean surface (sin theta_i > eta): the transmitted lobe hugs the
   // horizon from below. The reference missed 5e-5 of E_T here until its circles split at the horizon

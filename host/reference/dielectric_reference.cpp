@@ -1,6 +1,7 @@
 #include "reference/dielectric_reference.h"
 
 #include <boost/math/special_functions/beta.hpp>
+#include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 #include <vector>
@@ -66,9 +67,15 @@ double bsdfCos(const Setup& s, const dvec3& o) {
 
 // int over the sphere of bsdfCos restricted to one side, in polar coordinates (beta, gamma) around
 // the unit `centre` (in the xz plane): o = cos(beta) centre + sin(beta) (cos(gamma) e1 + sin(gamma) y),
-// gamma folded to [0, pi] (the integrand is even in y). Breaks in beta at w 4^j.
+// gamma folded to [0, pi] (the integrand is even in y). Breaks in beta at w 4^j. In gamma, the
+// integrand jumps where o crosses a plane o.z = z0 (cos(gamma) = (z0 - cos(beta) centre.z) /
+// (sin(beta) e1.z)): the horizon, and for transmission the plane where the half-vector of
+// refraction reaches the horizon (h.z = 0 <=> mu + eta o.z = 0), beyond which D(h) is 0 (chi+):
+// a jump of D(90 degrees), large for rough surfaces. Each circle is split at both.
 double lobe(const Setup& s, const dvec3& centre, double w, bool upper) {
   dvec3 e1(centre.z, 0, -centre.x);  // centre rotated by 90 degrees in the xz plane
+  std::vector<double> planes = {0.0};
+  if (!upper) planes.push_back(-s.i.z / s.eta);
   std::vector<double> br = {0};
   for (double b = w / 64; b < kPi; b *= 4) br.push_back(b);
   br.push_back(kPi);
@@ -81,11 +88,17 @@ double lobe(const Setup& s, const dvec3& centre, double w, bool upper) {
         if ((o.z > 0) != upper) return 0.0;
         return bsdfCos(s, o);
       };
-      // the horizon o.z = 0 cuts the circle at cos(gamma) = -cb centre.z/(sb e1.z): a jump, split there
-      double cg = sb * e1.z != 0 ? -cb * centre.z / (sb * e1.z) : 2.0;
-      if (cg <= -1 || cg >= 1) return 2 * sb * detail::adapt(inner, 0.0, kPi, 1e-9, 10, 1e-8);
-      double g = std::acos(cg);
-      return 2 * sb * (detail::adapt(inner, 0.0, g, 1e-9, 10, 1e-8) + detail::adapt(inner, g, kPi, 1e-9, 10, 1e-8));
+      std::vector<double> cuts = {0.0};
+      for (double z0 : planes) {
+        double cg = sb * e1.z != 0 ? (z0 - cb * centre.z) / (sb * e1.z) : 2.0;
+        if (cg > -1 && cg < 1) cuts.push_back(std::acos(cg));
+      }
+      cuts.push_back(kPi);
+      std::sort(cuts.begin(), cuts.end());
+      double sum = 0;
+      for (size_t c = 0; c + 1 < cuts.size(); ++c)
+        if (cuts[c + 1] > cuts[c]) sum += detail::adapt(inner, cuts[c], cuts[c + 1], 1e-9, 10, 1e-8);
+      return 2 * sb * sum;
     };
     total += detail::adapt(outer, br[k], br[k + 1], 1e-8, 10, 1e-8);
   }
