@@ -49,6 +49,8 @@ std::string usageText() {
          "  --size N          texels per axis, 1..8192 (default 128 for splitsum and\n"
          "                    ashikhmin-shirley, 32 otherwise)\n"
          "  --grid G          texel-center (default: value at (i+0.5)/n) or node (at i/(n-1), n >= 2)\n"
+         "  --mu-axis A       linear (default: x = mu) or sqrt (x = sqrt(mu), texel i at mu = x_i^2, as HDRP's\n"
+         "                    FGD): splitsum and albedo only (the default tables then)\n"
          "  --format F[,F..]  exr (default), ktx2, dds, png16 (16-bit PNG, 2D), header (C/C++ .h and JavaScript\n"
          "                    .mjs): one file per format; brdf3d also merl (alone)\n"
          "  --precision P     float32 (default), float16, unorm16, unorm8 (unorm: tables within [0, 1]);\n"
