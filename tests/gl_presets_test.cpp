@@ -5,7 +5,9 @@
 // convention cited in host/formats/layout.cpp, must match the reference F0 A + B within the file's
 // brdf.error + brdf.interp-error, and agree with the generated code's Schlick lookup (which builds
 // the layout in). The flags without a preset (--axes r,mu --flip-y --channels B,A+B) through the
-// generated code; an unknown preset exits 64 with the list and writes nothing.
+// generated code; an unknown preset exits 64 with the list and writes nothing. unity-hdrp-sqrt:
+// HDRP's current lookup, x = sqrt(NdotV) on a node grid (Remap01ToHalfTexelCoord), at its 64^2; the
+// older linear-NdotV expression must not match that file.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -156,6 +158,12 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
       {"bevy", "vec2 f_ab = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * f_ab.x + f_ab.y;"},
       // HDRP PreIntegratedFGD.hlsl: preFGD = SAMPLE(float2(NdotV, perceptualRoughness)).xyz; lerp(preFGD.xxx, preFGD.yyy, f0)
       {"unity-hdrp", "vec3 pre = textureLod(tab, vec2(p.x, p.y), 0.0).xyz; spec = mix(pre.xxx, pre.yyy, vec3(p.z));"},
+      // HDRP's current GetPreIntegratedFGDGGXAndDisneyDiffuse: coordLUT = Remap01ToHalfTexelCoord(float2(sqrt(NdotV),
+      // perceptualRoughness), FGDTEXTURE_RESOLUTION), Remap01ToHalfTexelCoord (core Common.hlsl) = coord * (1 - 1/size)
+      // + 0.5/size, FGDTEXTURE_RESOLUTION 64 (PreIntegratedFGD.cs.hlsl); lerp(preFGD.xxx, preFGD.yyy, fresnel0)
+      {"unity-hdrp-sqrt",
+       "vec2 coordLUT = vec2(sqrt(p.x), p.y) * (1.0 - 1.0 / 64.0) + 0.5 / 64.0; vec3 pre = textureLod(tab, coordLUT, 0.0).xyz; "
+       "spec = mix(pre.xxx, pre.yyy, vec3(p.z));"},
       // Unreal BRDF.ush EnvBRDF: AB = Texture2DSampleLevel(PreIntegratedGF, s, float2(NoV, Roughness), 0).rg;
       // SpecularColor * AB.x + saturate(50.0 * SpecularColor.g) * AB.y
       {"unreal", "vec2 AB = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * AB.x + clamp(50.0 * p.z, 0.0, 1.0) * AB.y;"},
@@ -167,8 +175,10 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
               "engine vs generated");
   for (const auto& [name, expr] : engines) {
     // the preset's own format; the DDS (no metadata) with its KTX2 twin beside it for the header
-    const std::string ext = name == "unreal" ? ".dds" : name == "gltf-sample-viewer" ? ".png" : name == "unity-hdrp" ? ".exr" : ".ktx2";
-    ASSERT_EQ(bake("--layout " + name + " --size 32" + (name == "unreal" ? " --format dds,ktx2" : "") + " -o '" +
+    const std::string ext = name == "unreal" ? ".dds" : name == "gltf-sample-viewer" ? ".png" : name.rfind("unity-hdrp", 0) == 0 ? ".exr" : ".ktx2";
+    // 32^2, but HDRP's sqrt lookup at its own FGDTEXTURE_RESOLUTION (the preset's 64), built into its expression
+    const std::string size = name == "unity-hdrp-sqrt" ? "" : " --size 32";
+    ASSERT_EQ(bake("--layout " + name + size + (name == "unreal" ? " --format dds,ktx2" : "") + " -o '" +
                    (dir() / name).string() + "'"),
               0)
         << name;
@@ -179,6 +189,14 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
     EXPECT_LE(fig.engine, fig.predicted) << name << ": the engine's lookup of our file is off the reference";
     EXPECT_LE(fig.generated, fig.predicted) << name;
     EXPECT_LT(fig.agree, 2e-5) << name << ": the generated code does not follow the layout";
+  }
+  // the older HDRP lookup (linear NdotV at texel centres) of the sqrt file: the axis matters
+  {
+    File f = load((dir() / "unity-hdrp-sqrt" / "splitsum_ggx_smith-correlated.exr").string());
+    Figures fig = run(f, engines[2].second);
+    std::printf("%-19s %-6d %-9s %.2e    %.2e    %.2e   (the older linear-NdotV lookup of it: off by %.2f)\n",
+                "unity-hdrp-sqrt", f.tex.width, "exr", fig.engine, fig.generated, fig.predicted, fig.agree);
+    EXPECT_GT(fig.engine, 0.05) << "a linear-NdotV reader must not match the sqrt(NdotV) file";
   }
   // without a preset: transposed, flipped, (B, A+B); the engines' plain expression must then fail
   ASSERT_EQ(bake("--axes r,mu --flip-y --channels B,A+B --size 32 --format exr -o '" + (dir() / "flags").string() + "'"), 0);

@@ -128,13 +128,13 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   std::string perChannel = fc.channels() == 3 ? "R,G,B" : "R=G=B";
   switch (job.kind) {
     case TableKind::SplitSum:
-      kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid);
+      kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, {}, job.muSqrt);
       img.channels = {"R", "G", "B"};
       axes = "mu,r";
       if (fc.model == FRESNEL_F82_TINT) {
         // C = int f_{F=1} o.h (1 - o.h)^6 (n.i) dw_i: the F82-tint albedo is F0 A + B - b C
         KernelTable c = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid,
-                                          HemiWeight{HEMI_F82C, 0, 0, 0});
+                                          HemiWeight{HEMI_F82C, 0, 0, 0}, job.muSqrt);
         mergeErr(kt, c);
         img.planes = {kt.planes[0], kt.planes[1], c.planes[1]};
         fresnel = "f82-tint";
@@ -170,13 +170,13 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
         break;
       }
       if (fc.isOne()) {
-        kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid);
+        kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, {}, job.muSqrt);
         img.planes = {kt.planes[2]};
         channels = "R=G=B=E";
         break;
       }
       for (int c = 0; c < fc.channels(); ++c) {
-        KernelTable t = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, weight(c));
+        KernelTable t = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, weight(c), job.muSqrt);
         img.planes.push_back(t.planes[1]);
         if (c == 0) kt = t;
         else mergeErr(kt, t);
@@ -287,6 +287,9 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
     img.v2f["brdf.r.range"] = {0.0f, 1.0f};
   }
   if (axes == "mu,r") img.v2f["brdf.mu.range"] = {0.0f, 1.0f};
+  // the x texels' spacing, stated on every table over (mu, ...): shader code and readers apply u = sqrt(mu)
+  if (axes.rfind("mu,", 0) == 0)
+    img.strings["brdf.mu.index"] = job.muSqrt ? "sqrt (x = sqrt(mu): texel i holds mu = x_i^2)" : "linear (x = mu)";
   img.floats["brdf.error"] = static_cast<float>(bound);
   // what the resolution costs a bilinear lookup (estimated from the table; brdf3d tables measure it)
   InterpEstimate ie = estimateInterpolation(img, job.nodeGrid);

@@ -4,6 +4,11 @@
 // table the lookup clamps within half a texel of the edge, which costs about half the first
 // difference there. Both counted twice, a margin. Relative to max(1, |value|), every channel. An
 // estimate, not a bound: the tests compare it with lookups against the reference (tests/gl_test.cpp).
+// Differences are taken texel to texel, in whatever coordinate the texels are spaced: on a
+// --mu-axis sqrt table (brdf.mu.index sqrt) that is u = sqrt(mu), the coordinate the lookup
+// interpolates in (u = sqrt(mu), then bilinear), so the estimate is of that lookup. Its limit, on
+// every axis: what no texel holds it cannot see, as the dip of E where mu ~ alpha = r^2 towards the
+// corner (0, 0), up to 0.11 off at 64^2 (tests/mu_axis_test.cpp measures it; README "The sqrt(mu) axis").
 #pragma once
 #include "formats/table_image.h"
 

@@ -1,4 +1,5 @@
 #include "cli/args.h"
+#include "cli/layout_args.h"
 #include "cli/scene_args.h"
 #include "cli/volume_args.h"
 
@@ -219,21 +220,8 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       }
     } else if (parseVolumeOption(opt, value, req)) {
       // a brdf3d option (cli/volume_args.cpp)
-    } else if (opt == "--layout") {
-      once(opt, "--layout");
-      req.layoutPreset = layoutPreset(value()).name;
-      req.layout = layoutPreset(*req.layoutPreset).layout;
-    } else if (opt == "--axes" || opt == "--flip-x" || opt == "--flip-y" || opt == "--channels") {
-      once(opt, opt);
-      if (opt == "--axes") {
-        const std::string& v = value();
-        if (v != "mu,r" && v != "r,mu") throw Error(kExitUsage, "--axes must be mu,r or r,mu, got '" + v + "'");
-        req.layout.rAlongX = v == "r,mu";
-      } else if (opt == "--channels") {
-        req.layout.channels = parseLayoutChannels(value());
-      } else {
-        (opt == "--flip-x" ? req.layout.flipX : req.layout.flipY) = true;
-      }
+    } else if (parseLayoutOption(opt, value, [&](const std::string& o) { once(o, o); }, req)) {
+      // --layout, --axes, --flip-x, --flip-y, --channels, --mu-axis (cli/layout_args.cpp)
     } else if (opt == "--grid") {
       once(opt, "--grid");
       gridName = value();
@@ -392,7 +380,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   }
   if (cmd.kind == Command::Kind::Energy) {
     // energy writes nothing: the table options do not apply
-    for (const char* o : {"--table", "--grid", "--half", "--precision", "--format", "--output"})
+    for (const char* o : {"--table", "--grid", "--mu-axis", "--half", "--precision", "--format", "--output"})
       if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()))
         throw Error(kExitUsage, std::string(o) + ": not an energy option (energy writes no tables)");
     if (req.sigma && req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
@@ -402,14 +390,14 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   }
   if (cmd.kind == Command::Kind::Stress) {
     // stress runs its own fixed sweep of stiff cases: it takes only where to write and what device
-    for (const char* o : {"--table", "--grid", "--half", "--precision", "--format", "--fresnel", "--size"})
+    for (const char* o : {"--table", "--grid", "--mu-axis", "--half", "--precision", "--format", "--fresnel", "--size"})
       if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()))
         throw Error(kExitUsage, std::string(o) + ": not a stress option (stress sweeps fixed stiff cases: -o, --device)");
     if (modelsGiven)
       throw Error(kExitUsage, "--ndf/--gaf/--diffuse: not stress options (stress sweeps fixed stiff cases: -o, --device)");
   }
   if (cmd.kind == Command::Kind::Convergence) {
-    for (const char* o : {"--table", "--grid", "--half", "--precision", "--format"})
+    for (const char* o : {"--table", "--grid", "--mu-axis", "--half", "--precision", "--format"})
       if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()))
         throw Error(kExitUsage, std::string(o) + ": not a convergence option (it measures the albedo table of one "
                                                  "--ndf/--gaf/--fresnel; --size, -o)");
@@ -418,7 +406,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   }
   if (cmd.kind == Command::Kind::Verify) {
     // verify checks model pairs: it writes a report page (under -o), no tables
-    for (const char* o : {"--table", "--grid", "--half", "--precision", "--format", "--fresnel", "--diffuse"})
+    for (const char* o : {"--table", "--grid", "--mu-axis", "--half", "--precision", "--format", "--fresnel", "--diffuse"})
       if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()) ||
           (std::string(o) == "--diffuse" && req.diffuse >= 0))
         throw Error(kExitUsage, std::string(o) + ": not a verify option (verify checks NDF/GAF pairs: --ndf, --gaf, --size, -o)");
@@ -434,6 +422,10 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     req.tables = {TableKind::Albedo};  // the diffuse model's albedo
   } else if (req.fresnelGiven) {
     req.tables = {TableKind::Albedo, TableKind::AlbedoAvg};  // the tables a Fresnel model enters
+  } else if (req.layoutPreset || !req.layout.identity()) {
+    req.tables = {TableKind::SplitSum};  // the one table a layout arranges
+  } else if (req.muSqrt.value_or(false)) {
+    req.tables = {TableKind::SplitSum, TableKind::Albedo};  // the tables over (mu, r)
   } else {
     req.tables = def.tables;
   }
@@ -441,6 +433,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
                             !req.fresnel.f82.empty()))
     throw Error(kExitUsage, "--f0, --eta, --k and --f82 need --fresnel MODEL (" + joinNames(fresnelNames()) + ")");
   validateFresnel(req.fresnel);
+  validateMuAxis(!gridName.empty(), req);
   if (req.nodeGrid && req.size && *req.size < 2)
     throw Error(kExitUsage, "--size must be at least 2 on the node grid, got " + std::to_string(*req.size));
   cmd.bake = req;

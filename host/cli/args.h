@@ -26,6 +26,9 @@ struct BakeRequest {
   TableLayout layout;                // --layout preset / --axes, --flip-x, --flip-y, --channels
   std::optional<std::string> layoutPreset;  // --layout NAME: its format, precision and size unless given
   bool nodeGrid = false;             // samples at i/(n-1) instead of texel centres (i+0.5)/n
+  // --mu-axis sqrt: splitsum and albedo space their x texels in u = sqrt(mu) (texel i holds mu = u_i^2);
+  // unset: linear, or the layout preset's (cli/layout_args.h validateMuAxis sets it)
+  std::optional<bool> muSqrt;
   std::string device;                // substring of the device (or platform) name; "" = first CPU
   std::string cacheDir;              // PoCL kernel cache (POCL_CACHE_DIR); "" = PoCL's default
   FresnelChoice fresnel;             // --fresnel and its parameters (validated)

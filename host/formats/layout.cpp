@@ -11,7 +11,8 @@ namespace brdfbake {
 const std::vector<LayoutPreset>& layoutPresets() {
   // Each engine samples its LUT at uv = (NoV, perceptual roughness) (mu along x, r along y, r the
   // baker's roughness axis: alpha = r^2) with texel-center addressing and texel row 0 at uv.y = 0
-  // (row 0 = r 0: no flip); they differ in the channels and the file.
+  // (row 0 = r 0: no flip); they differ in the channels and the file. unity-hdrp-sqrt alone samples
+  // x = sqrt(NoV) on a node grid.
   static const std::vector<LayoutPreset> presets = {
       {"filament", {false, false, false, {"B", "A+B"}}, FileFormat::Ktx2, Precision::Float16, 128,
        "google/filament shaders/src/light_indirect.fs: PrefilteredDFG_LUT = textureLod(light_iblDFG, vec2(NoV, "
@@ -24,8 +25,22 @@ const std::vector<LayoutPreset>& layoutPresets() {
        "Unity-Technologies/Graphics com.unity.render-pipelines.high-definition/HDRP/Material/PreIntegratedFGD/"
        "PreIntegratedFGD.hlsl: preFGD = SAMPLE_TEXTURE2D_LOD(_PreIntegratedFGD_GGXDisneyDiffuse, "
        "s_linear_clamp_sampler, float2(NdotV, perceptualRoughness), 0); specularFGD = lerp(preFGD.xxx, "
-       "preFGD.yyy, fresnel0): R = B, G = A + B (the linear-NdotV form; later HDRP samples sqrt(NdotV), which "
-       "the baker's linear mu axis does not hold)"},
+       "preFGD.yyy, fresnel0): R = B, G = A + B (the linear-NdotV form; later HDRP samples sqrt(NdotV) on a node "
+       "grid: unity-hdrp-sqrt)"},
+      // HDRP's current form: x = sqrt(NdotV) on a node grid (Remap01ToHalfTexelCoord), so the preset bakes the
+      // sqrt mu axis (--mu-axis sqrt) on nodes (--grid node)
+      {"unity-hdrp-sqrt", {false, false, false, {"B", "A+B"}}, FileFormat::Exr, Precision::Float16, 64,
+       "Unity-Technologies/Graphics com.unity.render-pipelines.high-definition/Runtime/Material/PreIntegratedFGD/"
+       "PreIntegratedFGD.hlsl: GetPreIntegratedFGDGGXAndDisneyDiffuse: coordLUT = Remap01ToHalfTexelCoord("
+       "float2(sqrt(NdotV), perceptualRoughness), FGDTEXTURE_RESOLUTION); preFGD = SAMPLE_TEXTURE2D_LOD("
+       "_PreIntegratedFGD_GGXDisneyDiffuse, s_linear_clamp_sampler, coordLUT, 0).xyz; specularFGD = "
+       "lerp(preFGD.xxx, preFGD.yyy, fresnel0); com.unity.render-pipelines.core/ShaderLibrary/Common.hlsl: "
+       "Remap01ToHalfTexelCoord maps [0, 1] onto [0.5/size, 1 - 0.5/size] (texel i holds i/(size-1): a node grid); "
+       "preIntegratedFGD_GGXDisneyDiffuse.shader: NdotV = x * x, perceptualRoughness = y (alpha = its square); "
+       "PreIntegratedFGD.cs.hlsl: FGDTEXTURE_RESOLUTION 64; core ImageBasedLighting.hlsl "
+       "IntegrateGGXAndDisneyDiffuseFGD: x += w (1 - V.H)^5, y += w: R = B, G = A + B (z, the Disney diffuse "
+       "albedo - 0.5, is not baked)",
+       true, true},
       {"unreal", {false, false, false, {"A", "B"}}, FileFormat::Dds, Precision::Unorm16, 128,
        "Epic Games' Unreal Engine (its repository is access-restricted; read in the public mirror "
        "chenyong2github/UnrealEngine) Engine/Shaders/Private/BRDF.ush: EnvBRDF: AB = Texture2DSampleLevel("

@@ -28,6 +28,11 @@ struct LayoutPreset {
   Precision precision;
   int size;
   std::string citation;  // the engine's sampling code it follows: repository, path, expression
+  // How the engine addresses the texels: node grid (texel i holds i/(n-1), e.g. HDRP's
+  // Remap01ToHalfTexelCoord) or texel centres; and whether its x coordinate is sqrt(mu). A --grid or
+  // --mu-axis that contradicts them is refused (cli/layout_args.h): the engine's lookup would misread the file.
+  bool nodeGrid = false;
+  bool muSqrt = false;
 };
 
 const std::vector<LayoutPreset>& layoutPresets();

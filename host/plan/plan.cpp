@@ -289,6 +289,7 @@ Plan makePlan(const BakeRequest& given) {
                                       "), the grid's first column; use --grid texel-center for " + tableName(kind));
         TableJob job{kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, req.half, "", req.fresnel,
                      kind == TableKind::SplitSum ? req.diffuse : -1};
+        job.muSqrt = twoD && req.muSqrt.value_or(false);  // validated: cli/layout_args.cpp
         job.path = req.outDir + "/" + fileName(job);
         plan.jobs.push_back(job);
       }

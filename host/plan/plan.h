@@ -27,6 +27,7 @@ struct TableJob {
   std::vector<FileFormat> formats = {FileFormat::Exr};
   Precision precision = Precision::Float32;
   TableLayout layout = {};  // splitsum: axis order, flips, channels (formats/layout.h)
+  bool muSqrt = false;      // splitsum, albedo: x holds u = sqrt(mu), texel i at mu = u_i^2 (--mu-axis sqrt)
 };
 
 // A 3D table (--table brdf3d): one per NDF/GAF pair, baked and written slab by slab.

@@ -1,6 +1,7 @@
 #include "shader/shader_gen.h"
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -43,10 +44,12 @@ std::string attr(const TableImage& h, const std::string& k, const std::string& f
   return it == h.strings.end() ? fallback : it->second;
 }
 
-// Axis a of a 2D/1D table: its range from brdf.<name>.range, its name from brdf.axes.
+// Axis a of a 2D/1D table: its range from brdf.<name>.range, its name from brdf.axes; the mu axis
+// spaced in u = sqrt(mu) where brdf.mu.index says sqrt (--mu-axis sqrt).
 struct Axis {
   std::string name;
   double lo = 0, hi = 1;
+  bool sqrtIndex = false;
 };
 
 std::vector<Axis> axesOf(const std::string& path, const TableImage& h) {
@@ -67,6 +70,15 @@ std::vector<Axis> axesOf(const std::string& path, const TableImage& h) {
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
+  const std::string index = attr(h, "brdf.mu.index", "linear");
+  const bool sq = index.rfind("sqrt", 0) == 0;
+  if (!sq && index.rfind("linear", 0) != 0)
+    throw Error(kExitDataErr, path + ": brdf.mu.index '" + index + "' is not one brdfbake reads: linear or sqrt");
+  bool found = false;
+  for (Axis& a : axes) found = (a.sqrtIndex = sq && a.name == "mu" && a.lo >= 0 && a.hi > a.lo) || found;
+  if (sq && !found)
+    throw Error(kExitDataErr, path + ": brdf.mu.index is sqrt but brdf.axes (" + list +
+                                  ") has no mu axis with a range in [0, inf) to take the square root of");
   return axes;
 }
 
@@ -95,17 +107,24 @@ std::string mapped(const Lang& L, const TableImage& h, const std::string& v) {
 std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, const std::vector<Axis>& ax, bool node) {
   const int w = h.width, hgt = h.height;
   const bool oneD = hgt == 1;
-  const std::string x0 = lit(ax[0].lo), x1 = lit(ax[0].hi);
-  const std::string y0 = oneD ? "0.0" : lit(ax[1].lo), y1 = oneD ? "1.0" : lit(ax[1].hi);
+  // the fraction of axis a's range `v` lies at; on a sqrt(mu) axis the fraction of sqrt(mu)'s
+  auto frac = [&](const Axis& a, const std::string& v) {
+    if (!a.sqrtIndex) return "(" + v + " - " + lit(a.lo) + ") / (" + lit(a.hi) + " - " + lit(a.lo) + ")";
+    return "(sqrt(max(" + v + ", 0.0)) - " + lit(std::sqrt(a.lo)) + ") / (" + lit(std::sqrt(a.hi)) + " - " +
+           lit(std::sqrt(a.lo)) + ")";
+  };
   std::string s;
   s += L.cst() + " " + L.f2() + " " + P + "_SIZE = " + L.f2() + "(" + lit(w) + ", " + lit(hgt) + ");\n";
   std::string args = oneD ? "float x" : "float x, float y";
-  std::string yExpr = oneD ? "0.5" : "(y - " + y0 + ") / (" + y1 + " - " + y0 + ")";
+  std::string yExpr = oneD ? "0.5" : frac(ax[1], "y");
   s += "// fraction of each axis' range, clamped: quantities outside the table read its edge\n";
+  for (size_t a = 0; a < ax.size() && a < 2; ++a)
+    if (ax[a].sqrtIndex)
+      s += "// " + std::string(a ? "y" : "x") + " is spaced in sqrt(mu) (brdf.mu.index sqrt): texel i holds mu = u_i^2\n";
   const std::string flip = attr(h, "brdf.layout.flip", "none");
   const bool fx = flip.find('x') != std::string::npos, fy = flip.find('y') != std::string::npos;
-  s += L.f2() + " " + P + "_t(" + args + ") {\n  " + L.f2() + " t = clamp(" + L.f2() + "((x - " + x0 + ") / (" + x1 + " - " +
-       x0 + "), " + yExpr + "), 0.0, 1.0);\n";
+  s += L.f2() + " " + P + "_t(" + args + ") {\n  " + L.f2() + " t = clamp(" + L.f2() + "(" + frac(ax[0], "x") + ", " + yExpr +
+       "), 0.0, 1.0);\n";
   if (fx) s += "  t.x = 1.0 - t.x;  // texel 0 holds the high end of x (brdf.layout.flip)\n";
   if (fy) s += "  t.y = 1.0 - t.y;  // texel 0 holds the high end of y (brdf.layout.flip)\n";
   s += "  return t;\n}\n";
@@ -272,7 +291,8 @@ std::string shaderForTable(const std::string& path, const TableImage& h, ShaderL
   if (table.empty()) throw Error(kExitDataErr, path + ": no brdf.table attribute: not a table brdfbake wrote");
   std::string s = "// ---- " + path + ": " + table;
   if (!attr(h, "brdf.ndf").empty()) s += ", " + attr(h, "brdf.ndf") + " + " + attr(h, "brdf.gaf");
-  s += "\n// axes " + attr(h, "brdf.axes") + ", " + attr(h, "brdf.grid") + " grid, channels " + attr(h, "brdf.channels") + "\n";
+  s += "\n// axes " + attr(h, "brdf.axes") + ", " + attr(h, "brdf.grid") + " grid, " +
+       (attr(h, "brdf.mu.index").rfind("sqrt", 0) == 0 ? "mu index sqrt, " : "") + "channels " + attr(h, "brdf.channels") + "\n";
   auto err = h.floats.find("brdf.error");
   if (err != h.floats.end())
     s += "// error budget (relative to max(1, |value|)): table " + fmtG(err->second) +
