@@ -187,9 +187,10 @@ TEST(MuAxis, EstimateTakesTheTablesOwnSpacing) {
 // below the interpolation errors measured. Regions: mu < 0.1 with r < 0.05 (the corner), 0.05 <= r
 // < 0.2 and r >= 0.2; mu >= 0.1. Near the corner E dips where mu ~ alpha = r^2 (to 0.892 at mu =
 // alpha, the reference agrees) between edges that hold 1: a wedge narrower than a texel there,
-// which no grid resolves and the estimate (from the texels) does not see. The sqrt axis spaces u
-// = sqrt(mu) like r, so the wedge mu ~ r^2 (u ~ r) is resolved from r ~ 0.05 on; on a linear axis
-// only from r ~ 0.2. Where the wedge is resolved the estimate must hold.
+// which no grid resolves and the estimate from the texels does not see; the bake's probes between
+// texels measure it (host/bake/interp_probe.h), so brdf.interp-error holds in every region. The sqrt
+// axis spaces u = sqrt(mu) like r, so the wedge mu ~ r^2 (u ~ r) is resolved from r ~ 0.05 on; on a
+// linear axis only from r ~ 0.2.
 TEST(MuAxis, InterpolationEstimateHoldsOnBothAxes) {
   KernelRunner& k = testing_device::runner();
   const int dense = 512, n = 64;
@@ -232,11 +233,13 @@ TEST(MuAxis, InterpolationEstimateHoldsOnBothAxes) {
       std::printf("%-6s %-13s %-11.3g %-11.3g %-11.3g %-11.3g %-10.3g (%.3g)\n", sq ? "sqrt" : "linear",
                   node ? "node" : "texel-center", worst[0], worst[1], worst[2], worst[3], est, interior);
       const std::string which = std::string(sq ? "sqrt" : "linear") + (node ? " node" : " texel-center");
-      EXPECT_LE(worst[2], err + est) << which;
+      // the whole claim holds everywhere, the corner's wedge included (the bake probes it between
+      // texels: host/bake/interp_probe.h); away from grazing the estimate from the texels is the
+      // whole story, and the probe's figure is what the lookups near the corner really miss
+      for (int reg = 0; reg < 4; ++reg) EXPECT_LE(worst[reg], err + est) << which << ", region " << reg;
       EXPECT_LE(worst[3], err + interior) << which << ": away from grazing the interior term is the whole story";
-      if (sq) {
-        EXPECT_LE(worst[1], err + est) << which << ": the sqrt axis resolves grazing from r = 0.05 on";
-      }
+      const double probe = t.floats["brdf.interp-error.probe"];
+      EXPECT_GE(probe, 0.5 * std::max(worst[0], worst[1])) << which << ": the probes find the wedge";
     }
   // the trade: at grazing (mu < 0.1, 0.05 <= r < 0.2) the sqrt axis is over ten times closer; inside alike
   for (bool node : {false, true}) {

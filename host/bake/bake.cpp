@@ -11,6 +11,7 @@
 
 #include "bake/ashikhmin_textures.h"
 #include "bake/dielectric_bake.h"
+#include "bake/interp_probe.h"
 #include "bake/merl_bake.h"
 #include "bake/format_outputs.h"
 #include "bake/interp_estimate.h"
@@ -34,6 +35,9 @@ namespace {
 // errors stay under 3e-7 (tests/accuracy_test.cpp, every pair; brdfbake-bench: 2.3e-7 on the
 // default table); the allowance keeps a 3x margin, and those tests check bound + allowance.
 constexpr double kFloatArithmeticAllowance = 1e-6;
+// brdf.interp-error: the larger of the estimate from the texels and the probes' largest lookup
+// error with this margin (the probes sample the wedge near the corner, not its every point)
+constexpr double kProbeMargin = 1.5;
 // The eta axis of fresnel-avg tables: both sides of an interface, glass (1.5) and its inverse.
 constexpr double kEtaLo = 0.25, kEtaHi = 4.0;
 
@@ -293,8 +297,11 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   img.floats["brdf.error"] = static_cast<float>(bound);
   // what the resolution costs a bilinear lookup (estimated from the table; brdf3d tables measure it)
   InterpEstimate ie = estimateInterpolation(img, job.nodeGrid);
-  img.floats["brdf.interp-error"] = static_cast<float>(ie.total());
+  std::vector<ProbePlane> probe = probePlanes(job);  // and measured between texels where they cannot see
+  double probed = probe.empty() ? 0 : probeInterpolation(runner, job, img, probe);
+  img.floats["brdf.interp-error"] = static_cast<float>(std::max(ie.total(), kProbeMargin * probed));
   img.floats["brdf.interp-error.interior"] = static_cast<float>(ie.interior);
+  if (!probe.empty()) img.floats["brdf.interp-error.probe"] = static_cast<float>(probed);
   return img;
 }
 

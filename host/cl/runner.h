@@ -82,7 +82,7 @@ class KernelRunner {
                         float rHi = 1.0f);
   static constexpr double kAvgGoal = 8e-6;  // an entry's bound (relative to max(1, E_avg)), as a texel's
   // The hemisphere kernel at arbitrary points: nodes[k] = (mu, r, refinement target, unused);
-  // planes {the value (E, or with a Fresnel weight that model's albedo), its absolute bound}.
+  // planes {the value (E, or with a Fresnel weight that model's albedo), its absolute bound, A, B}.
   std::vector<std::vector<float>> hemisphereNodes(int ndf, int gaf, const std::vector<cl_float4>& nodes,
                                                   const HemiWeight& w = {});
   // k_p over r.

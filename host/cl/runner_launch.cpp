@@ -119,7 +119,8 @@ std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, 
   k.setArg(17, in);
   setPairArgs(k, 18, ndf, gaf);
   run(c, k, count, 1);
-  return {readBack(s.queue, e, count), readBack(s.queue, err, count)};
+  return {readBack(s.queue, e, count), readBack(s.queue, err, count), readBack(s.queue, a, count),
+          readBack(s.queue, b, count)};
 }
 
 KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid, float rLo, float rHi) {
