@@ -11,23 +11,15 @@ namespace readers {
 
 namespace {
 
-struct Layout {
-  int components;
-  Precision precision;
-};
-
 // DXGI_FORMAT values (dxgiformat.h) of the uncompressed UNORM / FLOAT formats.
-bool dxgiLayout(uint32_t dxgi, Layout* out) {
-  static const std::map<uint32_t, Layout> kFormats = {
+const std::map<uint32_t, TexelLayout>& dxgiFormats() {
+  static const std::map<uint32_t, TexelLayout> kFormats = {
       {2, {4, Precision::Float32}},  {6, {3, Precision::Float32}},  {16, {2, Precision::Float32}},
       {41, {1, Precision::Float32}}, {10, {4, Precision::Float16}}, {34, {2, Precision::Float16}},
       {54, {1, Precision::Float16}}, {11, {4, Precision::Unorm16}}, {35, {2, Precision::Unorm16}},
       {56, {1, Precision::Unorm16}}, {28, {4, Precision::Unorm8}},  {49, {2, Precision::Unorm8}},
       {61, {1, Precision::Unorm8}}};
-  auto it = kFormats.find(dxgi);
-  if (it == kFormats.end()) return false;
-  *out = it->second;
-  return true;
+  return kFormats;
 }
 
 }  // namespace
@@ -47,8 +39,8 @@ void readDds(const std::string& bytes, bool pixels, TableFile& t) {
   const uint32_t dxgi = f.u32(128, "DDS_HEADER_DXT10.dxgiFormat"), dimension = f.u32(132, "resourceDimension");
   const uint32_t miscFlag = f.u32(136, "miscFlag"), arraySize = f.u32(140, "arraySize");
   f.need(148, "DDS_HEADER_DXT10");
-  Layout layout{};
-  if (!dxgiLayout(dxgi, &layout))
+  TexelLayout layout{};
+  if (!findLayout(dxgiFormats(), dxgi, &layout))
     refuse("DXGI_FORMAT " + std::to_string(dxgi) + " is not one brdfbake reads: R/RG/RGBA 8- or 16-bit UNORM, 16- or "
            "32-bit FLOAT, RGB 32-bit FLOAT (2, 6, 10, 11, 16, 28, 34, 35, 41, 49, 54, 56, 61)");
   if (dimension < 2 || dimension > 4)

@@ -13,24 +13,16 @@ namespace readers {
 
 namespace {
 
-struct Layout {
-  int components;
-  Precision precision;
-};
-
 // VkFormat enumerant values (Vulkan registry) of the uncompressed UNORM / SFLOAT formats.
-bool vkLayout(uint32_t vk, Layout* out) {
-  static const std::map<uint32_t, Layout> kFormats = {
+const std::map<uint32_t, TexelLayout>& vkFormats() {
+  static const std::map<uint32_t, TexelLayout> kFormats = {
       {9, {1, Precision::Unorm8}},     {16, {2, Precision::Unorm8}},    {23, {3, Precision::Unorm8}},
       {37, {4, Precision::Unorm8}},    {70, {1, Precision::Unorm16}},   {77, {2, Precision::Unorm16}},
       {84, {3, Precision::Unorm16}},   {91, {4, Precision::Unorm16}},   {76, {1, Precision::Float16}},
       {83, {2, Precision::Float16}},   {90, {3, Precision::Float16}},   {97, {4, Precision::Float16}},
       {100, {1, Precision::Float32}},  {103, {2, Precision::Float32}},  {106, {3, Precision::Float32}},
       {109, {4, Precision::Float32}}};
-  auto it = kFormats.find(vk);
-  if (it == kFormats.end()) return false;
-  *out = it->second;
-  return true;
+  return kFormats;
 }
 
 }  // namespace
@@ -43,8 +35,8 @@ void readKtx2(const std::string& bytes, bool pixels, TableFile& t) {
   const uint32_t width = f.u32(20, "pixelWidth"), height = f.u32(24, "pixelHeight"), depth = f.u32(28, "pixelDepth");
   const uint32_t layers = f.u32(32, "layerCount"), faces = f.u32(36, "faceCount");  // levelCount: level 0 is read
   const uint32_t scheme = f.u32(44, "supercompressionScheme");
-  Layout layout{};
-  if (!vkLayout(vk, &layout))
+  TexelLayout layout{};
+  if (!findLayout(vkFormats(), vk, &layout))
     refuse("vkFormat " + std::to_string(vk) + " is not one brdfbake reads: R/RG/RGB/RGBA 8- or 16-bit UNORM, 16- or "
            "32-bit SFLOAT (VkFormat 9, 16, 23, 37, 70, 77, 84, 91, 76, 83, 90, 97, 100, 103, 106, 109)");
   const uint32_t component = static_cast<uint32_t>(bytesPerChannel(layout.precision));

@@ -1,6 +1,7 @@
 // What the per-format readers (ktx2_read.cpp, dds_read.cpp, png_read.cpp, header_read.cpp) share;
 // not part of the interface, which is table_reader.h.
 #pragma once
+#include <map>
 #include <cstdint>
 #include <string>
 
@@ -26,6 +27,19 @@ struct Fields {
   uint32_t u32(uint64_t at, const char* what) const;
   uint64_t u64(uint64_t at, const char* what) const;
 };
+
+// A texel format code's channel count and precision (DXGI_FORMAT, VkFormat).
+struct TexelLayout {
+  int components;
+  Precision precision;
+};
+// The layout of `code` in `formats`; false when the code is not one of them.
+inline bool findLayout(const std::map<uint32_t, TexelLayout>& formats, uint32_t code, TexelLayout* out) {
+  auto it = formats.find(code);
+  if (it == formats.end()) return false;
+  *out = it->second;
+  return true;
+}
 
 // One stored channel value as a number: float32 / float16 bit patterns, unorm codes over their maximum.
 double decodeStored(uint32_t bits, Precision p);
