@@ -103,7 +103,7 @@ double storageError(const std::vector<float>& v, bool half) {
 
 }  // namespace
 
-TableImage computeTable(KernelRunner& runner, const TableJob& job, double* seconds) {
+TableImage computeTable(KernelRunner& runner, const TableJob& job, double* seconds, std::vector<double>* texelBounds) {
   if (job.kind == TableKind::AshikhminShirley) {  // closed forms on the host, their own metadata
     auto t0 = std::chrono::steady_clock::now();
     TableImage img = ashikhminTexture(job.texture, job.width, job.half);
@@ -245,11 +245,16 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       if (!std::isfinite(img.planes[c][t]) || !std::isfinite(kt.err[t]))
         throw Error(kExitSoftware, "internal error: " + tableName(job.kind) + " " + modelsOf(job) + " texel (" + std::to_string(t % job.width) + ", " +
                                        std::to_string(t / job.width) + ") is not finite; nothing was written");
-  double quad = 0;
-  for (float e : kt.err) quad = std::max(quad, static_cast<double>(e));
   double storage = 0;
   for (auto& p : img.planes) storage = std::max(storage, storageError(p, job.half));
-  double bound = quad + kFloatArithmeticAllowance + storage;
+  // each texel's claim; the file's brdf.error is the largest
+  double bound = 0;
+  if (texelBounds) texelBounds->assign(kt.err.size(), 0.0);
+  for (size_t t = 0; t < kt.err.size(); ++t) {
+    double b = static_cast<double>(kt.err[t]) + kFloatArithmeticAllowance + storage;
+    bound = std::max(bound, b);
+    if (texelBounds) (*texelBounds)[t] = b;
+  }
 
   img.strings["brdf.schema"] = "brdfbake/1";
   img.strings["brdf.table"] = tableName(job.kind);

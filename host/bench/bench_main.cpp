@@ -26,6 +26,11 @@
 //               the same quantity: times, errors against the reference (dielectric on every
 //               --stride-th texel, default 4, plus edges; diffuse on all), kernel bounds.
 //               host/bench/materials_bench.cpp. ~2 minutes.
+//   --bounds [--pair NDF+GAF]... [--csv FILE]: how tight the claimed bounds are: every table of the
+//               default set (split-sum --size, albedo, albedo-avg, k_p) of each pair (default:
+//               ggx+smith-correlated, beckmann+smith, ggx+schlick-ggx, blinn-phong+implicit,
+//               gaussian+smith-correlated-exact) baked as brdfbake bakes it, brdf.error and each
+//               texel's claim against the true error. host/bench/bounds_bench.cpp.
 //   --dielectric [--mc-log2 K]: the 32^3 rough-dielectric table (ggx + smith-correlated) timed
 //               against a 2^K-sample Monte Carlo per cell (default K = 23, Cycles' budget) on 27
 //               cells, scaled; both against the o-space reference. host/bench/dielectric_bench.cpp.
@@ -57,6 +62,8 @@ namespace brdfbake {
 int materialsBench(KernelRunner& runner, int samples, int repeat, int stride);  // materials_bench.cpp
 int volumeBench(KernelRunner& runner, int repeat, int bigSize);  // volume_bench.cpp
 int dielectricBench(KernelRunner& runner, int samplesLog2);     // dielectric_bench.cpp
+int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pairs, int size, int stride,
+                const std::string& csv);  // bounds_bench.cpp
 }
 
 namespace {
@@ -295,7 +302,9 @@ int main(int argc, char** argv) {
   int n = 128, samples = 1024, stride = 1, repeat = 3;
   std::string device;
   bool timesOnly = false, everyPair = false, avgCheck = false, cold = false, skipAll = false, strideSet = false;
-  bool materials = false, volume = false, dielectric = false;
+  bool materials = false, volume = false, dielectric = false, bounds = false;
+  std::vector<std::pair<int, int>> pairs;
+  std::string csv;
   int mcLog2 = 23;
   int buildThreads = 0, volumeSize = 256;
   std::string child;
@@ -317,6 +326,21 @@ int main(int argc, char** argv) {
     else if (a == "--materials") materials = true;
     else if (a == "--volume") volume = true;
     else if (a == "--dielectric") dielectric = true;
+    else if (a == "--bounds") bounds = true;
+    else if (a == "--csv") csv = next();
+    else if (a == "--pair") {
+      std::string v = next();
+      size_t plus = v.find('+');
+      try {
+        if (plus == std::string::npos) throw Error(kExitUsage, "--pair: NDF+GAF, e.g. ggx+smith-correlated");
+        int nd = ndfId(v.substr(0, plus), "--pair"), gf = gafId(v.substr(plus + 1), "--pair");
+        checkPair(nd, gf, "--pair");
+        pairs.push_back({nd, gf});
+      } catch (const Error& e) {
+        std::fprintf(stderr, "brdfbake-bench: %s\n", e.what());
+        return 64;
+      }
+    }
     else if (a == "--mc-log2") mcLog2 = std::atoi(next().c_str());
     else if (a == "--volume-size") volumeSize = std::atoi(next().c_str());
     else if (a == "--skip-all") skipAll = true;
@@ -334,6 +358,12 @@ int main(int argc, char** argv) {
     if (everyPair) return allPairs(runner, n, stride);
     if (avgCheck) return albedoAvgCheck(runner, strideSet ? stride : 8, repeat);
     if (materials) return materialsBench(runner, samples, repeat, strideSet ? stride : 4);
+    if (bounds) {
+      if (pairs.empty())
+        pairs = {{NDF_GGX, GAF_SMITH_CORRELATED}, {NDF_BECKMANN, GAF_SMITH}, {NDF_GGX, GAF_SCHLICK_GGX},
+                 {NDF_BLINN_PHONG, GAF_IMPLICIT}, {NDF_GAUSSIAN, GAF_SMITH_CORRELATED_EXACT}};
+      return boundsBench(runner, pairs, n, stride, csv);
+    }
     if (dielectric) return dielectricBench(runner, std::max(1, std::min(mcLog2, 24)));
     if (volume) return volumeBench(runner, repeat, std::max(1, std::min(volumeSize, 1024)));
     runner.hemisphere(ndf, gaf, 1, 1, false);  // builds the program: not part of the timing
