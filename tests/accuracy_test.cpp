@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "cl/device.h"
+#include "bake/error_model.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/models.h"
@@ -21,8 +22,6 @@ using namespace brdfbake;
 using testing_device::rel;
 using testing_device::runner;
 
-// The bake's allowance for float arithmetic (host/bake/bake.cpp), added to the kernel's bound.
-constexpr double kAllowance = 1e-6;
 constexpr double kGoal = 1e-5;  // issue #2: every texel within 1e-5 of the exact integral
 // The reference's own accuracy (adaptive GK31 to ~1e-11; limits from inside to ~1e-9).
 constexpr double kReferenceSlack = 3e-9;
@@ -32,12 +31,17 @@ std::string pairName(int ndf, int gaf) { return ndfNames()[ndf] + "+" + gafNames
 
 class PairTest : public ::testing::TestWithParam<std::pair<int, int>> {};
 
+// The largest float error seen, as a fraction of the model's bound (bake/error_model.h keeps a
+// margin: printed).
+double gWorstFloat = 0;
+
 // Texel k of a hemisphere table at (mu, r) against the reference, each claim on its own:
-//  - the quadrature bound: the same rule in double on the host (both budgets, default and
-//    refined), against the reference: |estimate - exact| <= its per-texel bound;
-//  - the float allowance: the device's float result is the double result of one of those two
-//    budgets (whichever the device chose) to within kAllowance;
-//  - the whole claim: |device - exact| <= device bound + allowance, and <= the 1e-5 goal.
+//  - the quadrature estimate: the same rule in double on the host (both budgets, default and
+//    refined), against the reference: |estimate - exact| <= its per-texel estimate;
+//  - the float model: the device's float result is the double result of one of those two budgets
+//    (whichever the device chose) to within floatArithmeticError of the texel's largest moment;
+//  - the whole claim, as the bake makes it: |device - exact| <= device estimate + float model,
+//    and <= the 1e-5 goal.
 // A, B and E each, E against the reference's own E (integrated directly, not A + B).
 // Returns the device's error (relative to max(1, |value|)).
 double checkTexel(const KernelTable& t, size_t k, int ndf, int gaf, double mu, double r) {
@@ -59,14 +63,18 @@ double checkTexel(const KernelTable& t, size_t k, int ndf, int gaf, double mu, d
       flt[c] = std::min(flt[c], rel(t.planes[c][k], est[c]));
     }
   }
+  double scale = 0;
+  for (int c = 0; c < 3; ++c) scale = std::max(scale, std::fabs(static_cast<double>(t.planes[c][k])));
+  const double arith = floatArithmeticError(scale);
   double e = 0;
   for (int c = 0; c < 3; ++c) {
-    EXPECT_LE(flt[c], kAllowance) << "float allowance exceeded, channel " << "ABE"[c] << ": device "
-                                  << t.planes[c][k];
+    EXPECT_LE(flt[c], arith) << "float model exceeded, channel " << "ABE"[c] << ": device " << t.planes[c][k];
+    gWorstFloat = std::max(gWorstFloat, flt[c] / arith);
     e = std::max(e, rel(t.planes[c][k], want[c]));
   }
   EXPECT_TRUE(std::isfinite(t.planes[2][k]));
-  EXPECT_LE(e, t.err[k] + kAllowance) << "bound is not honest: value " << t.planes[2][k] << " ref " << ref.e();
+  // (slack: the reference's own accuracy, as above)
+  EXPECT_LE(e, t.err[k] + arith + slack) << "claim is not honest: value " << t.planes[2][k] << " ref " << ref.e();
   EXPECT_LE(e, kGoal) << "value " << t.planes[2][k] << " ref " << ref.e();
   return e;
 }
@@ -84,6 +92,7 @@ TEST_P(PairTest, HemisphereMatchesReference) {
         checkTexel(t, static_cast<size_t>(j) * n + i, ndf, gaf, mu, r);
       }
   }
+  std::printf("%s: largest float error so far %.2f of the float model's bound\n", pairName(ndf, gaf).c_str(), gWorstFloat);
 }
 
 // E_avg at r = 0 (the mirror limit, exact: 2 int_0^1 E(mu, 0) mu dmu with E(mu, 0) = G at the
@@ -110,7 +119,11 @@ TEST_P(PairTest, AverageAlbedoMatchesReference) {
     }
     double e = rel(t.planes[0][j], ref);
     SCOPED_TRACE(pairName(ndf, gaf) + " r=" + std::to_string(r));
-    EXPECT_LE(e, t.err[j] + kAllowance) << "bound is not honest: " << t.planes[0][j] << " ref " << ref;
+    // the claim as the bake makes it (bake.cpp Arith::HemiAvg): the estimate, the nodes' float
+    // error averaged, the host's double sum rounded to float (and the reference's accuracy)
+    double v = t.planes[0][j];
+    double claim = t.err[j] + avgFloatArithmeticError(v, false);
+    EXPECT_LE(e, claim + kReferenceSlack) << "claim is not honest: " << t.planes[0][j] << " ref " << ref;
     EXPECT_LE(e, kGoal) << t.planes[0][j] << " ref " << ref;
   }
 }
@@ -139,6 +152,7 @@ INSTANTIATE_TEST_SUITE_P(AllPairs, PairTest, ::testing::ValuesIn(allPairs()),
                          });
 
 TEST(Kp, KernelMatchesClosedFormsAndReference) {
+  double worstKp = 0;
   for (int ndf = 0; ndf < 4; ++ndf) {
     int n = 9;
     KernelTable t = runner().kp(ndf, n, true);
@@ -146,9 +160,11 @@ TEST(Kp, KernelMatchesClosedFormsAndReference) {
       double r = j / double(n - 1), a = r * r;
       double exact = ndf == 3 ? (r == 0 ? 0 : reference::kp(ndf, r)) : 3.14159265358979323846 * a * a;
       EXPECT_LE(rel(t.planes[0][j], exact), 3e-7) << ndfNames()[ndf] << " r=" << r;  // float rounding
-      EXPECT_LE(rel(t.planes[0][j], exact), t.err[j] + kAllowance);
+      EXPECT_LE(rel(t.planes[0][j], exact), t.err[j] + floatArithmeticError(t.planes[0][j], kKpFloat));
+      if (exact > 0) worstKp = std::max(worstKp, rel(t.planes[0][j], exact) / floatArithmeticError(t.planes[0][j], kKpFloat));
     }
   }
+  std::printf("k_p: largest error %.2f of the float model's bound\n", worstKp);
 }
 
 // The table edges at full resolution: every edge texel of a 128x128 texel-centre table, where

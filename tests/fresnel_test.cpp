@@ -12,6 +12,7 @@
 
 #include "cl/device.h"
 #include "cl/runner.h"
+#include "bake/error_model.h"
 #include "common/brdf_host.h"
 #include "common/material.h"
 #include "common/models.h"
@@ -158,7 +159,11 @@ TEST(Fresnel, AlbedoMatchesReference) {
       worst = std::max(worst, e);
       worstBound = std::max(worstBound, static_cast<double>(kt.err[k]));
       EXPECT_TRUE(std::isfinite(kt.planes[1][k]));
-      EXPECT_LE(e, kt.err[k] + 1e-6 + (mu == 0 ? 1e-7 : 0))
+      // the claim as the bake makes it: the estimate + the float model of the texel's largest moment
+      // (+ the reference's own accuracy at mu = 0, approached from inside)
+      double scale = 0;
+      for (int p = 0; p < 3; ++p) scale = std::max(scale, std::fabs(static_cast<double>(kt.planes[p][k])));
+      EXPECT_LE(e, kt.err[k] + floatArithmeticError(scale) + (mu == 0 ? 1e-7 : 0))
           << c.name << " mu=" << mu << " r=" << r << " device " << kt.planes[1][k] << " ref " << want;
       EXPECT_LE(e, 1e-5) << c.name << " mu=" << mu << " r=" << r;
       EXPECT_LE(kt.err[k], 1e-5) << c.name << " mu=" << mu << " r=" << r << ": the claimed bound";
@@ -182,7 +187,7 @@ TEST(Fresnel, F82SplitSumMatchesDirectAlbedo) {
     double worst = 0;
     for (size_t k = 0; k < direct.planes[1].size(); ++k) {
       double split = f0 * ab.planes[0][k] + ab.planes[1][k] - b * c.planes[1][k];
-      double tol = (1 + f0 + 1 + std::fabs(b)) * 1e-6 + ab.err[k] + c.err[k] + direct.err[k];
+      double tol = (f0 + 1 + std::fabs(b) + 1) * floatArithmeticError(1.0) + ab.err[k] + c.err[k] + direct.err[k];
       worst = std::max(worst, std::fabs(split - direct.planes[1][k]));
       ASSERT_NEAR(split, direct.planes[1][k], tol) << "f0 " << f0 << " tint " << tint << " texel " << k;
     }
@@ -203,7 +208,8 @@ TEST(Fresnel, AverageAlbedoMatchesReference) {
       double r = static_cast<float>((j + 0.5) / n);
       double want = reference::albedoAvg(ndf, gaf, r, w);
       double e = rel(t.planes[0][j], want);
-      EXPECT_LE(e, t.err[j] + 1e-6) << c.name << " r=" << r << " device " << t.planes[0][j] << " ref " << want;
+      EXPECT_LE(e, t.err[j] + avgFloatArithmeticError(t.planes[0][j], false))
+          << c.name << " r=" << r << " device " << t.planes[0][j] << " ref " << want;
       EXPECT_LE(e, 1e-5) << c.name << " r=" << r;
     }
   }

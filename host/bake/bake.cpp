@@ -1,6 +1,5 @@
 #include "bake/bake.h"
 
-#include <Imath/half.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -11,6 +10,7 @@
 
 #include "bake/ashikhmin_textures.h"
 #include "bake/dielectric_bake.h"
+#include "bake/error_model.h"
 #include "bake/interp_probe.h"
 #include "bake/merl_bake.h"
 #include "bake/format_outputs.h"
@@ -24,16 +24,16 @@
 #include "common/format.h"
 #include "common/material.h"
 #include "common/models.h"
+#include "formats/storage.h"
 #include "version.h"
 
 namespace brdfbake {
 
 namespace {
 
-// Allowance for evaluating the integrand in float on the device: the |K15 - G7| bounds cover
-// the quadrature, not rounding. Where the quadrature bound is far below it, kernel-vs-reference
-// errors stay under 3e-7 (tests/accuracy_test.cpp, every pair; brdfbake-bench: 2.3e-7 on the
-// default table); the allowance keeps a 3x margin, and those tests check bound + allowance.
+// Allowance for the diffuse albedo kernel's float arithmetic (its |K15 - G7| bounds cover the
+// quadrature, not rounding; tests/diffuse_test.cpp checks bound + allowance). The hemisphere
+// estimators' float share is modelled per texel instead (bake/error_model.h).
 constexpr double kFloatArithmeticAllowance = 1e-6;
 // brdf.interp-error: the larger of the estimate from the texels and the probes' largest lookup
 // error with this margin (the probes sample the wedge near the corner, not its every point)
@@ -45,6 +45,7 @@ constexpr double kEtaLo = 0.25, kEtaHi = 4.0;
 }  // namespace brdfbake
 namespace brdf64 {
 const double kPhiGrow = HEMI_PHI_GROW;  // RC() needs brdf64::real
+const double kGkSharpC = GK_SHARP_C, kFloorSharp = HEMI_ERR_FLOOR_SHARP, kFloorPlain = HEMI_ERR_FLOOR_PLAIN;
 }
 namespace brdfbake {
 namespace {
@@ -59,10 +60,14 @@ std::string hemisphereMethod() {
   return "h-space quadrature: theta_h by v=-log(1-CDF_ndf) in GK15 panels (breaks " + breaks +
          " and at the visible-domain limits, sqrt ends substituted), phi_h by " + std::to_string(HEMI_TRAP_N) +
          "-interval trapezoid on the full circle or GK15 per smooth arc (graded x" + fmtG(brdf64::kPhiGrow) +
-         " towards the horizon); texels bounded above " + fmtG(HEMI_BAKE_TARGET) +
+         " towards the horizon); texels estimated above " + fmtG(HEMI_BAKE_TARGET) +
          " redone with each outer panel cut at " + cuts + ", " + std::to_string(2 * HEMI_TRAP_N) +
-         " trapezoid intervals, grading x" + fmtG(0.5 * brdf64::kPhiGrow) + " and every arc panel halved; error |K15-G7| + inner bounds + " +
-         fmtG(kFloatArithmeticAllowance) + " float allowance + storage rounding";
+         " trapezoid intervals, grading x" + fmtG(0.5 * brdf64::kPhiGrow) +
+         " and every arc panel halved; error: per texel, the rules' estimates (GK15: |K15-G7| rescaled as QUADPACK's "
+         "qk15 with C=" + fmtG(brdf64::kGkSharpC) + " where the GAF is smooth; trapezoid: |T16-T8|^3/|T8-T4|) + a floor of " +
+         fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorPlain) + " with |K15-G7|) of the value + float arithmetic (" +
+         fmtG(kHemiFloat.k1) + " min(1,|value|) + " + fmtG(kHemiFloat.k0) + ") u (u = 2^-24; charlie (" + fmtG(kSheenFloat.k1) +
+         ", " + fmtG(kSheenFloat.k0) + ")) + storage rounding";
 }
 
 std::string diffuseMethod() {
@@ -81,7 +86,8 @@ std::string methodText(TableKind kind) {
     case TableKind::AlbedoAvg:
       return "E_avg = 2 int E(mu) mu dmu by Gauss-Kronrod 15/31 panels on [0,1] (" + std::to_string(AVG_NODES) +
              " mu nodes each, starting from one panel, the worst halved until the bound is under " +
-             fmtG(KernelRunner::kAvgGoal) + "; sums in double on the host; error |K31-G15| + node bounds), E at each node by " +
+             fmtG(KernelRunner::kAvgGoal) + "; sums in double on the host; error |K31-G15| + node estimates + their float "
+             "arithmetic), E at each node by " +
              hemisphereMethod();
     case TableKind::Kp:
       return "k_p = int e^-v p/D_grid dv by GK15 panels on v in [0," + fmtG(brdf64::HEMI_BREAKS[HEMI_NBREAKS - 1]) +
@@ -89,26 +95,43 @@ std::string methodText(TableKind kind) {
                std::string b;
                for (int k = 0; k < HEMI_NBREAKS; ++k) b += (k ? "," : "") + fmtG(brdf64::HEMI_BREAKS[k]);
                return b;
-             }() + "); error |K15-G7| + " + fmtG(kFloatArithmeticAllowance) + " float allowance";
+             }() + "); error |K15-G7| + float arithmetic " + fmtG(kKpFloat.k1) + " u min(1,|value|) (u = 2^-24) + storage rounding";
     default:
       return hemisphereMethod();
   }
 }
 
-// The largest relative error that storing `v` in the file's pixel type adds.
-double storageError(const std::vector<float>& v, bool half) {
-  double worst = 0;
-  for (float x : v) {
-    double stored = half ? static_cast<double>(static_cast<float>(Imath::half(x))) : static_cast<double>(x);
-    worst = std::max(worst, std::fabs(stored - x) / std::max(1.0, std::fabs(static_cast<double>(x))));
+// How a kernel run's float arithmetic is accounted for in its texels' claims.
+enum class Arith {
+  Hemisphere,  // the hemisphere estimators: floatArithmeticError of the texel's largest moment
+  HemiAvg,     // E_avg: the nodes' float error averaged, plus its host double sum rounded to float
+  Kp,          // k_p's rule
+  HostDouble,  // computed in double on the host: the rounding to float
+  Flat,        // the diffuse kernel: kFloatArithmeticAllowance
+};
+
+// Each texel's claim from one kernel run: its quadrature estimate plus its float arithmetic,
+// merged (the largest) into `claim`.
+void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, bool sheen) {
+  if (claim.empty()) claim.assign(t.err.size(), 0.0);
+  for (size_t x = 0; x < t.err.size(); ++x) {
+    double scale = 0;
+    for (const auto& p : t.planes) scale = std::max(scale, std::fabs(static_cast<double>(p[x])));
+    double arith = 0;
+    switch (a) {
+      case Arith::Hemisphere: arith = floatArithmeticError(scale, hemiFloatModel(sheen)); break;
+      case Arith::HemiAvg: arith = avgFloatArithmeticError(scale, sheen); break;
+      case Arith::Kp: arith = floatArithmeticError(scale, kKpFloat); break;
+      case Arith::HostDouble: arith = floatArithmeticError(scale, kRoundToFloat); break;
+      case Arith::Flat: arith = kFloatArithmeticAllowance; break;
+    }
+    claim[x] = std::max(claim[x], static_cast<double>(t.err[x]) + arith);
   }
-  // float itself: the kernel's double sum rounded to float, at most half an ulp
-  return worst + std::ldexp(1.0, -24);
 }
 
 }  // namespace
 
-TableImage computeTable(KernelRunner& runner, const TableJob& job, double* seconds) {
+TableImage computeTable(KernelRunner& runner, const TableJob& job, double* seconds, std::vector<double>* texelBounds) {
   if (job.kind == TableKind::AshikhminShirley) {  // closed forms on the host, their own metadata
     auto t0 = std::chrono::steady_clock::now();
     TableImage img = ashikhminTexture(job.texture, job.width, job.half);
@@ -126,20 +149,21 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
     auto [x, y] = fc.kernelParams(c);
     return HemiWeight{HEMI_FRESNEL, fc.model, static_cast<float>(x), static_cast<float>(y)};
   };
-  auto mergeErr = [](KernelTable& into, const KernelTable& more) {
-    for (size_t t = 0; t < into.err.size(); ++t) into.err[t] = std::max(into.err[t], more.err[t]);
-  };
+  // each texel's claim (before storage), the largest over the runs that fill the table
+  std::vector<double> claim;
+  const bool sheen = job.ndf >= 0 && isSheenNdf(job.ndf);
   std::string perChannel = fc.channels() == 3 ? "R,G,B" : "R=G=B";
   switch (job.kind) {
     case TableKind::SplitSum:
       kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, {}, job.muSqrt);
+      addClaims(claim, kt, Arith::Hemisphere, sheen);
       img.channels = {"R", "G", "B"};
       axes = "mu,r";
       if (fc.model == FRESNEL_F82_TINT) {
         // C = int f_{F=1} o.h (1 - o.h)^6 (n.i) dw_i: the F82-tint albedo is F0 A + B - b C
         KernelTable c = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid,
                                           HemiWeight{HEMI_F82C, 0, 0, 0}, job.muSqrt);
-        mergeErr(kt, c);
+        addClaims(claim, c, Arith::Hemisphere, sheen);
         img.planes = {kt.planes[0], kt.planes[1], c.planes[1]};
         fresnel = "f82-tint";
         channels = "R=A,G=B,B=C (F82-tint albedo = F0 A + B - b C, b = F_schlick(1/7)(1-tint)/((1/7)(6/7)^6))";
@@ -152,7 +176,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       } else if (job.diffuse >= 0) {
         // the diffuse albedo over (mu, r) in B, as HDRP's pre-integrated FGD table keeps it
         KernelTable d = runner.diffuseAlbedo(job.diffuse, job.width, job.height, 0.0f, 1.0f, job.nodeGrid);
-        mergeErr(kt, d);
+        addClaims(claim, d, Arith::Flat, sheen);
         img.planes = {kt.planes[0], kt.planes[1], d.planes[0]};
         fresnel = "schlick";
         channels = "R=A,G=B,B=E_d (" + diffuseNames()[job.diffuse] + " diffuse albedo at roughness r)";
@@ -168,6 +192,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
         DiffuseAxis ax = diffuseAxis(job.diffuse);
         kt = runner.diffuseAlbedo(job.diffuse, job.width, job.height, static_cast<float>(ax.lo),
                                   static_cast<float>(ax.hi), job.nodeGrid);
+        addClaims(claim, kt, Arith::Flat, sheen);
         img.planes = {kt.planes[0]};
         channels = "R=G=B=E_d (" + diffuseNames()[job.diffuse] + " diffuse albedo, rho = 1)";
         axes = "mu," + ax.name;
@@ -175,6 +200,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       }
       if (fc.isOne()) {
         kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, {}, job.muSqrt);
+        addClaims(claim, kt, Arith::Hemisphere, sheen);
         img.planes = {kt.planes[2]};
         channels = "R=G=B=E";
         break;
@@ -182,8 +208,8 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       for (int c = 0; c < fc.channels(); ++c) {
         KernelTable t = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, weight(c), job.muSqrt);
         img.planes.push_back(t.planes[1]);
+        addClaims(claim, t, Arith::Hemisphere, sheen);
         if (c == 0) kt = t;
-        else mergeErr(kt, t);
       }
       fresnel = fc.describe();
       channels = perChannel + "=E_F (the albedo with Fresnel " + fresnelNames()[fc.model] + ")";
@@ -191,6 +217,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
     case TableKind::AlbedoAvg:
       if (fc.isOne()) {
         kt = runner.albedoAvg(job.ndf, job.gaf, job.width, job.nodeGrid);
+        addClaims(claim, kt, Arith::HemiAvg, sheen);
         img.planes = {kt.planes[0]};
         channels = "R=G=B=E_avg";
         break;
@@ -198,14 +225,15 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       for (int c = 0; c < fc.channels(); ++c) {
         KernelTable t = runner.albedoAvg(job.ndf, job.gaf, job.width, job.nodeGrid, weight(c));
         img.planes.push_back(t.planes[0]);
+        addClaims(claim, t, Arith::HemiAvg, sheen);
         if (c == 0) kt = t;
-        else mergeErr(kt, t);
       }
       fresnel = fc.describe();
       channels = perChannel + "=E_F,avg (2 int E_F(mu) mu dmu with Fresnel " + fresnelNames()[fc.model] + ")";
       break;
     case TableKind::Kp:
       kt = runner.kp(job.ndf, job.width, job.nodeGrid);
+      addClaims(claim, kt, Arith::Kp, sheen);
       img.planes = {kt.planes[0]};
       channels = "R=G=B=k_p";
       break;
@@ -221,6 +249,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
         kt.planes[0][i] = static_cast<float>(fresnelAverage(fc.model, eta, 0, &e));
         kt.err[i] = static_cast<float>(e);
       }
+      addClaims(claim, kt, Arith::HostDouble, sheen);
       img.planes = {kt.planes[0]};
       channels = "R=G=B=F_avg (2 int F(mu) mu dmu)";
       axes = "eta";
@@ -247,14 +276,21 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   // every texel finite, or nothing is written
   for (size_t c = 0; c < img.planes.size(); ++c)
     for (size_t t = 0; t < img.planes[c].size(); ++t)
-      if (!std::isfinite(img.planes[c][t]) || !std::isfinite(kt.err[t]))
+      if (!std::isfinite(img.planes[c][t]) || !std::isfinite(claim[t]))
         throw Error(kExitSoftware, "internal error: " + tableName(job.kind) + " " + modelsOf(job) + " texel (" + std::to_string(t % job.width) + ", " +
                                        std::to_string(t / job.width) + ") is not finite; nothing was written");
-  double quad = 0;
-  for (float e : kt.err) quad = std::max(quad, static_cast<double>(e));
+  // each texel's claim plus the file's storage rounding (formats/storage.h: the largest over the
+  // table, with float's half ulp, which the float model already holds for the kernels' values: 2^-24
+  // counted twice, as format_outputs.cpp expects brdf.error = computation + storageError); the
+  // file's brdf.error is the largest
   double storage = 0;
-  for (auto& p : img.planes) storage = std::max(storage, storageError(p, job.half));
-  double bound = quad + kFloatArithmeticAllowance + storage;
+  for (auto& p : img.planes) storage = std::max(storage, storageError(p, job.half ? Precision::Float16 : Precision::Float32));
+  double bound = 0;
+  for (double& c : claim) {
+    c += storage;
+    bound = std::max(bound, c);
+  }
+  if (texelBounds) *texelBounds = claim;
 
   img.strings["brdf.schema"] = "brdfbake/1";
   img.strings["brdf.table"] = tableName(job.kind);

@@ -17,8 +17,11 @@ struct TableReport {
   double seconds = 0;     // kernel time for this table
 };
 
-// Computes one planned table (kernel + header attributes) without writing it.
-TableImage computeTable(class KernelRunner& runner, const TableJob& job, double* seconds);
+// Computes one planned table (kernel + header attributes) without writing it. texelBounds, when
+// given, receives each texel's claimed bound (relative to max(1, |value|), every stored channel,
+// what the file's brdf.error is the largest of), in the table's texel order.
+TableImage computeTable(class KernelRunner& runner, const TableJob& job, double* seconds,
+                        std::vector<double>* texelBounds = nullptr);
 
 // Runs the plan on its device and writes the files. Returns one report per table.
 std::vector<TableReport> runPlan(const Plan& plan);

@@ -1,3 +1,4 @@
+#include "bake/error_model.h"
 #include "report/convergence.h"
 
 #include <algorithm>
@@ -146,7 +147,9 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
     rg.seconds = best3([&] { t = kr.hemisphereRange(ndf, gaf, n, n, 0, 1, 0, 1, false, hw, L); });
     for (size_t k = 0; k < ref.size(); ++k) {
       rg.error = std::max(rg.error, rel(value(t, k), ref[k]));
-      rg.estimate = std::max(rg.estimate, static_cast<double>(t.err[k]) + 1e-6);  // + the float allowance
+      // + the float arithmetic's share, as the bake claims it (bake/error_model.h)
+      double scale = std::max({std::fabs(t.planes[0][k]), std::fabs(t.planes[1][k]), std::fabs(t.planes[2][k])});
+      rg.estimate = std::max(rg.estimate, static_cast<double>(t.err[k]) + floatArithmeticError(scale, hemiFloatModel(isSheenNdf(ndf))));
     }
     res.rungs.push_back(rg);
   }

@@ -1,3 +1,4 @@
+#include "bake/error_model.h"
 #include "report/energy.h"
 
 #include <algorithm>
@@ -16,7 +17,8 @@ namespace brdfbake {
 
 namespace {
 
-// The kernels' float arithmetic, as in the bake (host/bake/bake.cpp): once per lobe.
+// The diffuse and dielectric kernels' float arithmetic, as in the bake (host/bake/bake.cpp): once per
+// lobe; the specular lobe's is modelled per texel (bake/error_model.h).
 constexpr double kAllowance = 1e-6;
 constexpr size_t kWorstShown = 5;
 
@@ -122,7 +124,9 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
         for (int j = 0; j < n; ++j)
           for (int i = 0; i < n; ++i) {
             size_t k = static_cast<size_t>(j) * n + i;
-            double es = spec.planes[1][k], bs = spec.err[k] * std::max(1.0, std::fabs(es)) + kAllowance;
+            double sscale = std::max({std::fabs(spec.planes[0][k]), std::fabs(spec.planes[1][k]), std::fabs(spec.planes[2][k])});
+            double es = spec.planes[1][k],
+                   bs = (spec.err[k] + floatArithmeticError(sscale, hemiFloatModel(isSheenNdf(ndf)))) * std::max(1.0, std::fabs(es));
             int q0 = followsR ? j : 0, q1 = followsR ? j + 1 : np;
             for (int q = d >= 0 ? q0 : 0; q < (d >= 0 ? q1 : 1); ++q) {
               double ed = 0, bd = 0;

@@ -6,14 +6,38 @@
 #define HEMI_TRAP_N 16         /* trapezoid intervals on the whole circle; refined: twice as many */
 #define HEMI_PHI_GROW RC(4.0)  /* grading of the arc panels towards phimax; refined: halved */
 
-/* GK15 over phi in [lo, hi]: adds the Kronrod values to ka, kb and |K - G| to ea, eb.
- * All 15 nodes in one lane vector on the device (HEMI_GK_N = 16, the last of weight 0). */
+/* Whether the estimate of a GK15 panel's error is sharpened (gk_error in quadrature.h): for the
+ * models whose integrand is analytic on and near every panel. Not for cook-torrance and neumann
+ * (min/max kinks: the panels are split at them, but the outer integrand keeps a 3/2-power end where
+ * a kink enters the azimuth range), nor for kelemen (1/(o.h)^2, a pole close to grazing views)
+ * and none (H ~ 1/mu at grazing, where the horizon's layer is not resolved by the default panels),
+ * nor for the charlie NDF (its lobe on the horizon of h: at mu = 1, r = 5/8 charlie-smith's
+ * rescaled estimate is 3 times below its error): measured, the rescaled estimate misses their
+ * true error by up to 14 times (kelemen, mu = 1/256), |K15 - G7| by at most 1.2 times
+ * (beckmann + none, mu = 1/256, r = 255/256). */
+BRDF_FN int hemi_sharp_estimate(int ndf, int gaf) {
+  return ndf != NDF_CHARLIE && gaf != GAF_NONE && gaf != GAF_COOK_TORRANCE && gaf != GAF_KELEMEN &&
+         gaf != GAF_NEUMANN;
+}
+
+/* Whether the GAF's shadowing of i changes on the scale n.i ~ alpha rather than n.i ~ mu: the Smith
+ * Lambdas (Lambda_i ~ alpha tan(theta_i), so G1(i) goes from ~1 to ~n.i/alpha within n.i ~ alpha)
+ * and Schlick's G1 = n.i/(n.i (1 - k) + k) with k ~ alpha (schlick-ggx-direct's k >= 1/8 is not). */
+BRDF_FN int hemi_gaf_alpha_layer(int gaf) {
+  return gaf == GAF_SMITH || gaf == GAF_SMITH_CORRELATED || gaf == GAF_SMITH_EXACT ||
+         gaf == GAF_SMITH_CORRELATED_EXACT || gaf == GAF_SCHLICK_GGX || gaf == GAF_SCHLICK_BECKMANN;
+}
+
+/* GK15 over phi in [lo, hi]: adds the Kronrod values to ka, kb and their error estimates
+ * (gk_error) to ea, eb. All 15 nodes in one lane vector on the device (HEMI_GK_N = 16, the last of
+ * weight 0); the nodes' values are kept for resasc (a second pass over them). */
 /* sq_lo / sq_hi: an end with a square-root singularity in the integrand (Fresnel's critical
  * angle), made smooth by phi = lo + L y^2 (hi - L (1 - y)^2; the smoothstep for both). */
 BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo,
                          real hi, int sq_lo, int sq_hi, real* ka, real* kb, real* ea, real* eb) {
   real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo), len = hi - lo;
   real sa = RC(0.0), sb = RC(0.0), da = RC(0.0), db = RC(0.0);
+  real va[16], vb[16];
   int k = 0;
   for (; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
     lane_t fa, fb;
@@ -41,31 +65,45 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
     sb += lane_sum(wk * fb);
     da += lane_sum(wd * fa);
     db += lane_sum(wd * fb);
+    lane_store(fa, va, k);
+    lane_store(fb, vb, k);
+  }
+  real ra = RC(0.0), rb = RC(0.0); /* resasc: the Kronrod weights sum to 2, so the mean is sa/2 */
+  int sharp = hemi_sharp_estimate(ndf, gaf);
+  if (sharp) {
+    for (k = 0; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
+      lane_t wk = lane_load(GK15_WKL, k);
+      ra += lane_sum(wk * fabs(lane_load(va, k) - RC(0.5) * sa));
+      rb += lane_sum(wk * fabs(lane_load(vb, k) - RC(0.5) * sb));
+    }
   }
   *ka += sa * hw;
   *kb += sb * hw;
-  *ea += fabs(da) * hw;
-  *eb += fabs(db) * hw;
+  *ea += gk_error(fabs(da), ra, sharp) * hw;
+  *eb += gk_error(fabs(db), rb, sharp) * hw;
 }
 
 /* Trapezoid on the whole half-circle with n = 16 or 32 intervals (nodes cos(k pi/n)): values to
- * ia, ib, the difference from the n/2-interval rule to ea, eb. Lane vectors of nodes, then the
- * remaining node(s) one by one. */
+ * ia, ib, the error estimates from the n/2- and n/4-interval rules (trap_error) to ea, eb. Lane
+ * vectors of nodes, then the remaining node(s) one by one. */
 BRDF_FN void hemi_phi_trap(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, int n,
                            real* ia, real* ib, real* ea, real* eb) {
   BRDF_TABLE real* cs = n == 32 ? COS_PI32 : COS_PI16;
   BRDF_TABLE real* w = n == 32 ? TRAP32_W : TRAP16_W;
   BRDF_TABLE real* d = n == 32 ? TRAP32_D : TRAP16_D;
-  real sa = RC(0.0), sb = RC(0.0), da = RC(0.0), db = RC(0.0);
+  BRDF_TABLE real* d2 = n == 32 ? TRAP32_D2 : TRAP16_D2;
+  real sa = RC(0.0), sb = RC(0.0), da = RC(0.0), db = RC(0.0), ca = RC(0.0), cb = RC(0.0);
   int k = 0;
   for (; k + BRDF_LANES <= n + 1; k += BRDF_LANES) {
     lane_t fa, fb;
     hemi_node(ndf, gaf, p, mu, s, h, sn, lane_load(cs, k), &fa, &fb);
-    lane_t wk = lane_load(w, k), dk = lane_load(d, k);
+    lane_t wk = lane_load(w, k), dk = lane_load(d, k), ek = lane_load(d2, k);
     sa += lane_sum(wk * fa);
     sb += lane_sum(wk * fb);
     da += lane_sum(dk * fa);
     db += lane_sum(dk * fb);
+    ca += lane_sum(ek * fa);
+    cb += lane_sum(ek * fb);
   }
   for (; k <= n; ++k) {
     real fa, fb;
@@ -74,12 +112,14 @@ BRDF_FN void hemi_phi_trap(int ndf, int gaf, BrdfParams p, real mu, real s, Brdf
     sb += w[k] * fb;
     da += d[k] * fa;
     db += d[k] * fb;
+    ca += d2[k] * fa;
+    cb += d2[k] * fb;
   }
   real step = BRDF_PI / (real)n;
   *ia = sa * step;
   *ib = sb * step;
-  *ea = fabs(da) * step;
-  *eb = fabs(db) * step;
+  *ea = trap_error(fabs(da), fabs(ca)) * step;
+  *eb = trap_error(fabs(db), fabs(cb)) * step;
 }
 
 /* int_0^phimax H dphi at fixed theta_h (full: phimax = pi; sn = sin theta_h, sinmax = sin phimax).
@@ -110,8 +150,10 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   /* Breakpoints inside (0, phimax): the GAF's kinks, and on a partial arc a geometric grading
    * towards phimax. There n.i -> 0, and many GAFs (kelemen's 1/(o.h)^2, Smith's n.i/(n.o Lambda_i),
    * cook-torrance) change on the scale where n.i ~ mu, a layer of width
-   * dphi ~ mu/(2 c s sn sin(phimax)) (n.i = 2 c s sn (cos phi - c0)). Panels of width dphi 4^k
-   * resolve it with a fixed number of nodes per panel, whatever mu. */
+   * dphi ~ mu/(2 c s sn sin(phimax)) (n.i = 2 c s sn (cos phi - c0)); the Smith and Schlick GAFs
+   * on the scale n.i ~ alpha where that is finer (hemi_gaf_alpha_layer: at alpha << mu the mu
+   * layer left it inside one panel, which both under-resolved it and inflated |K15 - G7| there).
+   * Panels of width dphi 4^k resolve it with a fixed number of nodes per panel, whatever mu. */
   real br[16];
   int nb = 0;
   for (int k = 0; k < nk; ++k) {
@@ -122,7 +164,9 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   }
   if (!full) {
     real den = s * sn * fmax(sinmax, RC(1e-30));
-    real layer = mu / (RC(2.0) * h.c * den);
+    /* the GAF's own scale, where it is finer: a Smith G1(i) changes where n.i ~ alpha */
+    real ni_scale = hemi_gaf_alpha_layer(gaf) && p.alpha > RC(0.0) ? fmin(mu, p.alpha) : mu;
+    real layer = ni_scale / (RC(2.0) * h.c * den);
     /* Fresnel of eta slightly above 1 changes on the scale o.h ~ sqrt(eta^2 - 1), which the arc
      * reaches near its horizon end (o.h = mu/(2c) there, 0 at mu = 0): grade from that scale too. */
     real fs = fresnel_soft_scale(p.moments, p.fresnel, p.fr_x);

@@ -18,7 +18,8 @@
  * the whole hw circle the integrand is smooth, even and 2 pi-periodic, so the trapezoid rule on
  * 16 intervals converges geometrically (error from its 8-interval subset, cosines from a table); on a
  * partial arc, and around the kinks of min/max GAFs (gaf_kinks), GK15 on each smooth piece.
- * The returned error is |K15 - G7| on the outer axis plus the weighted inner errors: a bound.
+ * The returned error is the outer rule's estimate (gk_error: |K15 - G7| rescaled where the
+ * integrand is analytic) plus the weighted inner estimates, plus a floor (hemisphere_moments).
  * Cost: libm calls are counted per lane vector, not per node (compat.h): one float16 pass prepares
  * an outer panel's 15 nodes (expm1, sqrt, atan2, exp), one evaluates a GK15 azimuth panel (cos and
  * the integrand), and one plus a single node the 16-interval trapezoid (cosines from a table).
@@ -26,7 +27,10 @@
 #define HEMI_VCAP RC(40.0)
 /* The budgets (the brdf.method text is generated from these: host/bake/bake.cpp); the azimuth's,
  * HEMI_TRAP_N and HEMI_PHI_GROW, are in azimuth.h. */
-#define HEMI_BAKE_TARGET 8e-6  /* texels whose bound exceeds this are refined (1e-5 with allowances) */
+/* Texels whose estimate (floor included) exceeds this are refined: the bake's tables claim their
+ * largest estimate plus the float arithmetic (host/bake), so the target keeps the claim within a
+ * small factor of the float rounding a table cannot avoid (~3e-7 at values near 1). */
+#define HEMI_BAKE_TARGET 3e-7
 
 typedef struct HemiResult {
   acc_t a, b;         /* A (F0 coefficient) and B (F90 bias), E = A + B */
@@ -40,7 +44,8 @@ BRDF_CONST real HEMI_REFINE_CUTS[4] = {RC(0.0625), RC(0.25), RC(0.75), RC(0.9375
 #define HEMI_NBREAKS 5
 BRDF_CONST real HEMI_BREAKS[HEMI_NBREAKS] = {RC(1.0), RC(3.0), RC(7.0), RC(15.0), RC(40.0)};
 
-/* One GK15 panel [a, b] of the outer v axis, added to res (values, |K15 - G7| + inner bounds).
+/* One GK15 panel [a, b] of the outer v axis, added to res (values; errors: the outer rule's
+ * estimate, gk_error, plus the inner rules' estimates weighted as the values are).
  * partial: the panel lies in [v1, v2], where the phi arc ends at phimax(v) < pi.
  * sq_lo / sq_hi: the panel starts at v1 / ends at v2, where the inner integral has a square-root
  * end; v = a + L y^2, b - L (1-y)^2, or the smoothstep for both, make it smooth in y.
@@ -94,6 +99,7 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
     lane_store(RC(0.5) * jac * exp(-v) * ndf_weight(ndf, p, c, s2), nw, k);
   }
   real pka = RC(0.0), pkb = RC(0.0), pda = RC(0.0), pdb = RC(0.0), pea = RC(0.0), peb = RC(0.0);
+  real ga[15], gb[15]; /* the nodes' values, for resasc */
   for (int k = 0; k < 15; ++k) {
     BrdfAngle h;
     h.c = nc[k];
@@ -102,6 +108,8 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
     real ia, ib, ea, eb;
     hemi_phi(ndf, gaf, p, mu, s, h, nsn[k], !partial, nphi[k], nsin[k], refine, &ia, &ib, &ea, &eb);
     real wk = GK15_WKL[k] * nw[k], wd = GK15_WDL[k] * nw[k];
+    ga[k] = nw[k] * ia;
+    gb[k] = nw[k] * ib;
     pka += wk * ia;
     pkb += wk * ib;
     pda += wd * ia;
@@ -109,10 +117,17 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
     pea += wk * ea;
     peb += wk * eb;
   }
+  int sharp = hemi_sharp_estimate(ndf, gaf);
+  real ra = RC(0.0), rb = RC(0.0); /* resasc (the Kronrod weights sum to 2: the mean is pka/2) */
+  if (sharp)
+    for (int k = 0; k < 15; ++k) {
+      ra += GK15_WKL[k] * fabs(ga[k] - RC(0.5) * pka);
+      rb += GK15_WKL[k] * fabs(gb[k] - RC(0.5) * pkb);
+    }
   res->a += pka;
   res->b += pkb;
-  res->err_a += fabs(pda) + pea;
-  res->err_b += fabs(pdb) + peb;
+  res->err_a += gk_error(fabs(pda), ra, sharp) + pea;
+  res->err_b += gk_error(fabs(pdb), rb, sharp) + peb;
 }
 
 /* One outer panel [cur, next] at budget `refine` (hemisphere_moments explains the levels). */
@@ -143,12 +158,13 @@ BRDF_FN void hemi_panel(int ndf, int gaf, BrdfParams p, real mu, real s, real t1
 /* The charlie NDF's estimator (kernels/integrate/sheen.h, after this file). */
 BRDF_FN HemiResult sheen_moments(int gaf, BrdfParams p, real mu, int refine);
 
-/* refine = 0: the default budget; 1: every outer panel cut in five graded pieces, 32 trapezoid
+/* The rule's values and its error estimates (no floor: hemisphere_moments adds it).
+ * refine = 0: the default budget; 1: every outer panel cut in five graded pieces, 32 trapezoid
  * intervals, phi grading x2 instead of x4 and every phi panel halved. Levels L >= 2 (the
  * convergence report's ladder, not the bake): each of the five pieces cut in 2^(L-1), every phi
  * panel in 2^L, and GK15 panels on whole circles too. Callers refine the few texels whose bound is above
  * their target (hemisphere_moments_to). */
-BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, int refine) {
+BRDF_FN HemiResult hemi_rule(int ndf, int gaf, BrdfParams p, real mu, int refine) {
   if (ndf == NDF_CHARLIE) return sheen_moments(gaf, p, mu, refine);
   HemiResult res;
   res.a = 0;
@@ -284,30 +300,78 @@ BRDF_FN BrdfParams brdf_params(int ndf, int gaf, real r) {
   return p;
 }
 
-/* The texel's claimed bound: the largest of the bounds on A, B and E = A + B, each relative to
- * max(1, |value|), plus HEMI_ERR_FLOOR. |K15 - G7| and the inner differences estimate the error
- * rather than bound it; where they are tiny the true error can exceed them (measured, in double,
- * over every edge texel of a 128x128 table and a 9x9 node grid for all 44 pairs: at most 1.7e-7,
- * beckmann + none at mu = 1/256, r = 255/256, where the estimate is 1.8e-8). The floor covers that
- * (tests/accuracy_test.cpp checks every such texel against the reference). */
-#define HEMI_ERR_FLOOR RC(2e-7)
+/* The estimators' floor. The rules' estimates are estimates, not bounds: where they are tiny the
+ * true error can exceed them. Measured in double against the converged rule (refine = 3), as the
+ * texel's claim is made (the largest error over A, B, E against the largest estimate), over every
+ * pair's 128x128 edge texels, every 32nd texel inside and 9x9 node grids (mu = 0, 1 and r = 0, 1),
+ * both budgets: the sharpened estimates (hemi_sharp_estimate) miss by at most 5.5e-8 of the value
+ * (blinn-phong + smith-exact at mu = 0.47, r = 255/256; 4.4e-8 for ggx + smith at mu = 255/256,
+ * r = 0.11, where G1(i) changes within n.i ~ alpha of i's horizon next to v1, inside one outer
+ * panel), |K15 - G7| by at most 1.6e-7 of it (beckmann + none, mu = 1/256, r = 255/256). The
+ * floor, relative to the value so that it scales with what the rule integrates (and averages into
+ * E_avg's node bounds), covers both; tests/accuracy_test.cpp checks every such texel against the
+ * reference. */
+#define HEMI_ERR_FLOOR_SHARP RC(1e-7)
+#define HEMI_ERR_FLOOR_PLAIN RC(2e-7)
+/* The exact Smith Lambda of blinn-phong and the gaussian is tabulated (smith_tables.h): its G1 is
+ * within 3.3e-7 of the exact one (docs/MODELS.md "Exact Smith Lambda", the generator's largest at
+ * the table's cell centres), so G = G1(o) G1(i) or 1/(1 + Lambda_o + Lambda_i) within twice that:
+ * the integrand, and the moments, within 6.6e-7 of their values. */
+#define HEMI_SMITH_TABLE_ERR RC(6.6e-7)
+
+/* The model's own approximation: the tabulated exact Lambda's share (0 where it is exact). */
+BRDF_FN real hemi_model_error(int ndf, int gaf) {
+  int tabulated = (gaf == GAF_SMITH_EXACT || gaf == GAF_SMITH_CORRELATED_EXACT) &&
+                  (ndf == NDF_BLINN_PHONG || ndf == NDF_GAUSSIAN);
+  return tabulated ? HEMI_SMITH_TABLE_ERR : RC(0.0);
+}
+/* Adds f times the moments' magnitudes to their error estimates. */
+BRDF_FN void hemi_add_relative(real f, HemiResult* h) {
+  h->err_a += f * fabs(h->a);
+  h->err_b += f * fabs(h->b);
+}
+BRDF_FN real hemi_floor(int ndf, int gaf) {
+  return hemi_sharp_estimate(ndf, gaf) ? HEMI_ERR_FLOOR_SHARP : HEMI_ERR_FLOOR_PLAIN;
+}
+
+/* The moments at (mu, alpha) and their error estimates (absolute): the rule's, the floor, and the
+ * model's own approximation (the tabulated exact Lambda). */
+BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, int refine) {
+  HemiResult h = hemi_rule(ndf, gaf, p, mu, refine);
+  hemi_add_relative(hemi_floor(ndf, gaf) + hemi_model_error(ndf, gaf), &h);
+  return h;
+}
+
+/* The texel's error estimate: the largest of those of A, B and E = A + B, each relative to
+ * max(1, |value|). The quadrature's alone: the float arithmetic's share of a table's error is
+ * host/bake's (bake/error_model.h). */
 BRDF_FN real hemi_rel_error(HemiResult h) {
   real a = (real)h.a, b = (real)h.b, e = (real)(h.a + h.b);
   real ea = (real)h.err_a / fmax(RC(1.0), fabs(a));
   real eb = (real)h.err_b / fmax(RC(1.0), fabs(b));
   real ee = (real)(h.err_a + h.err_b) / fmax(RC(1.0), fabs(e));
-  return fmax(ee, fmax(ea, eb)) + HEMI_ERR_FLOOR;
+  return fmax(ee, fmax(ea, eb));
 }
 
-/* The default budget, and the refined one where its bound exceeds `target` (the refined result
- * is kept if its bound is smaller); level >= 0 instead: that budget alone. Written as a loop
- * around a single call so that a kernel compiles one copy of the estimator, not one per budget. */
+/* The models whose estimate stays |K15 - G7| (hemi_sharp_estimate) are refined only above this:
+ * that estimate is 10 to 1000 times their true error, and the refined budget's own stays near
+ * 1e-6 to 3e-6 where it is pessimistic, so a lower target would refine 30% (at 1e-6) to 70% (at
+ * 3e-7) of a table, 4 to 9 times the time, for claims at most 3 to 6 times tighter. */
+#define HEMI_PLAIN_TARGET RC(8e-6)
+
+/* The default budget, and the refined one where its estimate exceeds `target` (the refined result
+ * is kept if its estimate is smaller); level >= 0 instead: that budget alone (= hemisphere_moments).
+ * The tabulated Lambda's error is added after the choice: no budget reduces it. Written as a loop
+ * around a single call of the rule so that a kernel compiles one copy of the estimator, not one
+ * per budget (PoCL inlines every call site). */
 BRDF_FN HemiResult hemisphere_moments_at(int ndf, int gaf, BrdfParams p, real mu, int level, real target) {
+  if (!hemi_sharp_estimate(ndf, gaf)) target = fmax(target, HEMI_PLAIN_TARGET);
   HemiResult h;
   real e = RC(0.0);
   int first = 1;
   for (int l = level < 0 ? 0 : level;; l = 1) {
-    HemiResult c = hemisphere_moments(ndf, gaf, p, mu, l);
+    HemiResult c = hemi_rule(ndf, gaf, p, mu, l);
+    hemi_add_relative(hemi_floor(ndf, gaf), &c);
     real ec = hemi_rel_error(c);
     if (first || ec < e) {
       h = c;
@@ -316,6 +380,7 @@ BRDF_FN HemiResult hemisphere_moments_at(int ndf, int gaf, BrdfParams p, real mu
     if (level >= 0 || !first || e <= target) break;
     first = 0;
   }
+  hemi_add_relative(hemi_model_error(ndf, gaf), &h);
   return h;
 }
 BRDF_FN HemiResult hemisphere_moments_to(int ndf, int gaf, BrdfParams p, real mu, real target) {
@@ -332,11 +397,23 @@ BRDF_FN HemiResult hemisphere_moments_to(int ndf, int gaf, BrdfParams p, real mu
  * (alpha = 1e-10) reaches it to O(1e-10), far inside float rounding; the mirror formula at h = n
  * would give 0 there (o.h = mu = 0, where chi+ zeroes G). */
 #define HEMI_CORNER_R RC(1e-5)
+/* How far that is from the limit: E(0, r) - E(0, 0+) is O(alpha) = 1e-10 of the value, and where the
+ * limit is 0 (every GAF that vanishes at grazing) the value itself, measured at most 5e-11; the
+ * corner's estimate adds 1e-9 (relative to max(1, |value|)). */
+#define HEMI_CORNER_ERR RC(1e-9)
 BRDF_FN BrdfParams hemisphere_texel_params(int ndf, int gaf, real mu, real r) {
   return brdf_params(ndf, gaf, (mu <= RC(0.0) && r <= RC(0.0)) ? HEMI_CORNER_R : r);
 }
+BRDF_FN void hemi_add_corner(real mu, real r, HemiResult* h) {
+  if (mu <= RC(0.0) && r <= RC(0.0)) {
+    h->err_a += HEMI_CORNER_ERR * fmax(RC(1.0), fabs((real)h->a));
+    h->err_b += HEMI_CORNER_ERR * fmax(RC(1.0), fabs((real)h->b));
+  }
+}
 BRDF_FN HemiResult hemisphere_texel(int ndf, int gaf, real mu, real r, real target) {
-  return hemisphere_moments_to(ndf, gaf, hemisphere_texel_params(ndf, gaf, mu, r), mu, target);
+  HemiResult h = hemisphere_moments_to(ndf, gaf, hemisphere_texel_params(ndf, gaf, mu, r), mu, target);
+  hemi_add_corner(mu, r, &h);
+  return h;
 }
 /* The same with another weight (BrdfParams: moments, fresnel, fr_x, fr_y). */
 BRDF_FN HemiResult hemisphere_texel_weighted(int ndf, int gaf, real mu, real r, real target, int moments,
@@ -346,5 +423,7 @@ BRDF_FN HemiResult hemisphere_texel_weighted(int ndf, int gaf, real mu, real r, 
   p.fresnel = fresnel;
   p.fr_x = fr_x;
   p.fr_y = fr_y;
-  return hemisphere_moments_to(ndf, gaf, p, mu, target);
+  HemiResult h = hemisphere_moments_to(ndf, gaf, p, mu, target);
+  hemi_add_corner(mu, r, &h);
+  return h;
 }

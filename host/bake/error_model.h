@@ -1,0 +1,65 @@
+// The float arithmetic's share of a baked table's error. The kernels compute in float; their
+// per-texel estimates (kernels/integrate/hemisphere.h hemi_rel_error, ndf_kp) cover the
+// quadrature only. What float adds is modelled per texel from the texel's own values:
+//
+//   float error <= (K1 min(1, |v|) + K0) u,   relative to max(1, |value|) like every bound,
+//
+// u = 2^-24 (float's unit roundoff), v the largest magnitude among the moments the kernel returned
+// for the texel (A, B, A + B; E for E_avg, k_p). Every node's value carries a few rounding errors of
+// relative size u (its libm calls, its position and weight, the lane sums); the moments are sums of
+// non-negative terms, perfectly conditioned (Higham, Accuracy and Stability of Numerical
+// Algorithms, 2nd ed., 2002, sec. 4.2), so those add up to a small multiple of u times the value:
+// K1. K0 is the part that does not scale with the value: where the integrand vanishes at a horizon
+// (n.i -> 0) it is formed from cosines that cancel (n.i = 2 (o.h) c - mu), whose absolute error u
+// is not reduced by the small factor that makes the value small (at mu = 1, r = 7/8 the implicit
+// GAF's E = 0.35 carries 2.95 u). A = H - H w is a difference too, but its absolute error stays
+// within u H <= u E: hence the largest moment as the scale.
+// K1 and K0 are measured, not derived: the device's value against the same rule evaluated in
+// double on the host (brdf64), at every texel of tests/accuracy_test.cpp's sweeps for every NDF/GAF
+// pair (9x9 node grids with mu = 0, 1 and r = 0, 1; 8x8 texel centres; every edge texel of a
+// 128x128 table), both budgets. On PoCL's CPU device the largest is 6.2 u (gaussian + smith-exact,
+// mu = 1/256), and (6 s + 3) u is at least 1.35 times the error at every one of those texels; the
+// charlie NDF reaches 29 u (charlie-smith, whose G/(n.o) grows without bound towards grazing
+// views, at mu = 1/256), (36 s + 4) u at least 1.38 times. tests/accuracy_test.cpp and
+// tests/sheen_test.cpp check the models at every such texel. Another OpenCL device with less
+// accurate built-ins (OpenCL 1.2 allows up to 4 ulp for exp and cos) may exceed them:
+// `brdfbake-bench --bounds --device NAME` measures the float part there.
+#pragma once
+#include <algorithm>
+#include <cmath>
+
+namespace brdfbake {
+
+constexpr double kUnitRoundoff = 0x1p-24;
+
+struct FloatModel {
+  double k1, k0;  // error <= (k1 min(1, |v|) + k0) u
+};
+// The hemisphere estimators (split-sum, albedo and their Fresnel-weighted moments, E_avg's nodes).
+constexpr FloatModel kHemiFloat{6, 3};
+// The same for the charlie (sheen) NDF.
+constexpr FloatModel kSheenFloat{36, 4};
+// k_p: one GK15 sum of e^-v times a constant (the gaussian: a smooth ratio) per panel; measured at
+// most 2.3 u min(1, |v|) on the 9-node and 32-texel grids of the four NDFs.
+constexpr FloatModel kKpFloat{4, 0};
+// A value computed in double on the host and stored as float: half an ulp, at most u |v|.
+constexpr FloatModel kRoundToFloat{1, 0};
+
+inline FloatModel hemiFloatModel(bool sheen) { return sheen ? kSheenFloat : kHemiFloat; }
+
+// The float arithmetic's bound for a texel whose largest moment is `scale`, relative to
+// max(1, |value|).
+inline double floatArithmeticError(double scale, FloatModel m = kHemiFloat) {
+  return (m.k1 * std::min(1.0, std::fabs(scale)) + m.k0) * kUnitRoundoff;
+}
+
+// E_avg = sum_k w_k E_k with weights w_k = 2 mu_k (Kronrod weight) >= 0 that sum to 1. Node k's
+// absolute error is within (k1 E_k + k0 max(1, E_k)) u, so the sum's within
+// (k1 E_avg + k0 (1 + E_avg)) u, relative to max(1, E_avg) within (k1 min(1, E_avg) + 2 k0) u;
+// the host forms the sum in double and rounds it to float once (u |E_avg| more).
+inline double avgFloatArithmeticError(double value, bool sheen) {
+  FloatModel m = hemiFloatModel(sheen);
+  return floatArithmeticError(value, FloatModel{m.k1 + kRoundToFloat.k1, 2 * m.k0});
+}
+
+}  // namespace brdfbake
