@@ -122,7 +122,7 @@ TEST_P(PairTest, AverageAlbedoMatchesReference) {
     // the claim as the bake makes it (bake.cpp Arith::HemiAvg): the estimate, the nodes' float
     // error averaged, the host's double sum rounded to float (and the reference's accuracy)
     double v = t.planes[0][j];
-    double claim = t.err[j] + avgFloatArithmeticError(v, false);
+    double claim = t.err[j] + avgFloatArithmeticError(v, ndf, gaf);
     EXPECT_LE(e, claim + kReferenceSlack) << "claim is not honest: " << t.planes[0][j] << " ref " << ref;
     EXPECT_LE(e, kGoal) << t.planes[0][j] << " ref " << ref;
   }

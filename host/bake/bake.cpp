@@ -67,7 +67,8 @@ std::string hemisphereMethod() {
          "qk15 with C=" + fmtG(brdf64::kGkSharpC) + " where the GAF is smooth; trapezoid: |T16-T8|^3/|T8-T4|) + a floor of " +
          fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorPlain) + " with |K15-G7|) of the value + float arithmetic (" +
          fmtG(kHemiFloat.k1) + " min(1,|value|) + " + fmtG(kHemiFloat.k0) + ") u (u = 2^-24; charlie (" + fmtG(kSheenFloat.k1) +
-         ", " + fmtG(kSheenFloat.k0) + ")) + storage rounding";
+         ", " + fmtG(kSheenFloat.k0) + "), with charlie-smith (" + fmtG(kCharlieSmithFloat.k1) + ", " +
+         fmtG(kCharlieSmithFloat.k0) + ")) + storage rounding";
 }
 
 std::string diffuseMethod() {
@@ -112,15 +113,15 @@ enum class Arith {
 
 // Each texel's claim from one kernel run: its quadrature estimate plus its float arithmetic,
 // merged (the largest) into `claim`.
-void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, bool sheen) {
+void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int ndf, int gaf) {
   if (claim.empty()) claim.assign(t.err.size(), 0.0);
   for (size_t x = 0; x < t.err.size(); ++x) {
     double scale = 0;
     for (const auto& p : t.planes) scale = std::max(scale, std::fabs(static_cast<double>(p[x])));
     double arith = 0;
     switch (a) {
-      case Arith::Hemisphere: arith = floatArithmeticError(scale, hemiFloatModel(sheen)); break;
-      case Arith::HemiAvg: arith = avgFloatArithmeticError(scale, sheen); break;
+      case Arith::Hemisphere: arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf)); break;
+      case Arith::HemiAvg: arith = avgFloatArithmeticError(scale, ndf, gaf); break;
       case Arith::Kp: arith = floatArithmeticError(scale, kKpFloat); break;
       case Arith::HostDouble: arith = floatArithmeticError(scale, kRoundToFloat); break;
       case Arith::Flat: arith = kFloatArithmeticAllowance; break;
@@ -151,19 +152,18 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   };
   // each texel's claim (before storage), the largest over the runs that fill the table
   std::vector<double> claim;
-  const bool sheen = job.ndf >= 0 && isSheenNdf(job.ndf);
   std::string perChannel = fc.channels() == 3 ? "R,G,B" : "R=G=B";
   switch (job.kind) {
     case TableKind::SplitSum:
       kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, {}, job.muSqrt);
-      addClaims(claim, kt, Arith::Hemisphere, sheen);
+      addClaims(claim, kt, Arith::Hemisphere, job.ndf, job.gaf);
       img.channels = {"R", "G", "B"};
       axes = "mu,r";
       if (fc.model == FRESNEL_F82_TINT) {
         // C = int f_{F=1} o.h (1 - o.h)^6 (n.i) dw_i: the F82-tint albedo is F0 A + B - b C
         KernelTable c = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid,
                                           HemiWeight{HEMI_F82C, 0, 0, 0}, job.muSqrt);
-        addClaims(claim, c, Arith::Hemisphere, sheen);
+        addClaims(claim, c, Arith::Hemisphere, job.ndf, job.gaf);
         img.planes = {kt.planes[0], kt.planes[1], c.planes[1]};
         fresnel = "f82-tint";
         channels = "R=A,G=B,B=C (F82-tint albedo = F0 A + B - b C, b = F_schlick(1/7)(1-tint)/((1/7)(6/7)^6))";
@@ -176,7 +176,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       } else if (job.diffuse >= 0) {
         // the diffuse albedo over (mu, r) in B, as HDRP's pre-integrated FGD table keeps it
         KernelTable d = runner.diffuseAlbedo(job.diffuse, job.width, job.height, 0.0f, 1.0f, job.nodeGrid);
-        addClaims(claim, d, Arith::Flat, sheen);
+        addClaims(claim, d, Arith::Flat, job.ndf, job.gaf);
         img.planes = {kt.planes[0], kt.planes[1], d.planes[0]};
         fresnel = "schlick";
         channels = "R=A,G=B,B=E_d (" + diffuseNames()[job.diffuse] + " diffuse albedo at roughness r)";
@@ -192,7 +192,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
         DiffuseAxis ax = diffuseAxis(job.diffuse);
         kt = runner.diffuseAlbedo(job.diffuse, job.width, job.height, static_cast<float>(ax.lo),
                                   static_cast<float>(ax.hi), job.nodeGrid);
-        addClaims(claim, kt, Arith::Flat, sheen);
+        addClaims(claim, kt, Arith::Flat, job.ndf, job.gaf);
         img.planes = {kt.planes[0]};
         channels = "R=G=B=E_d (" + diffuseNames()[job.diffuse] + " diffuse albedo, rho = 1)";
         axes = "mu," + ax.name;
@@ -200,7 +200,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       }
       if (fc.isOne()) {
         kt = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, {}, job.muSqrt);
-        addClaims(claim, kt, Arith::Hemisphere, sheen);
+        addClaims(claim, kt, Arith::Hemisphere, job.ndf, job.gaf);
         img.planes = {kt.planes[2]};
         channels = "R=G=B=E";
         break;
@@ -208,7 +208,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       for (int c = 0; c < fc.channels(); ++c) {
         KernelTable t = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, weight(c), job.muSqrt);
         img.planes.push_back(t.planes[1]);
-        addClaims(claim, t, Arith::Hemisphere, sheen);
+        addClaims(claim, t, Arith::Hemisphere, job.ndf, job.gaf);
         if (c == 0) kt = t;
       }
       fresnel = fc.describe();
@@ -217,7 +217,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
     case TableKind::AlbedoAvg:
       if (fc.isOne()) {
         kt = runner.albedoAvg(job.ndf, job.gaf, job.width, job.nodeGrid);
-        addClaims(claim, kt, Arith::HemiAvg, sheen);
+        addClaims(claim, kt, Arith::HemiAvg, job.ndf, job.gaf);
         img.planes = {kt.planes[0]};
         channels = "R=G=B=E_avg";
         break;
@@ -225,7 +225,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       for (int c = 0; c < fc.channels(); ++c) {
         KernelTable t = runner.albedoAvg(job.ndf, job.gaf, job.width, job.nodeGrid, weight(c));
         img.planes.push_back(t.planes[0]);
-        addClaims(claim, t, Arith::HemiAvg, sheen);
+        addClaims(claim, t, Arith::HemiAvg, job.ndf, job.gaf);
         if (c == 0) kt = t;
       }
       fresnel = fc.describe();
@@ -233,7 +233,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       break;
     case TableKind::Kp:
       kt = runner.kp(job.ndf, job.width, job.nodeGrid);
-      addClaims(claim, kt, Arith::Kp, sheen);
+      addClaims(claim, kt, Arith::Kp, job.ndf, job.gaf);
       img.planes = {kt.planes[0]};
       channels = "R=G=B=k_p";
       break;
@@ -249,7 +249,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
         kt.planes[0][i] = static_cast<float>(fresnelAverage(fc.model, eta, 0, &e));
         kt.err[i] = static_cast<float>(e);
       }
-      addClaims(claim, kt, Arith::HostDouble, sheen);
+      addClaims(claim, kt, Arith::HostDouble, job.ndf, job.gaf);
       img.planes = {kt.planes[0]};
       channels = "R=G=B=F_avg (2 int F(mu) mu dmu)";
       axes = "eta";

@@ -18,15 +18,18 @@
 // double on the host (brdf64), at every texel of tests/accuracy_test.cpp's sweeps for every NDF/GAF
 // pair (9x9 node grids with mu = 0, 1 and r = 0, 1; 8x8 texel centres; every edge texel of a
 // 128x128 table), both budgets. On PoCL's CPU device the largest is 6.2 u (gaussian + smith-exact,
-// mu = 1/256), and (6 s + 3) u is at least 1.35 times the error at every one of those texels; the
-// charlie NDF reaches 29 u (charlie-smith, whose G/(n.o) grows without bound towards grazing
-// views, at mu = 1/256), (36 s + 4) u at least 1.38 times. tests/accuracy_test.cpp and
+// mu = 1/256), and (6 s + 3) u is at least 1.35 times the error at every one of those texels. The
+// charlie NDF with charlie-smith reaches 29 u (its G/(n.o) grows without bound towards grazing
+// views; mu = 1/256), (36 s + 4) u at least 1.38 times; with its other visibilities 6.5 u (none,
+// s = 0.55), (10 s + 4) u at least 1.45 times. tests/accuracy_test.cpp and
 // tests/sheen_test.cpp check the models at every such texel. Another OpenCL device with less
 // accurate built-ins (OpenCL 1.2 allows up to 4 ulp for exp and cos) may exceed them:
 // `brdfbake-bench --bounds --device NAME` measures the float part there.
 #pragma once
 #include <algorithm>
 #include <cmath>
+
+#include "common/brdf_host.h"
 
 namespace brdfbake {
 
@@ -37,15 +40,19 @@ struct FloatModel {
 };
 // The hemisphere estimators (split-sum, albedo and their Fresnel-weighted moments, E_avg's nodes).
 constexpr FloatModel kHemiFloat{6, 3};
-// The same for the charlie (sheen) NDF.
-constexpr FloatModel kSheenFloat{36, 4};
+// The same for the charlie (sheen) NDF: with charlie-smith, and with its other visibilities.
+constexpr FloatModel kCharlieSmithFloat{36, 4};
+constexpr FloatModel kSheenFloat{10, 4};
 // k_p: one GK15 sum of e^-v times a constant (the gaussian: a smooth ratio) per panel; measured at
 // most 2.3 u min(1, |v|) on the 9-node and 32-texel grids of the four NDFs.
 constexpr FloatModel kKpFloat{4, 0};
 // A value computed in double on the host and stored as float: half an ulp, at most u |v|.
 constexpr FloatModel kRoundToFloat{1, 0};
 
-inline FloatModel hemiFloatModel(bool sheen) { return sheen ? kSheenFloat : kHemiFloat; }
+inline FloatModel hemiFloatModel(int ndf, int gaf) {
+  if (ndf != NDF_CHARLIE) return kHemiFloat;
+  return gaf == GAF_CHARLIE_SMITH ? kCharlieSmithFloat : kSheenFloat;
+}
 
 // The float arithmetic's bound for a texel whose largest moment is `scale`, relative to
 // max(1, |value|).
@@ -57,8 +64,8 @@ inline double floatArithmeticError(double scale, FloatModel m = kHemiFloat) {
 // absolute error is within (k1 E_k + k0 max(1, E_k)) u, so the sum's within
 // (k1 E_avg + k0 (1 + E_avg)) u, relative to max(1, E_avg) within (k1 min(1, E_avg) + 2 k0) u;
 // the host forms the sum in double and rounds it to float once (u |E_avg| more).
-inline double avgFloatArithmeticError(double value, bool sheen) {
-  FloatModel m = hemiFloatModel(sheen);
+inline double avgFloatArithmeticError(double value, int ndf, int gaf) {
+  FloatModel m = hemiFloatModel(ndf, gaf);
   return floatArithmeticError(value, FloatModel{m.k1 + kRoundToFloat.k1, 2 * m.k0});
 }
 

@@ -91,7 +91,7 @@ struct Runner {
     KernelTable t = k.hemisphereRange(NDF_CHARLIE, gaf, 1, 1, fm, fm, fr, fr, true);
     double ref = fm == 0 && !std::isnan(limit) ? limit : reference::sheenAlbedo(gaf, fr, fm);
     add(sweep, "charlie+" + gafNames()[gaf] + " mu=" + fmt4(fm) + " r=" + fmt4(fr), t.planes[2][0], t.err[0],
-        floatArithmeticError(scaleOf(t), kSheenFloat), ref,
+        floatArithmeticError(scaleOf(t), hemiFloatModel(NDF_CHARLIE, gaf)), ref,
         fm == 0 || fr == 0 ? kLimitSlack : 3e-9, limitText, limit, tol);
   }
 };
@@ -182,7 +182,7 @@ std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine
     float fr = static_cast<float>(r);
     KernelTable t = kr.albedoAvg(ggx, sc, 1, true, {}, fr, fr);
     run.add("albedo-avg r -> 0", "ggx+smith-correlated r=" + fmt4(fr), t.planes[0][0], t.err[0],
-            avgFloatArithmeticError(scaleOf(t), false), reference::albedoAvg(ggx, sc, fr), 1e-7, "E_avg -> 1", 1.0, r == 0 ? 1e-6 : 1e-3);
+            avgFloatArithmeticError(scaleOf(t), ggx, sc), reference::albedoAvg(ggx, sc, fr), 1e-7, "E_avg -> 1", 1.0, r == 0 ? 1e-6 : 1e-3);
   }
 
   // sheen (charlie): alpha -> 0 puts the lobe on the horizon, below every incident direction: E -> 0

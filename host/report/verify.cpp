@@ -44,7 +44,7 @@ VerifyCheck whiteFurnace(const KernelTable& t, int n, bool node, ReportPage& pag
       double mu = node ? i / (n - 1.0) : (i + 0.5) / n, r = node ? j / (n - 1.0) : (j + 0.5) / n;
       // the claim as the bake makes it: the estimate + the float model of the texel's largest moment
       double scale = std::max({std::fabs(t.planes[0][k]), std::fabs(t.planes[1][k]), std::fabs(t.planes[2][k])});
-      double arith = floatArithmeticError(scale, hemiFloatModel(isSheenNdf(ndf)));
+      double arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf));
       double e = t.planes[2][k], bound = (t.err[k] + arith) * std::max(1.0, std::fabs(e));
       csv += fmt4(mu) + " " + fmt4(r) + " " + std::to_string(e) + " " + fmt4(bound) + "\n";
       if (e > maxE) {

@@ -37,7 +37,11 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
                          real hi, int sq_lo, int sq_hi, real* ka, real* kb, real* ea, real* eb) {
   real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo), len = hi - lo;
   real sa = RC(0.0), sb = RC(0.0), da = RC(0.0), db = RC(0.0);
-  real va[16], vb[16];
+  real ra = RC(0.0), rb = RC(0.0); /* resasc: the Kronrod weights sum to 2, so the mean is sa/2 */
+  int sharp = hemi_sharp_estimate(ndf, gaf);
+#if BRDF_LANES < HEMI_GK_N
+  real va[16], vb[16]; /* the host: one node per pass, kept for resasc's second pass */
+#endif
   int k = 0;
   for (; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
     lane_t fa, fb;
@@ -65,18 +69,24 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
     sb += lane_sum(wk * fb);
     da += lane_sum(wd * fa);
     db += lane_sum(wd * fb);
+#if BRDF_LANES < HEMI_GK_N
     lane_store(fa, va, k);
     lane_store(fb, vb, k);
   }
-  real ra = RC(0.0), rb = RC(0.0); /* resasc: the Kronrod weights sum to 2, so the mean is sa/2 */
-  int sharp = hemi_sharp_estimate(ndf, gaf);
   if (sharp) {
-    for (k = 0; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
-      lane_t wk = lane_load(GK15_WKL, k);
-      ra += lane_sum(wk * fabs(lane_load(va, k) - RC(0.5) * sa));
-      rb += lane_sum(wk * fabs(lane_load(vb, k) - RC(0.5) * sb));
+    for (k = 0; k < HEMI_GK_N; ++k) {
+      ra += GK15_WKL[k] * fabs(va[k] - RC(0.5) * sa);
+      rb += GK15_WKL[k] * fabs(vb[k] - RC(0.5) * sb);
     }
   }
+#else
+    /* the device: every node is in this one pass, so the mean is known already */
+    if (sharp) {
+      ra = lane_sum(wk * fabs(fa - RC(0.5) * sa));
+      rb = lane_sum(wk * fabs(fb - RC(0.5) * sb));
+    }
+  }
+#endif
   *ka += sa * hw;
   *kb += sb * hw;
   *ea += gk_error(fabs(da), ra, sharp) * hw;

@@ -354,7 +354,7 @@ BRDF_FN real hemi_rel_error(HemiResult h) {
 }
 
 /* The models whose estimate stays |K15 - G7| (hemi_sharp_estimate) are refined only above this:
- * that estimate is 10 to 1000 times their true error, and the refined budget's own stays near
+ * that estimate is a median 20 to 500 times their true error, and the refined budget's own stays near
  * 1e-6 to 3e-6 where it is pessimistic, so a lower target would refine 30% (at 1e-6) to 70% (at
  * 3e-7) of a table, 4 to 9 times the time, for claims at most 3 to 6 times tighter. */
 #define HEMI_PLAIN_TARGET RC(8e-6)
