@@ -242,7 +242,7 @@ TEST(Albedo, PerTexelBoundsArePinned) {
     int ndf, gaf;
     double mu, r, bound0, bound1;
   } pins[] = {
-      {NDF_GGX, GAF_SMITH_CORRELATED, 0.5, 0.5, 7.618754e-09, 2.770908e-12},
+      {NDF_GGX, GAF_SMITH_CORRELATED, 0.5, 0.5, 1.648719e-08, 7.142144e-12},
       {NDF_GGX, GAF_COOK_TORRANCE, 0.125, 1, 1.138070e-07, 2.748461e-09},
       {NDF_BECKMANN, GAF_KELEMEN, 0.00390625, 0.42578125, 9.062691e-07, 1.039144e-06},
       {NDF_GAUSSIAN, GAF_SMITH, 0.9, 0.3, 5.518552e-07, 3.125004e-12},

@@ -44,7 +44,7 @@ constexpr double kEtaLo = 0.25, kEtaHi = 4.0;
 }  // namespace
 }  // namespace brdfbake
 namespace brdf64 {
-const double kPhiGrow = HEMI_PHI_GROW;  // RC() needs brdf64::real
+const double kPhiGrow = HEMI_PHI_GROW, kPhiGrowOwn = HEMI_PHI_GROW_OWN;  // RC() needs brdf64::real
 const double kGkSharpC = GK_SHARP_C, kFloorSharp = HEMI_ERR_FLOOR_SHARP, kFloorPlain = HEMI_ERR_FLOOR_PLAIN;
 }
 namespace brdfbake {
@@ -60,9 +60,10 @@ std::string hemisphereMethod() {
   return "h-space quadrature: theta_h by v=-log(1-CDF_ndf) in GK15 panels (breaks " + breaks +
          " and at the visible-domain limits, sqrt ends substituted), phi_h by " + std::to_string(HEMI_TRAP_N) +
          "-interval trapezoid on the full circle or GK15 per smooth arc (graded x" + fmtG(brdf64::kPhiGrow) +
-         " towards the horizon); texels estimated above " + fmtG(HEMI_BAKE_TARGET) +
+         " towards the horizon from n.i = mu; Smith and Schlick GAFs x" + fmtG(brdf64::kPhiGrowOwn) +
+         " from n.i = 2 alpha); texels estimated above " + fmtG(HEMI_BAKE_TARGET) +
          " redone with each outer panel cut at " + cuts + ", " + std::to_string(2 * HEMI_TRAP_N) +
-         " trapezoid intervals, grading x" + fmtG(0.5 * brdf64::kPhiGrow) +
+         " trapezoid intervals, grading halved" +
          " and every arc panel halved; error: per texel, the rules' estimates (GK15: |K15-G7| rescaled as QUADPACK's "
          "qk15 with C=" + fmtG(brdf64::kGkSharpC) + " where the GAF is smooth; trapezoid: |T16-T8|^3/|T8-T4|) + a floor of " +
          fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorPlain) + " with |K15-G7|) of the value + float arithmetic (" +

@@ -5,6 +5,7 @@
 /* The azimuth's budgets (the brdf.method text is generated from these: host/bake/bake.cpp). */
 #define HEMI_TRAP_N 16         /* trapezoid intervals on the whole circle; refined: twice as many */
 #define HEMI_PHI_GROW RC(4.0)  /* grading of the arc panels towards phimax; refined: halved */
+#define HEMI_PHI_GROW_OWN RC(16.0) /* the same from the Smith/Schlick layer n.i ~ alpha (hemi_phi) */
 
 /* Whether the estimate of a GK15 panel's error is sharpened (gk_error in quadrature.h): for the
  * models whose integrand is analytic on and near every panel. Not for cook-torrance and neumann
@@ -174,14 +175,22 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   }
   if (!full) {
     real den = s * sn * fmax(sinmax, RC(1e-30));
-    /* the GAF's own scale, where it is finer: a Smith G1(i) changes where n.i ~ alpha */
-    real ni_scale = hemi_gaf_alpha_layer(gaf) && p.alpha > RC(0.0) ? fmin(mu, p.alpha) : mu;
-    real layer = ni_scale / (RC(2.0) * h.c * den);
+    /* The Smith and Schlick GAFs change on their own scale, n.i ~ alpha, whatever mu: graded from
+     * n.i = 2 alpha with panels growing 16-fold (G1(i) ~ n.i/(n.i + alpha) has its pole a panel's
+     * width or more outside each panel, so GK15 converges there like rho^-30 with rho >= 2).
+     * Measured on the default 128^2 ggx + smith-correlated split sum against grading from
+     * min(mu, alpha) 4-fold: 0.72 of the kernel time, 57 instead of 53 texels refined; from alpha
+     * 16-fold: 108 refined (the first panel sits inside the G1 transition), from 4 alpha: 274. */
+    int own = hemi_gaf_alpha_layer(gaf) && p.alpha > RC(0.0);
+    real layer = (own ? RC(2.0) * p.alpha : mu) / (RC(2.0) * h.c * den);
     /* Fresnel of eta slightly above 1 changes on the scale o.h ~ sqrt(eta^2 - 1), which the arc
      * reaches near its horizon end (o.h = mu/(2c) there, 0 at mu = 0): grade from that scale too. */
     real fs = fresnel_soft_scale(p.moments, p.fresnel, p.fr_x);
-    if (fs > RC(0.0)) layer = layer > RC(0.0) ? fmin(layer, fs / den) : fs / den;
-    real grow = refine ? RC(0.5) * HEMI_PHI_GROW : HEMI_PHI_GROW;
+    if (fs > RC(0.0)) {
+      layer = layer > RC(0.0) ? fmin(layer, fs / den) : fs / den;
+      own = 0; /* Fresnel's layer is not G1's: the 4-fold grading */
+    }
+    real grow = (refine ? RC(0.5) : RC(1.0)) * (own ? HEMI_PHI_GROW_OWN : HEMI_PHI_GROW);
     for (real d = layer; d < RC(0.5) * phimax && nb < 16; d *= grow) br[nb++] = phimax - d;
   }
   sort_ascending(br, nb);
