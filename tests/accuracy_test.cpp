@@ -34,6 +34,9 @@ class PairTest : public ::testing::TestWithParam<std::pair<int, int>> {};
 // The largest float error seen, as a fraction of the model's bound (bake/error_model.h keeps a
 // margin: printed).
 double gWorstFloat = 0;
+// The rules' largest miss (true error minus the rule's own estimate, before the floor), relative to
+// the value, over the pairs with sharpened estimates: what the floor (HEMI_ERR_FLOOR_SHARP) covers.
+double gWorstMiss = 0;
 
 // Texel k of a hemisphere table at (mu, r) against the reference, each claim on its own:
 //  - the quadrature estimate: the same rule in double on the host (both budgets, default and
@@ -56,12 +59,22 @@ double checkTexel(const KernelTable& t, size_t k, int ndf, int gaf, double mu, d
   for (int refine : {0, 1}) {
     brdf64::HemiResult h = brdf64::hemisphere_moments(ndf, gaf, p, mu, refine);
     const double est[3] = {h.a, h.b, h.a + h.b}, bound = brdf64::hemi_rel_error(h);
+    const double ruleOnly = brdf64::hemi_rel_error(brdf64::hemi_rule(ndf, gaf, p, mu, refine));
+    const bool sharp = brdf64::hemi_sharp_estimate(ndf, gaf) && brdf64::hemi_model_error(ndf, gaf) == 0;
     for (int c = 0; c < 3; ++c) {
       EXPECT_LE(rel(est[c], want[c]), bound + slack)
           << "quadrature bound not honest, budget " << refine << ", channel " << "ABE"[c] << ": estimate "
           << est[c] << " exact " << want[c] << " bound " << bound;
       flt[c] = std::min(flt[c], rel(t.planes[c][k], est[c]));
     }
+    // as the claim is made: the largest error over A, B, E against the largest estimate, per unit
+    // of the floor's share of the claim (the floor times the largest |v| / max(1, |v|))
+    double worstErr = 0, share = 0;
+    for (int c = 0; c < 3; ++c) {
+      worstErr = std::max(worstErr, rel(est[c], want[c]));
+      share = std::max(share, std::fabs(est[c]) / std::max(1.0, std::fabs(est[c])));
+    }
+    if (sharp && mu > 0 && share > 0) gWorstMiss = std::max(gWorstMiss, (worstErr - ruleOnly) / share);
   }
   double scale = 0;
   for (int c = 0; c < 3; ++c) scale = std::max(scale, std::fabs(static_cast<double>(t.planes[c][k])));
@@ -92,7 +105,9 @@ TEST_P(PairTest, HemisphereMatchesReference) {
         checkTexel(t, static_cast<size_t>(j) * n + i, ndf, gaf, mu, r);
       }
   }
-  std::printf("%s: largest float error so far %.2f of the float model's bound\n", pairName(ndf, gaf).c_str(), gWorstFloat);
+  std::printf("%s: largest float error so far %.2f of the float model's bound; largest miss of a sharpened "
+              "estimate so far %.2e of the value (floor %.0e)\n",
+              pairName(ndf, gaf).c_str(), gWorstFloat, gWorstMiss, double(brdf64::hemi_floor(NDF_GGX, GAF_SMITH)));
 }
 
 // E_avg at r = 0 (the mirror limit, exact: 2 int_0^1 E(mu, 0) mu dmu with E(mu, 0) = G at the
@@ -179,7 +194,8 @@ TEST_P(PairTest, EveryEdgeTexelOfA128TableMatchesReference) {
       if (i != 0 && j != 0 && i != n - 1 && j != n - 1) continue;
       worst = std::max(worst, checkTexel(t, static_cast<size_t>(j) * n + i, ndf, gaf, (i + 0.5) / n, (j + 0.5) / n));
     }
-  std::printf("%s + %s: largest edge-texel error %.2e\n", ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), worst);
+  std::printf("%s + %s: largest edge-texel error %.2e; largest miss of a sharpened estimate so far %.2e of the value\n",
+              ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), worst, gWorstMiss);
 }
 
 // Stiff parameters: Blinn-Phong exponents past 1e9 (r = 1/128 and below) at grazing views, every

@@ -310,7 +310,10 @@ BRDF_FN BrdfParams brdf_params(int ndf, int gaf, real r) {
  * panel), |K15 - G7| by at most 1.6e-7 of it (beckmann + none, mu = 1/256, r = 255/256). The
  * floor, relative to the value so that it scales with what the rule integrates (and averages into
  * E_avg's node bounds), covers both; tests/accuracy_test.cpp checks every such texel against the
- * reference. */
+ * reference. Re-measured there with the arcs graded from n.i = 2 alpha (azimuth.h), against the
+ * reference, over every non-exact-Smith pair's 9x9 node and 8x8 centre grids and 128x128 edge
+ * texels, both budgets: the sharpened estimates miss by at most 4.4e-8 of the value (7.5e-9 away
+ * from the edges); `./tests/brdfbake-accuracy-tests` prints it. */
 #define HEMI_ERR_FLOOR_SHARP RC(1e-7)
 #define HEMI_ERR_FLOOR_PLAIN RC(2e-7)
 /* The exact Smith Lambda of blinn-phong and the gaussian is tabulated (smith_tables.h): its G1 is
