@@ -106,7 +106,8 @@ std::string methodText(TableKind kind) {
 // How a kernel run's float arithmetic is accounted for in its texels' claims.
 enum class Arith {
   Hemisphere,  // the hemisphere estimators: floatArithmeticError of the texel's largest moment
-  HemiAvg,     // E_avg: the nodes' float error averaged, plus its host double sum rounded to float
+  HemiAvg,     // E_avg: its float error (measured on the averages), plus its double sum rounded to float
+  HemiAvgFresnel,  // E_F,avg: the nodes' float error bounds averaged, plus the rounding
   Kp,          // k_p's rule
   HostDouble,  // computed in double on the host: the rounding to float
   Flat,        // the diffuse kernel: kFloatArithmeticAllowance
@@ -123,6 +124,7 @@ void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int nd
     switch (a) {
       case Arith::Hemisphere: arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf)); break;
       case Arith::HemiAvg: arith = avgFloatArithmeticError(scale, ndf, gaf); break;
+      case Arith::HemiAvgFresnel: arith = avgFloatArithmeticError(scale, ndf, gaf, true); break;
       case Arith::Kp: arith = floatArithmeticError(scale, kKpFloat); break;
       case Arith::HostDouble: arith = floatArithmeticError(scale, kRoundToFloat); break;
       case Arith::Flat: arith = kFloatArithmeticAllowance; break;
@@ -226,7 +228,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       for (int c = 0; c < fc.channels(); ++c) {
         KernelTable t = runner.albedoAvg(job.ndf, job.gaf, job.width, job.nodeGrid, weight(c));
         img.planes.push_back(t.planes[0]);
-        addClaims(claim, t, Arith::HemiAvg, job.ndf, job.gaf);
+        addClaims(claim, t, Arith::HemiAvgFresnel, job.ndf, job.gaf);
         if (c == 0) kt = t;
       }
       fresnel = fc.describe();
