@@ -33,8 +33,8 @@ struct AvgPanel {
   double a, b;
   double k = 0, d = 0, inner = 0;  // K31, K31 - G15, node bounds
   double resasc = 0;                // len sum w_k |f_k - mean f| (QUADPACK's resasc)
-  bool sharp = false;               // gk_error's rescaling of |K31 - G15| (where E(mu) is analytic)
-  double bound() const { return brdf64::gk_error(std::fabs(d), resasc, sharp) + inner; }
+  // sharp: gk_error's rescaling of |K31 - G15| (where E(mu) is analytic)
+  double bound(bool sharp) const { return brdf64::gk_error(std::fabs(d), resasc, sharp) + inner; }
 };
 }  // namespace
 
@@ -82,18 +82,17 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
           p.inner += len * brdf64::AVG_WK[i] * 2 * mu * out[1][x];
         }
         for (int i = 0; i < m; ++i) p.resasc += len * brdf64::AVG_WK[i] * std::fabs(f[i] - p.k / len);
-        p.sharp = sharp;
       }
       fresh[j].clear();
       double sum = 0, bound = 0;
       for (const AvgPanel& p : panels[j]) {
         sum += p.k;
-        bound += p.bound();
+        bound += p.bound(sharp);
       }
       if (bound / std::max(1.0, std::fabs(sum)) <= kAvgGoal || panels[j].size() >= static_cast<size_t>(kMaxPanels))
         continue;
       auto worst = std::max_element(panels[j].begin(), panels[j].end(),
-                                    [](const AvgPanel& l, const AvgPanel& r) { return l.bound() < r.bound(); });
+                                    [&](const AvgPanel& l, const AvgPanel& r) { return l.bound(sharp) < r.bound(sharp); });
       double mid = 0.5 * (worst->a + worst->b), hi = worst->b;
       *worst = AvgPanel{worst->a, mid};
       fresh[j].push_back(static_cast<size_t>(worst - panels[j].begin()));
@@ -111,7 +110,7 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
     std::sort(panels[j].begin(), panels[j].end(), [](const AvgPanel& l, const AvgPanel& r) { return l.a < r.a; });
     for (const AvgPanel& p : panels[j]) {  // in order of mu
       sum += p.k;
-      bound += p.bound();
+      bound += p.bound(sharp);
     }
     t.planes[0][j] = static_cast<float>(sum);
     t.err[j] = static_cast<float>(bound / std::max(1.0, std::fabs(sum)));
