@@ -35,8 +35,9 @@ class PairTest : public ::testing::TestWithParam<std::pair<int, int>> {};
 // margin: printed).
 double gWorstFloat = 0;
 // The rules' largest miss (true error minus the rule's own estimate, before the floor), relative to
-// the value, over the pairs with sharpened estimates: what the floor (HEMI_ERR_FLOOR_SHARP) covers.
-double gWorstMiss = 0;
+// the value, over the pairs with sharpened estimates, per budget (default, refined): what the
+// floors (HEMI_ERR_FLOOR_SHARP, HEMI_ERR_FLOOR_REFINED) cover.
+double gWorstMiss[2] = {0, 0};
 
 // Texel k of a hemisphere table at (mu, r) against the reference, each claim on its own:
 //  - the quadrature estimate: the same rule in double on the host (both budgets, default and
@@ -74,11 +75,11 @@ double checkTexel(const KernelTable& t, size_t k, int ndf, int gaf, double mu, d
       worstErr = std::max(worstErr, rel(est[c], want[c]));
       share = std::max(share, std::fabs(est[c]) / std::max(1.0, std::fabs(est[c])));
     }
-    if (sharp && mu > 0 && share > 0) gWorstMiss = std::max(gWorstMiss, (worstErr - ruleOnly) / share);
+    if (sharp && mu > 0 && share > 0) gWorstMiss[refine] = std::max(gWorstMiss[refine], (worstErr - ruleOnly) / share);
   }
   double scale = 0;
   for (int c = 0; c < 3; ++c) scale = std::max(scale, std::fabs(static_cast<double>(t.planes[c][k])));
-  const double arith = floatArithmeticError(scale);
+  const double arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf));
   double e = 0;
   for (int c = 0; c < 3; ++c) {
     EXPECT_LE(flt[c], arith) << "float model exceeded, channel " << "ABE"[c] << ": device " << t.planes[c][k];
@@ -106,8 +107,10 @@ TEST_P(PairTest, HemisphereMatchesReference) {
       }
   }
   std::printf("%s: largest float error so far %.2f of the float model's bound; largest miss of a sharpened "
-              "estimate so far %.2e of the value (floor %.0e)\n",
-              pairName(ndf, gaf).c_str(), gWorstFloat, gWorstMiss, double(brdf64::hemi_floor(NDF_GGX, GAF_SMITH)));
+              "estimate so far %.2e of the value at the default budget (floor %.0e), %.2e at the refined one "
+              "(floor %.0e)\n",
+              pairName(ndf, gaf).c_str(), gWorstFloat, gWorstMiss[0], double(brdf64::hemi_floor(NDF_GGX, GAF_SMITH, 0)),
+              gWorstMiss[1], double(brdf64::hemi_floor(NDF_GGX, GAF_SMITH, 1)));
 }
 
 // E_avg at r = 0 (the mirror limit, exact: 2 int_0^1 E(mu, 0) mu dmu with E(mu, 0) = G at the
@@ -194,8 +197,9 @@ TEST_P(PairTest, EveryEdgeTexelOfA128TableMatchesReference) {
       if (i != 0 && j != 0 && i != n - 1 && j != n - 1) continue;
       worst = std::max(worst, checkTexel(t, static_cast<size_t>(j) * n + i, ndf, gaf, (i + 0.5) / n, (j + 0.5) / n));
     }
-  std::printf("%s + %s: largest edge-texel error %.2e; largest miss of a sharpened estimate so far %.2e of the value\n",
-              ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), worst, gWorstMiss);
+  std::printf("%s + %s: largest edge-texel error %.2e; largest miss of a sharpened estimate so far %.2e of the value "
+              "(default budget), %.2e (refined)\n",
+              ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), worst, gWorstMiss[0], gWorstMiss[1]);
 }
 
 // Stiff parameters: Blinn-Phong exponents past 1e9 (r = 1/128 and below) at grazing views, every

@@ -240,7 +240,11 @@ TEST(GlPipeline, EveryFormatAndPrecisionSamplesWithinItsPredictedError) {
       }
       EXPECT_LT(f.exact, 4e-6) << path;  // the same texels and weights, float arithmetic
       EXPECT_LT(f.hardware, filter) << path;
-      EXPECT_GT(stated, 0) << path << ": no brdf.error.storage";
+      // float32 holds the computed floats exactly: its stated rounding is 0, but it is stated
+      EXPECT_TRUE(k.format == "exr" || l.header.strings.count("brdf.error.storage")) << path << ": no brdf.error.storage";
+      if (precision != "float32") {
+        EXPECT_GT(stated, 0) << path << ": brdf.error.storage states no rounding";
+      }
       EXPECT_LE(f.storage, stated + 1e-6) << path;  // the rounding the file states, no more
       if (precision != "float32") {
         EXPECT_GT(f.storage, stated / 4) << path << ": not the stated rounding";

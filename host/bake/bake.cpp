@@ -45,7 +45,8 @@ constexpr double kEtaLo = 0.25, kEtaHi = 4.0;
 }  // namespace brdfbake
 namespace brdf64 {
 const double kPhiGrow = HEMI_PHI_GROW, kPhiGrowOwn = HEMI_PHI_GROW_OWN;  // RC() needs brdf64::real
-const double kGkSharpC = GK_SHARP_C, kFloorSharp = HEMI_ERR_FLOOR_SHARP, kFloorPlain = HEMI_ERR_FLOOR_PLAIN;
+const double kGkSharpC = GK_SHARP_C, kFloorSharp = HEMI_ERR_FLOOR_SHARP, kFloorPlain = HEMI_ERR_FLOOR_PLAIN,
+             kFloorRefined = HEMI_ERR_FLOOR_REFINED;
 }
 namespace brdfbake {
 namespace {
@@ -53,6 +54,7 @@ namespace {
 // brdf.method, generated from the constants the estimators use (kernels/integrate/hemisphere.h),
 // so that it describes the code that ran.
 std::string hemisphereMethod() {
+  auto model = [](FloatModel m) { return "(" + fmtG(m.k1) + ", " + fmtG(m.k0) + ")"; };
   std::string breaks;
   for (int k = 0; k < HEMI_NBREAKS; ++k) breaks += (k ? "," : "") + fmtG(brdf64::HEMI_BREAKS[k]);
   std::string cuts;
@@ -66,10 +68,11 @@ std::string hemisphereMethod() {
          " trapezoid intervals, grading halved" +
          " and every arc panel halved; error: per texel, the rules' estimates (GK15: |K15-G7| rescaled as QUADPACK's "
          "qk15 with C=" + fmtG(brdf64::kGkSharpC) + " where the GAF is smooth; trapezoid: |T16-T8|^3/|T8-T4|) + a floor of " +
-         fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorPlain) + " with |K15-G7|) of the value + float arithmetic (" +
-         fmtG(kHemiFloat.k1) + " min(1,|value|) + " + fmtG(kHemiFloat.k0) + ") u (u = 2^-24; charlie (" + fmtG(kSheenFloat.k1) +
-         ", " + fmtG(kSheenFloat.k0) + "), with charlie-smith (" + fmtG(kCharlieSmithFloat.k1) + ", " +
-         fmtG(kCharlieSmithFloat.k0) + ")) + storage rounding";
+         fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorRefined) + " at the refined budget; " +
+         fmtG(brdf64::kFloorPlain) + " with |K15-G7|) of the value + float arithmetic (K1 min(1,|value|) + K0) u (u = 2^-24; " +
+         "(K1, K0) = " + model(kHemiFloatGgx) + " ggx, " + model(kHemiFloatBeckmann) + " beckmann, " +
+         model(kHemiFloatBlinnPhong) + " blinn-phong, " + model(kHemiFloat) + " gaussian and every Fresnel-weighted moment, " +
+         model(kSheenFloat) + " charlie, " + model(kCharlieSmithFloat) + " with charlie-smith) + storage rounding";
 }
 
 std::string diffuseMethod() {
@@ -106,6 +109,7 @@ std::string methodText(TableKind kind) {
 // How a kernel run's float arithmetic is accounted for in its texels' claims.
 enum class Arith {
   Hemisphere,  // the hemisphere estimators: floatArithmeticError of the texel's largest moment
+  HemiWeighted,  // the same with a Fresnel weight (E_F, F82-tint's C)
   HemiAvg,     // E_avg: its float error (measured on the averages), plus its double sum rounded to float
   HemiAvgFresnel,  // E_F,avg: the nodes' float error bounds averaged, plus the rounding
   Kp,          // k_p's rule
@@ -123,6 +127,7 @@ void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int nd
     double arith = 0;
     switch (a) {
       case Arith::Hemisphere: arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf)); break;
+      case Arith::HemiWeighted: arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf, true)); break;
       case Arith::HemiAvg: arith = avgFloatArithmeticError(scale, ndf, gaf); break;
       case Arith::HemiAvgFresnel: arith = avgFloatArithmeticError(scale, ndf, gaf, true); break;
       case Arith::Kp: arith = floatArithmeticError(scale, kKpFloat); break;
@@ -166,7 +171,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
         // C = int f_{F=1} o.h (1 - o.h)^6 (n.i) dw_i: the F82-tint albedo is F0 A + B - b C
         KernelTable c = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid,
                                           HemiWeight{HEMI_F82C, 0, 0, 0}, job.muSqrt);
-        addClaims(claim, c, Arith::Hemisphere, job.ndf, job.gaf);
+        addClaims(claim, c, Arith::HemiWeighted, job.ndf, job.gaf);
         img.planes = {kt.planes[0], kt.planes[1], c.planes[1]};
         fresnel = "f82-tint";
         channels = "R=A,G=B,B=C (F82-tint albedo = F0 A + B - b C, b = F_schlick(1/7)(1-tint)/((1/7)(6/7)^6))";
@@ -211,7 +216,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       for (int c = 0; c < fc.channels(); ++c) {
         KernelTable t = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, weight(c), job.muSqrt);
         img.planes.push_back(t.planes[1]);
-        addClaims(claim, t, Arith::Hemisphere, job.ndf, job.gaf);
+        addClaims(claim, t, Arith::HemiWeighted, job.ndf, job.gaf);
         if (c == 0) kt = t;
       }
       fresnel = fc.describe();
@@ -283,9 +288,8 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
         throw Error(kExitSoftware, "internal error: " + tableName(job.kind) + " " + modelsOf(job) + " texel (" + std::to_string(t % job.width) + ", " +
                                        std::to_string(t / job.width) + ") is not finite; nothing was written");
   // each texel's claim plus the file's storage rounding (formats/storage.h: the largest over the
-  // table, with float's half ulp, which the float model already holds for the kernels' values: 2^-24
-  // counted twice, as format_outputs.cpp expects brdf.error = computation + storageError); the
-  // file's brdf.error is the largest
+  // table; 0 in float32, which holds the kernels' floats exactly, and whose rounding to float every
+  // claim above already holds); the file's brdf.error is the largest
   double storage = 0;
   for (auto& p : img.planes) storage = std::max(storage, storageError(p, job.half ? Precision::Float16 : Precision::Float32));
   double bound = 0;

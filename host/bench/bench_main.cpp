@@ -95,7 +95,7 @@ int allPairs(KernelRunner& runner, int n, int stride) {
         size_t x = static_cast<size_t>(texels[k].second) * n + texels[k].first;
         // the claim as the bake makes it: the estimate + the float model (bake/error_model.h)
         double scale = std::max({std::fabs(t.planes[0][x]), std::fabs(t.planes[1][x]), std::fabs(t.planes[2][x])});
-        double b = t.err[x] + floatArithmeticError(scale);
+        double b = t.err[x] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf));
         worst = std::max(worst, err[k]);
         bound = std::max(bound, b);
         if (err[k] > b) ++bad;

@@ -105,10 +105,11 @@ TableRow measure(KernelRunner& runner, TableKind kind, int ndf, int gaf, int n, 
     t.r = (j + 0.5) / n;
     reference::Moments ref = reference::albedo(ndf, gaf, t.r, t.mu);
     const double want[3] = {ref.a, ref.b, ref.e()};
-    // split-sum: R = A, G = B, B = A + B; albedo: E in every channel
-    const int c0 = kind == TableKind::SplitSum ? 0 : 2;
+    // split-sum: R = A, G = B, B = A + B; albedo, and sheen's split sum (F = 1): E in every channel
+    const bool moments = kind == TableKind::SplitSum && !isSheenNdf(ndf);
+    const int c0 = moments ? 0 : 2;
     double got[3];
-    for (int c = 0; c < 3; ++c) got[c] = img.planes[kind == TableKind::SplitSum ? c : 0][x];
+    for (int c = 0; c < 3; ++c) got[c] = img.planes[moments ? c : 0][x];
     for (int c = c0; c < 3; ++c) {
       t.truth = std::max(t.truth, rel(got[c], want[c]));
       t.value = std::max(t.value, std::fabs(got[c]));

@@ -109,7 +109,7 @@ double storageError(const std::vector<float>& values, Precision p) {
   if (p != Precision::Float32)
     for (float x : values)
       worst = std::max(worst, std::fabs(storedValue(x, p) - x) / std::max(1.0, std::fabs(static_cast<double>(x))));
-  return worst + std::ldexp(1.0, -24);
+  return worst;
 }
 
 double storageErrorBound(Precision p) {
