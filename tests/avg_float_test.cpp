@@ -49,7 +49,8 @@ TEST_P(AvgFloat, AverageFloatErrorWithinItsModel) {
       for (float r : rs)
         for (int i = 0; i < m; ++i) {
           float mu = static_cast<float>(brdf64::AVG_MU[i]);
-          nodes.push_back({{mu, r, static_cast<float>(brdf64::AVG_NODE_TARGET), 0.0f}});
+          double share = brdf64::avg_node_target(i) * brdf64::AVG_MU[i] / mu;
+          nodes.push_back({{mu, r, static_cast<float>(std::max(HEMI_BAKE_TARGET, share)), 0.0f}});
         }
       std::vector<std::vector<float>> out = runner().hemisphereNodes(ndf, gaf, nodes);
       for (size_t j = 0; j < rs.size(); ++j) {

@@ -5,11 +5,12 @@
  * and its estimate |sum AVG_WD 2 mu E|. The rule itself (panels, halving, bounds) runs on the host,
  * host/cl/runner_avg.cpp, which hands the device its nodes (kernels/bake.cl, mu_list). */
 #define AVG_NODES 31
-/* Every node's E is computed at the refined budget (hemisphere.h hemisphere_moments_to with
- * target 0; the |K15 - G7| models stay at HEMI_PLAIN_TARGET): its floor is 1e-9 of the value
- * against the default budget's 1e-7, so that E_avg's claim is set by its float arithmetic, not by
- * the nodes' floors (which summed to 1e-7 of E_avg). */
-BRDF_CONST real AVG_NODE_TARGET = RC(0.0);
+/* The inner bounds' share of E_avg's bound, split evenly over the nodes by weight: node k is
+ * refined when its bound exceeds AVG_TARGET / (31 * 2 mu_k * wk_k) (but never below the albedo's
+ * own target, host/cl/runner_avg.cpp), so that the inner term sum wk 2 mu err_E stays near
+ * AVG_TARGET. The grazing nodes (mu = 0.001, 0.006), where E costs most, weigh least, and are
+ * refined least. */
+#define AVG_TARGET RC(8e-6)
 BRDF_CONST real AVG_MU[AVG_NODES] = {
     RC(0.000998850653301469857413579923864), RC(0.00600374098975728575521714070669),
     RC(0.0161304621604304328713260106078), RC(0.0313633037996470478461205261449),
@@ -61,3 +62,6 @@ BRDF_CONST real AVG_WD[AVG_NODES] = {
     RC(0.0127304236633576600934370005098), RC(-0.0078726473334005729081268152507),
     RC(0.00268873993646167449389602571506)};
 
+BRDF_FN real avg_node_target(int k) {
+  return AVG_TARGET / (RC(2.0) * (real)AVG_NODES * AVG_MU[k] * AVG_WK[k]);
+}
