@@ -15,6 +15,7 @@
 #include "bake/merl_bake.h"
 #include "bake/format_outputs.h"
 #include "bake/interp_estimate.h"
+#include "bake/method_text.h"
 #include "bake/output_set.h"
 #include "bake/volume.h"
 #include "cl/device.h"
@@ -31,10 +32,6 @@ namespace brdfbake {
 
 namespace {
 
-// Allowance for the diffuse albedo kernel's float arithmetic (its |K15 - G7| bounds cover the
-// quadrature, not rounding; tests/diffuse_test.cpp checks bound + allowance). The hemisphere
-// estimators' float share is modelled per texel instead (bake/error_model.h).
-constexpr double kFloatArithmeticAllowance = 1e-6;
 // brdf.interp-error: the larger of the estimate from the texels and the probes' largest lookup
 // error with this margin (the probes sample the wedge near the corner, not its every point)
 constexpr double kProbeMargin = 1.5;
@@ -43,67 +40,12 @@ constexpr double kEtaLo = 0.25, kEtaHi = 4.0;
 
 }  // namespace
 }  // namespace brdfbake
-namespace brdf64 {
-const double kPhiGrow = HEMI_PHI_GROW, kPhiGrowOwn = HEMI_PHI_GROW_OWN;  // RC() needs brdf64::real
-const double kGkSharpC = GK_SHARP_C, kFloorSharp = HEMI_ERR_FLOOR_SHARP, kFloorPlain = HEMI_ERR_FLOOR_PLAIN,
-             kFloorRefined = HEMI_ERR_FLOOR_REFINED;
-}
 namespace brdfbake {
 namespace {
-
-// brdf.method, generated from the constants the estimators use (kernels/integrate/hemisphere.h),
-// so that it describes the code that ran.
-std::string hemisphereMethod() {
-  auto model = [](FloatModel m) { return "(" + fmtG(m.k1) + ", " + fmtG(m.k0) + ")"; };
-  std::string breaks;
-  for (int k = 0; k < HEMI_NBREAKS; ++k) breaks += (k ? "," : "") + fmtG(brdf64::HEMI_BREAKS[k]);
-  std::string cuts;
-  for (double c : brdf64::HEMI_REFINE_CUTS) cuts += (cuts.empty() ? "" : ",") + fmtG(c);
-  return "h-space quadrature: theta_h by v=-log(1-CDF_ndf) in GK15 panels (breaks " + breaks +
-         " and at the visible-domain limits, sqrt ends substituted), phi_h by " + std::to_string(HEMI_TRAP_N) +
-         "-interval trapezoid on the full circle or GK15 per smooth arc (graded x" + fmtG(brdf64::kPhiGrow) +
-         " towards the horizon from n.i = mu; Smith and Schlick GAFs x" + fmtG(brdf64::kPhiGrowOwn) +
-         " from n.i = 2 alpha); texels estimated above " + fmtG(HEMI_BAKE_TARGET) +
-         " redone with each outer panel cut at " + cuts + ", " + std::to_string(2 * HEMI_TRAP_N) +
-         " trapezoid intervals, grading halved" +
-         " and every arc panel halved; error: per texel, the rules' estimates (GK15: |K15-G7| rescaled as QUADPACK's "
-         "qk15 with C=" + fmtG(brdf64::kGkSharpC) + " where the GAF is smooth; trapezoid: |T16-T8|^3/|T8-T4|) + a floor of " +
-         fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorRefined) + " at the refined budget; " +
-         fmtG(brdf64::kFloorPlain) + " with |K15-G7|) of the value + float arithmetic (K1 min(1,|value|) + K0) u (u = 2^-24; " +
-         "(K1, K0) = " + model(kHemiFloatGgx) + " ggx, " + model(kHemiFloatBeckmann) + " beckmann, " +
-         model(kHemiFloatBlinnPhong) + " blinn-phong, " + model(kHemiFloat) + " gaussian and every Fresnel-weighted moment, " +
-         model(kSheenFloat) + " charlie, " + model(kCharlieSmithFloat) + " with charlie-smith) + storage rounding";
-}
-
-std::string diffuseMethod() {
-  return "theta_i in GK15 panels (" + std::to_string(DIFFUSE_PANELS) +
-         " each side of theta_o), phi by GK15 on [0,pi/2] and [pi/2,pi] where f_d depends on it; error |K15-G7| + " +
-         fmtG(kFloatArithmeticAllowance) + " float allowance + storage rounding";
-}
 
 std::string modelsOf(const TableJob& job) {
   if (job.ndf < 0) return diffuseNames()[job.diffuse];
   return ndfNames()[job.ndf] + "+" + gafNames()[job.gaf];
-}
-
-std::string methodText(TableKind kind) {
-  switch (kind) {
-    case TableKind::AlbedoAvg:
-      return "E_avg = 2 int E(mu) mu dmu by Gauss-Kronrod 15/31 panels on [0,1] (" + std::to_string(AVG_NODES) +
-             " mu nodes each, starting from one panel, the worst halved until the bound is under " +
-             fmtG(KernelRunner::kAvgGoal) + "; sums in double on the host; error |K31-G15| + node estimates + their float "
-             "arithmetic), E at each node by " +
-             hemisphereMethod();
-    case TableKind::Kp:
-      return "k_p = int e^-v p/D_grid dv by GK15 panels on v in [0," + fmtG(brdf64::HEMI_BREAKS[HEMI_NBREAKS - 1]) +
-             "] (breaks " + [] {
-               std::string b;
-               for (int k = 0; k < HEMI_NBREAKS; ++k) b += (k ? "," : "") + fmtG(brdf64::HEMI_BREAKS[k]);
-               return b;
-             }() + "); error |K15-G7| + float arithmetic " + fmtG(kKpFloat.k1) + " u min(1,|value|) (u = 2^-24) + storage rounding";
-    default:
-      return hemisphereMethod();
-  }
 }
 
 // How a kernel run's float arithmetic is accounted for in its texels' claims.

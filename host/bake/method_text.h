@@ -1,0 +1,14 @@
+// brdf.method texts of the tables computeTable bakes (bake/method_text.cpp).
+#pragma once
+#include <string>
+
+#include "common/models.h"
+
+namespace brdfbake {
+
+// the hemisphere estimators' (split-sum, albedo), E_avg's and k_p's method
+std::string methodText(TableKind kind);
+// the diffuse albedo kernel's
+std::string diffuseMethod();
+
+}  // namespace brdfbake
