@@ -23,7 +23,8 @@
 // blinn-phong, 6.2 u for the gaussian (smith-exact, mu = 1/256). The models (3.5 s + 3) u,
 // (2.5 s + 3) u, (3.5 s + 3) u and (6 s + 3) u are at least 1.43, 1.41, 1.46 and 1.35 times the
 // error at every one of those texels. Fresnel-weighted moments (E_F, F82-tint's C) keep the
-// gaussian's (6 s + 3) u for every NDF (tests/fresnel_test.cpp holds them to it). The
+// (6 s + 3) u every NDF had before (not measured per NDF; tests/fresnel_test.cpp checks ggx +
+// smith-correlated's whole claims against the reference). The
 // charlie NDF with charlie-smith reaches 29 u (its G/(n.o) grows without bound towards grazing
 // views; mu = 1/256), (36 s + 4) u at least 1.38 times; with its other visibilities 6.5 u (none,
 // s = 0.55), (10 s + 4) u at least 1.45 times. tests/accuracy_test.cpp and

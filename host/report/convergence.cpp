@@ -149,7 +149,8 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
       rg.error = std::max(rg.error, rel(value(t, k), ref[k]));
       // + the float arithmetic's share, as the bake claims it (bake/error_model.h)
       double scale = std::max({std::fabs(t.planes[0][k]), std::fabs(t.planes[1][k]), std::fabs(t.planes[2][k])});
-      rg.estimate = std::max(rg.estimate, static_cast<double>(t.err[k]) + floatArithmeticError(scale, hemiFloatModel(ndf, gaf)));
+      rg.estimate = std::max(rg.estimate, static_cast<double>(t.err[k]) +
+                                                   floatArithmeticError(scale, hemiFloatModel(ndf, gaf, !fc.isOne())));
     }
     res.rungs.push_back(rg);
   }

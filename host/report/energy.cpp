@@ -126,7 +126,7 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
             size_t k = static_cast<size_t>(j) * n + i;
             double sscale = std::max({std::fabs(spec.planes[0][k]), std::fabs(spec.planes[1][k]), std::fabs(spec.planes[2][k])});
             double es = spec.planes[1][k],
-                   bs = (spec.err[k] + floatArithmeticError(sscale, hemiFloatModel(ndf, gaf))) * std::max(1.0, std::fabs(es));
+                   bs = (spec.err[k] + floatArithmeticError(sscale, hemiFloatModel(ndf, gaf, !fc.isOne()))) * std::max(1.0, std::fabs(es));
             int q0 = followsR ? j : 0, q1 = followsR ? j + 1 : np;
             for (int q = d >= 0 ? q0 : 0; q < (d >= 0 ? q1 : 1); ++q) {
               double ed = 0, bd = 0;

@@ -315,8 +315,10 @@ BRDF_FN BrdfParams brdf_params(int ndf, int gaf, real r) {
  * texels, both budgets: the sharpened estimates miss by at most 4.4e-8 of the value (7.5e-9 away
  * from the edges); `./tests/brdfbake-accuracy-tests` prints it. The refined budget's estimates miss
  * by far less, at most 4.5e-10 of the value over the same texels (gaussian + smith-correlated at
- * the 128x128 edges): its own floor, 1e-9, keeps the same margin (2.2) as the default's; E_avg's
- * nodes, all at the refined budget (host/cl/runner_avg.cpp), claim that instead of 1e-7. */
+ * the 128x128 edges): its own floor, 1e-9, keeps the same margin (2.2) as the default's. Measured
+ * on the unweighted moments of the pairs without a tabulated Lambda (whose 6.6e-7 dwarfs it), at
+ * levels 0 and 1; the Fresnel-weighted moments and the convergence ladders' levels 2 and up use it
+ * unmeasured. */
 #define HEMI_ERR_FLOOR_SHARP RC(1e-7)
 #define HEMI_ERR_FLOOR_PLAIN RC(2e-7)
 #define HEMI_ERR_FLOOR_REFINED RC(1e-9)
