@@ -66,11 +66,12 @@ constexpr FloatModel kRoundToFloat{1, 0};
 
 // weighted: a Fresnel-weighted moment (HEMI_FRESNEL, HEMI_F82C).
 inline FloatModel hemiFloatModel(int ndf, int gaf, bool weighted = false) {
+  if (ndf == NDF_CHARLIE) return gaf == GAF_CHARLIE_SMITH ? kCharlieSmithFloat : kSheenFloat;
+  if (weighted) return kHemiFloat;
   switch (ndf) {
-    case NDF_CHARLIE: return gaf == GAF_CHARLIE_SMITH ? kCharlieSmithFloat : kSheenFloat;
-    case NDF_GGX: return weighted ? kHemiFloat : kHemiFloatGgx;
-    case NDF_BECKMANN: return weighted ? kHemiFloat : kHemiFloatBeckmann;
-    case NDF_BLINN_PHONG: return weighted ? kHemiFloat : kHemiFloatBlinnPhong;
+    case NDF_GGX: return kHemiFloatGgx;
+    case NDF_BECKMANN: return kHemiFloatBeckmann;
+    case NDF_BLINN_PHONG: return kHemiFloatBlinnPhong;
     default: return kHemiFloat;
   }
 }
