@@ -28,7 +28,8 @@ static inline float grid_coord(int i, int n, float lo, float hi, int node_grid) 
  * mu_list = 1: the quadrature nodes of the average albedo instead (host/cl/runner_avg.cpp): work-item
  * (i, j) takes (mu, r, refinement target) from nodes[j * nx + i], and out_e, out_err hold the value
  * the average needs (E for the split, else the weighted moment B, a Fresnel model's albedo) and its
- * absolute bound. One kernel
+ * absolute bound; mu_list = 2: the same with the rule's bare estimate (hemisphere_moments_chosen),
+ * for the averages whose floor is measured on the average. One kernel
  * for both, with one call of the estimator, keeps the code a program compiles to one copy of it
  * (PoCL inlines every call site). */
 kernel void bake_hemisphere(global float* out_a, global float* out_b, global float* out_e,
@@ -58,7 +59,7 @@ kernel void bake_hemisphere(global float* out_a, global float* out_b, global flo
   p.fr_y = fr_y;
   /* level < 0: the bake's adaptive budget; else that one everywhere (brdfbake convergence: 0
    * default, 1 refined, more finer) */
-  HemiResult h = hemisphere_moments_at(BRDF_NDF, BRDF_GAF, p, mu, level, target);
+  HemiResult h = hemisphere_moments_chosen(BRDF_NDF, BRDF_GAF, p, mu, level, target, mu_list == 2);
   out_a[t] = (float)h.a;
   out_b[t] = (float)h.b;
   if (mu_list) {

@@ -5,8 +5,9 @@
 // the nodes' own float errors. Bounding each d_k by the per-texel model and adding them (what
 // bake/error_model.h's avgFloatArithmeticError did before) ignores that the d_k have both signs
 // and mostly cancel: it claimed 13 u against measured errors near 1 u. This test measures the
-// average's float error directly — the device's nodes against the same rule in double at the same
-// nodes, each node taking the budget (default or refined) its device value came from — for every
+// average's float error directly — the bake's rule (host/cl/avg_rule.h, its panels included) with
+// the device's nodes against the same rule in double at the same nodes, each node taking the budget
+// (default or refined) its device value came from — for every
 // non-sheen pair at the r of a 32-entry table (texel centres), a 33-entry node grid and a 64-entry
 // table, and holds avgFloatArithmeticError to it.
 #include <gtest/gtest.h>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "bake/error_model.h"
+#include "cl/avg_rule.h"
 #include "common/brdf_host.h"
 #include "common/models.h"
 #include "test_device.h"
@@ -37,41 +39,51 @@ std::vector<float> rValues(int n, bool nodeGrid) {
 class AvgFloat : public ::testing::TestWithParam<int> {};
 
 TEST_P(AvgFloat, AverageFloatErrorWithinItsModel) {
-  const int m = AVG_NODES, ndf = GetParam();
+  const int ndf = GetParam();
   double worstU = 0, worstUse = 0;
   for (int gaf = 0; gaf < GAF_COUNT; ++gaf) {
     if (!pairSupported(ndf, gaf)) continue;
+    const bool bare = brdf64::hemi_sharp_estimate(ndf, gaf);  // as KernelRunner::albedoAvg asks the device
     double pairU = 0;
     for (auto [n, nodeGrid] : {std::pair{32, false}, std::pair{33, true}, std::pair{64, false}}) {
       std::vector<float> rs = rValues(n, nodeGrid);
-      // one panel on [0, 1], as albedoAvg starts (every microfacet pair meets the goal with it)
-      std::vector<cl_float4> nodes;
-      for (float r : rs)
-        for (int i = 0; i < m; ++i) {
-          float mu = static_cast<float>(brdf64::AVG_MU[i]);
-          double share = brdf64::avg_node_target(i) * brdf64::AVG_MU[i] / mu;
-          nodes.push_back({{mu, r, static_cast<float>(std::max(HEMI_BAKE_TARGET, share)), 0.0f}});
-        }
-      std::vector<std::vector<float>> out = runner().hemisphereNodes(ndf, gaf, nodes);
-      for (size_t j = 0; j < rs.size(); ++j) {
-        double dev = 0, dbl = 0;
-        for (int i = 0; i < m; ++i) {
-          const cl_float4& q = nodes[j * m + i];
-          double mu = q.s[0], w = brdf64::AVG_WK[i] * 2 * mu;
-          double e = out[0][j * m + i];
-          brdf64::BrdfParams p = brdf64::hemisphere_texel_params(ndf, gaf, mu, q.s[1]);
-          double best = 0, gap = 1e300;
+      // The bake's rule (host/cl/avg_rule.h) with the device's E at its nodes; alongside, the same
+      // estimator in double at each node, at the budget its device value came from (the closer of
+      // the two). The second run replays the first's panels with the double values.
+      std::vector<double> dbl, devBound;
+      auto device = [&](const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound) {
+        std::vector<cl_float4> in;
+        for (const AvgNode& q : nodes) in.push_back({{q.mu, q.r, q.target, 0.0f}});
+        std::vector<std::vector<float>> out = runner().hemisphereNodes(ndf, gaf, in, {}, bare);
+        for (size_t k = 0; k < nodes.size(); ++k) {
+          (*value)[k] = out[0][k];
+          (*bound)[k] = out[1][k];
+          double mu = nodes[k].mu, best = 0, gap = 1e300;
+          brdf64::BrdfParams p = brdf64::hemisphere_texel_params(ndf, gaf, mu, nodes[k].r);
           for (int level : {0, 1}) {
             brdf64::HemiResult h = brdf64::hemisphere_moments_at(ndf, gaf, p, mu, level, 0);
             double v = h.a + h.b;
-            if (std::fabs(v - e) < gap) gap = std::fabs(v - e), best = v;
+            if (std::fabs(v - out[0][k]) < gap) gap = std::fabs(v - out[0][k]), best = v;
           }
-          dev += w * e;
-          dbl += w * best;
+          dbl.push_back(best);
+          devBound.push_back(out[1][k]);
         }
-        double err = std::fabs(dev - dbl) / std::max(1.0, std::fabs(dbl));
-        double model = avgFloatArithmeticError(dev, ndf, gaf);  // (the final rounding to float is not in it)
-        EXPECT_LE(err, model) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " r " << rs[j] << " E_avg " << dev;
+      };
+      size_t replayed = 0;
+      auto replay = [&](const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound) {
+        for (size_t k = 0; k < nodes.size(); ++k, ++replayed) {
+          (*value)[k] = dbl.at(replayed);
+          (*bound)[k] = devBound.at(replayed);
+        }
+      };
+      std::vector<AvgSum> dev = averageRule(rs, bare, KernelRunner::kAvgGoal, device);
+      std::vector<AvgSum> ref = averageRule(rs, bare, KernelRunner::kAvgGoal, replay);
+      ASSERT_EQ(replayed, dbl.size()) << "the replay took other panels";
+      for (size_t j = 0; j < rs.size(); ++j) {
+        double err = std::fabs(dev[j].value - ref[j].value) / std::max(1.0, std::fabs(ref[j].value));
+        double model = avgFloatArithmeticError(dev[j].value, ndf, gaf);  // (the final rounding to float is not in it)
+        EXPECT_LE(err, model) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " r " << rs[j] << " E_avg "
+                              << dev[j].value;
         pairU = std::max(pairU, err / kUnitRoundoff);
         worstUse = std::max(worstUse, err / model);
       }

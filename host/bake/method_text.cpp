@@ -13,6 +13,7 @@ namespace brdf64 {
 const double kPhiGrow = HEMI_PHI_GROW, kPhiGrowOwn = HEMI_PHI_GROW_OWN;  // RC() needs brdf64::real
 const double kGkSharpC = GK_SHARP_C, kFloorSharp = HEMI_ERR_FLOOR_SHARP, kFloorPlain = HEMI_ERR_FLOOR_PLAIN,
              kFloorRefined = HEMI_ERR_FLOOR_REFINED;
+const double kAvgLayerAlpha = AVG_LAYER_ALPHA, kAvgLayerBreak = AVG_LAYER_BREAK, kAvgFloor = AVG_ERR_FLOOR;
 }
 namespace brdfbake {
 namespace {
@@ -52,10 +53,18 @@ std::string diffuseMethod() {
 std::string methodText(TableKind kind) {
   switch (kind) {
     case TableKind::AlbedoAvg:
-      return "E_avg = 2 int E(mu) mu dmu by Gauss-Kronrod 15/31 panels on [0,1] (" + std::to_string(AVG_NODES) +
-             " mu nodes each, starting from one panel, the worst halved until the bound is under " +
-             fmtG(KernelRunner::kAvgGoal) + "; sums in double on the host; error |K31-G15| + node estimates + their float "
-             "arithmetic + the sum's rounding to float), E at each node by " +
+      return "E_avg = 2 int E(mu) mu dmu by Gauss-Kronrod panels on [0,1]: one GK31 panel, or where alpha < " +
+             fmtG(brdf64::kAvgLayerAlpha) + " GK15 on [0," + fmtG(brdf64::kAvgLayerBreak) +
+             " alpha] (the horizon layer) and GK31 on the rest; the worst halved until the bound is under " +
+             fmtG(KernelRunner::kAvgGoal) +
+             "; sums in double on the host, the nodes' float positions corrected to first order; error: the panels' "
+             "|K-G| (rescaled where E is analytic) + the nodes' estimates (for the plain average of the GAFs with "
+             "rescaled estimates: their bare estimates + " +
+             fmtG(brdf64::kAvgFloor) + " of E_avg, measured on the averages, + " +
+             fmtG(brdf64::avg_model_error(NDF_BLINN_PHONG, GAF_SMITH_EXACT)) + " (blinn-phong) or " +
+             fmtG(brdf64::avg_model_error(NDF_GAUSSIAN, GAF_SMITH_EXACT)) +
+             " (gaussian) with a tabulated Lambda; else each node's own floor) + their float arithmetic + the sum's "
+             "rounding to float; E at each node by " +
              hemisphereMethod();
     case TableKind::Kp:
       return "k_p = int e^-v p/D_grid dv by GK15 panels on v in [0," + fmtG(brdf64::HEMI_BREAKS[HEMI_NBREAKS - 1]) +

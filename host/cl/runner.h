@@ -83,8 +83,10 @@ class KernelRunner {
   static constexpr double kAvgGoal = 8e-6;  // an entry's bound (relative to max(1, E_avg)), as a texel's
   // The hemisphere kernel at arbitrary points: nodes[k] = (mu, r, refinement target, unused);
   // planes {the value (E, or with a Fresnel weight that model's albedo), its absolute bound, A, B}.
+  // bare: the bound is the rule's estimate alone (kernels/integrate/hemisphere.h
+  // hemisphere_moments_chosen), without the floor and the tabulated Lambda's error.
   std::vector<std::vector<float>> hemisphereNodes(int ndf, int gaf, const std::vector<cl_float4>& nodes,
-                                                  const HemiWeight& w = {});
+                                                  const HemiWeight& w = {}, bool bare = false);
   // k_p over r.
   KernelTable kp(int ndf, int n, bool nodeGrid, float rLo = 0.0f, float rHi = 1.0f);
 

@@ -99,7 +99,7 @@ void setRArgs(cl::Kernel& k, const cl::Buffer& values, const cl::Buffer& bounds,
 // Quadrature nodes (mu, r, target) for the hemisphere kernel: planes {value, absolute bound}
 // (bake.cl, mu_list = 1). The average albedo's rule that chooses them is host/cl/runner_avg.cpp.
 std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, const std::vector<cl_float4>& nodes,
-                                                              const HemiWeight& w) {
+                                                              const HemiWeight& w, bool bare) {
   Compiled& c = compiled(ndf, gaf, kHemisphere);
   Slot& s = *slots_[c.slot];
   size_t count = nodes.size();
@@ -115,7 +115,7 @@ std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, 
   setGridArgs(k, 4, static_cast<int>(count), 1, 0.0f, 1.0f, 0.0f, 1.0f, false);
   setWeightArgs(k, 11, w);
   k.setArg(15, -1);
-  k.setArg(16, 1);  // (mu, r, target) from the list
+  k.setArg(16, bare ? 2 : 1);  // (mu, r, target) from the list
   k.setArg(17, in);
   setPairArgs(k, 18, ndf, gaf);
   run(c, k, count, 1);

@@ -127,7 +127,7 @@ BRDF_FN int gaf_theta_breaks(int gaf, real mu, real s, real* t2) {
   if (gaf != GAF_NEUMANN && gaf != GAF_COOK_TORRANCE) return 0;
   real th_o = atan2(s, mu);
   real half_pi = RC(0.5) * BRDF_PI;
-  real th[4];
+  real th[4] = {RC(0.0), RC(0.0), RC(0.0), RC(0.0)};  /* (GCC cannot see that only th[0 .. n) is read) */
   int n = 0;
   th[n++] = th_o;
   if (gaf == GAF_COOK_TORRANCE) {

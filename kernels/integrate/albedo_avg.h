@@ -11,6 +11,46 @@
  * AVG_TARGET. The grazing nodes (mu = 0.001, 0.006), where E costs most, weigh least, and are
  * refined least. */
 #define AVG_TARGET RC(8e-6)
+/* Where alpha < AVG_LAYER_ALPHA the rule starts from two panels, [0, AVG_LAYER_BREAK alpha] and the
+ * rest: E(mu) falls within a layer of width ~alpha at the horizon (the Smith and Schlick G1 go from
+ * ~1 to ~mu/alpha there), which GK31 over [0, 1] samples with its first node or two only (mu =
+ * 0.001, 0.006), and which the rescaled |K31 - G15| then underestimates: ggx + smith-correlated's
+ * E_avg was off by 1.1e-7 at r = 1/32 (alpha = 1e-3) against an estimate of 2e-9, by 8e-8 at r =
+ * 1/16, 1.8e-8 at r = 5/64, and by at most 7.7e-9 from r = 7/64 (alpha = 0.012) on. Split at 16
+ * alpha, the error falls to at most 5e-9 at every r, evaluated in double at the same float nodes
+ * (3e-9 at exact nodes; host/cl/runner_avg.cpp corrects for the difference), 4 to 64 alpha all
+ * within 1.2e-8 of each other. The reference integrates with breaks at the same scale (host/
+ * reference, lobeBreaks). Entries with alpha < 0.01 (r < 0.1) cost one more panel. */
+#define AVG_LAYER_ALPHA RC(0.01)
+#define AVG_LAYER_BREAK RC(16.0)
+/* E_avg's own floor, relative to the value, for the plain (unweighted) average of the pairs with a
+ * rescaled estimate (hemi_sharp_estimate): added once to the sum of the outer estimates and the
+ * nodes' bare estimates (hemisphere_moments_chosen), in place of every node's floor
+ * (HEMI_ERR_FLOOR_*, 1e-7 of E at the default budget), which assumed that each node missed by its
+ * worst and all in one direction. Measured (tests/avg_rule_test.cpp with BRDFBAKE_AVG_SWEEP=1: the
+ * bake's rule with E in double at its nodes, every r of 32- and 64-entry tables and a 33-entry node
+ * grid, against the reference): beyond the rule's bound E_avg is off by at most 2.1e-9 of its value
+ * (beckmann and blinn-phong + schlick-ggx at r = 7/64, alpha = 0.012, just above
+ * AVG_LAYER_ALPHA), 3.3e-10 for ggx, 5.3e-12 for the gaussian. The floor keeps a margin of 2.4. */
+#define AVG_ERR_FLOOR RC(5e-9)
+/* The tabulated exact Lambda's share of E_avg (blinn-phong and the gaussian with smith-exact and
+ * smith-correlated-exact). hemi_model_error's 6.6e-7 is the integrand's worst case at one point;
+ * averaged over mu and the lobe, the table's errors of both signs largely cancel: in the same sweep,
+ * beyond the rule's bound, at most 2.7e-8 of E_avg for blinn-phong (smith-exact, r = 61/64) and
+ * 1.16e-7 for the gaussian (smith-exact, r = 99/128). These keep the margin 2.2. */
+#define AVG_SMITH_TABLE_ERR_BLINN_PHONG RC(6e-8)
+#define AVG_SMITH_TABLE_ERR_GAUSSIAN RC(2.6e-7)
+BRDF_FN real avg_model_error(int ndf, int gaf) {
+  if (hemi_model_error(ndf, gaf) <= RC(0.0)) return RC(0.0);
+  return ndf == NDF_GAUSSIAN ? AVG_SMITH_TABLE_ERR_GAUSSIAN : AVG_SMITH_TABLE_ERR_BLINN_PHONG;
+}
+/* What E_avg's bound adds to its rule's, relative to the value, where the nodes' estimates are bare. */
+BRDF_FN real avg_floor(int ndf, int gaf) { return AVG_ERR_FLOOR + avg_model_error(ndf, gaf); }
+/* Where the rule's first panel ends at perceptual roughness r (alpha = r^2). */
+BRDF_FN real avg_first_break(real r) {
+  real alpha = r * r;
+  return alpha > RC(0.0) && alpha < AVG_LAYER_ALPHA ? AVG_LAYER_BREAK * alpha : RC(1.0);
+}
 BRDF_CONST real AVG_MU[AVG_NODES] = {
     RC(0.000998850653301469857413579923864), RC(0.00600374098975728575521714070669),
     RC(0.0161304621604304328713260106078), RC(0.0313633037996470478461205261449),
@@ -62,6 +102,9 @@ BRDF_CONST real AVG_WD[AVG_NODES] = {
     RC(0.0127304236633576600934370005098), RC(-0.0078726473334005729081268152507),
     RC(0.00268873993646167449389602571506)};
 
+/* The same for node mu of an n-node panel rule with weight w on [0, 1] (any panel: its inner term
+ * stays within AVG_TARGET times its length). */
+BRDF_FN real avg_target_share(int n, real mu, real w) { return AVG_TARGET / (RC(2.0) * (real)n * mu * w); }
 BRDF_FN real avg_node_target(int k) {
   return AVG_TARGET / (RC(2.0) * (real)AVG_NODES * AVG_MU[k] * AVG_WK[k]);
 }

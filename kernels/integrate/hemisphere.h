@@ -371,27 +371,33 @@ BRDF_FN real hemi_rel_error(HemiResult h) {
 
 /* The default budget, and the refined one where its estimate exceeds `target` (the refined result
  * is kept if its estimate is smaller); level >= 0 instead: that budget alone (= hemisphere_moments).
- * The tabulated Lambda's error is added after the choice: no budget reduces it. Written as a loop
- * around a single call of the rule so that a kernel compiles one copy of the estimator, not one
- * per budget (PoCL inlines every call site). */
-BRDF_FN HemiResult hemisphere_moments_at(int ndf, int gaf, BrdfParams p, real mu, int level, real target) {
+ * The tabulated Lambda's error is added after the choice: no budget reduces it. bare: the chosen
+ * budget's rule estimate alone, without the floor and the tabulated Lambda's error (the choice is
+ * the same): the average albedo (host/cl/runner_avg.cpp) adds floors measured on the averages
+ * themselves instead. Written as a loop around a single call of the rule so that a kernel compiles
+ * one copy of the estimator, not one per budget (PoCL inlines every call site). */
+BRDF_FN HemiResult hemisphere_moments_chosen(int ndf, int gaf, BrdfParams p, real mu, int level, real target,
+                                             int bare) {
   if (!hemi_sharp_estimate(ndf, gaf)) target = fmax(target, HEMI_PLAIN_TARGET);
   HemiResult h;
   real e = RC(0.0);
   int first = 1;
   for (int l = level < 0 ? 0 : level;; l = 1) {
-    HemiResult c = hemi_rule(ndf, gaf, p, mu, l);
-    hemi_add_relative(hemi_floor(ndf, gaf, l), &c);
-    real ec = hemi_rel_error(c);
+    HemiResult c = hemi_rule(ndf, gaf, p, mu, l), cf = c;
+    hemi_add_relative(hemi_floor(ndf, gaf, l), &cf);
+    real ec = hemi_rel_error(cf);
     if (first || ec < e) {
-      h = c;
+      h = bare ? c : cf;
       e = ec;
     }
     if (level >= 0 || !first || e <= target) break;
     first = 0;
   }
-  hemi_add_relative(hemi_model_error(ndf, gaf), &h);
+  if (!bare) hemi_add_relative(hemi_model_error(ndf, gaf), &h);
   return h;
+}
+BRDF_FN HemiResult hemisphere_moments_at(int ndf, int gaf, BrdfParams p, real mu, int level, real target) {
+  return hemisphere_moments_chosen(ndf, gaf, p, mu, level, target, 0);
 }
 BRDF_FN HemiResult hemisphere_moments_to(int ndf, int gaf, BrdfParams p, real mu, real target) {
   return hemisphere_moments_at(ndf, gaf, p, mu, -1, target);

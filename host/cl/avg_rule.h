@@ -1,0 +1,31 @@
+// The average albedo's rule over mu, apart from where E comes from (host/cl/runner_avg.cpp): the
+// bake takes E at the nodes from the device (KernelRunner::albedoAvg), tests/avg_rule_test.cpp from
+// the same estimator in double, to measure what the rule's own bound misses.
+#pragma once
+#include <functional>
+#include <vector>
+
+namespace brdfbake {
+
+struct AvgNode {
+  float mu, r, target;  // where E is wanted, and the refinement target of its estimator
+};
+// Fills value[k] and bound[k] (E at nodes[k] and its absolute bound) for every node.
+using AvgEvaluator =
+    std::function<void(const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound)>;
+
+struct AvgSum {
+  double value = 0;  // E_avg, in double
+  double bound = 0;  // the rule's bound: outer estimates plus the weighted node bounds
+  int panels = 0;
+};
+
+// E_avg at each r: GK31 panels over mu, halved where the bound is largest until it meets the goal
+// (relative to max(1, E_avg)); sharp: |K31 - G15| rescaled (brdf64::gk_error).
+std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double goal, const AvgEvaluator& eval);
+
+// Where the first panel ends at r: below 1 where E(mu) has a layer of width ~alpha at mu = 0 that
+// one panel over [0, 1] does not resolve (kernels/integrate/albedo_avg.h AVG_LAYER_ALPHA).
+double avgFirstBreak(float r);
+
+}  // namespace brdfbake

@@ -1,0 +1,128 @@
+// The average albedo's rule (host/cl/avg_rule.h) and its floors, measured on the averages.
+//
+// E_avg's bound is the rule's own (the outer panels' rescaled |K - G| plus the nodes' bare rule
+// estimates, weighted) plus AVG_ERR_FLOOR (and, with a tabulated Lambda, AVG_SMITH_TABLE_ERR_*)
+// times E_avg: kernels/integrate/albedo_avg.h. This test runs the very rule the bake runs, with E at
+// its nodes from the same estimator in double on the host (the budget chosen as the device
+// chooses it, the float nodes the device would get), so that what it measures is the quadrature
+// alone (the float arithmetic is tests/avg_float_test.cpp's), against the independent reference
+// (host/reference, adaptive Boost GK in double on other coordinates). It checks every such pair
+// (the rescaled estimate's: hemi_sharp_estimate) at r across the horizon-layer range and the rest,
+// and prints the largest miss, (error - rule bound) / E_avg, per pair; BRDFBAKE_AVG_SWEEP=1 runs
+// every r of 32- and 64-entry tables and a 33-entry node grid instead (how the floors were set:
+// ~25 minutes on two cores).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <thread>
+#include <vector>
+
+#include "cl/avg_rule.h"
+#include "cl/runner.h"
+#include "common/brdf_host.h"
+#include "common/models.h"
+#include "reference/reference.h"
+#include "test_device.h"
+
+namespace brdfbake {
+namespace {
+using brdf64::real;  // for the RC() of albedo_avg.h's constants
+
+// The rule with E in double at the nodes it asks for, bare estimates as the bake's kernel gives them.
+std::vector<AvgSum> hostRule(int ndf, int gaf, const std::vector<float>& rs) {
+  return averageRule(rs, true, KernelRunner::kAvgGoal,
+                     [&](const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound) {
+                       for (size_t k = 0; k < nodes.size(); ++k) {
+                         double mu = nodes[k].mu;
+                         brdf64::BrdfParams p = brdf64::hemisphere_texel_params(ndf, gaf, mu, nodes[k].r);
+                         brdf64::HemiResult h = brdf64::hemisphere_moments_chosen(ndf, gaf, p, mu, -1, nodes[k].target, 1);
+                         (*value)[k] = h.a + h.b;
+                         (*bound)[k] = h.err_a + h.err_b;
+                       }
+                     });
+}
+
+std::vector<float> sweepR() {
+  std::vector<float> rs;
+  if (const char* e = std::getenv("BRDFBAKE_AVG_SWEEP"); e && std::string(e) == "1") {
+    for (int n : {32, 64})
+      for (int j = 0; j < n; ++j) rs.push_back((static_cast<float>(j) + 0.5f) / static_cast<float>(n));
+    for (int j = 0; j <= 32; ++j) rs.push_back(static_cast<float>(j) / 32.0f);
+    return rs;
+  }
+  // the horizon layer's range (alpha < 0.01: r < 0.1) densely, the rest sparsely, and the ends
+  for (int j : {1, 3, 5, 7, 11, 21, 41, 63}) rs.push_back(static_cast<float>(j) / 64.0f);
+  for (float r : {0.0f, 1.0f / 32, 1.0f}) rs.push_back(r);
+  return rs;
+}
+
+class AvgRule : public ::testing::TestWithParam<int> {};
+
+TEST_P(AvgRule, BoundHoldsWithTheFloorsMeasuredOnTheAverage) {
+  const int ndf = GetParam();
+  const std::vector<float> rs = sweepR();
+  double worstMiss = 0, worstTable = 0;
+  for (int gaf = 0; gaf < GAF_COUNT; ++gaf) {
+    if (!pairSupported(ndf, gaf) || !brdf64::hemi_sharp_estimate(ndf, gaf)) continue;
+    std::vector<AvgSum> got = hostRule(ndf, gaf, rs);
+    std::vector<double> ref(rs.size());
+    std::vector<std::thread> threads;
+    for (size_t t = 0; t < 2; ++t)
+      threads.emplace_back([&, t] {
+        for (size_t j = t; j < rs.size(); j += 2) ref[j] = reference::albedoAvg(ndf, gaf, rs[j]);
+      });
+    for (std::thread& t : threads) t.join();
+    const bool tabulated = brdf64::avg_model_error(ndf, gaf) > 0;
+    double pairMiss = 0;
+    float at = 0;
+    for (size_t j = 0; j < rs.size(); ++j) {
+      const double v = got[j].value, err = std::fabs(v - ref[j]), scale = std::max(1.0, std::fabs(v));
+      EXPECT_LE(err, got[j].bound + brdf64::avg_floor(ndf, gaf) * std::fabs(v))
+          << ndfNames()[ndf] << "+" << gafNames()[gaf] << " r " << rs[j] << " E_avg " << v << " ref " << ref[j];
+      // what the floors cover: beyond the rule's bound, relative to the value
+      double miss = (err - got[j].bound) / scale;
+      if (miss > pairMiss) pairMiss = miss, at = rs[j];
+    }
+    if (tabulated) worstTable = std::max(worstTable, pairMiss);
+    else worstMiss = std::max(worstMiss, pairMiss);
+    std::printf("%s+%s: E_avg off its rule's bound by at most %.2e (r = %.4f)%s\n", ndfNames()[ndf].c_str(),
+                gafNames()[gaf].c_str(), pairMiss, at, tabulated ? " (tabulated Lambda)" : "");
+  }
+  std::printf("%s: largest miss %.2e (floor %.1e, %.2f times it)", ndfNames()[ndf].c_str(), worstMiss,
+              static_cast<double>(AVG_ERR_FLOOR), worstMiss > 0 ? AVG_ERR_FLOOR / worstMiss : 0.0);
+  if (worstTable > 0)
+    std::printf("; with the tabulated Lambda %.2e (floor + table %.1e)", worstTable,
+                static_cast<double>(brdf64::avg_floor(ndf, GAF_SMITH_EXACT)));
+  std::printf("\n");
+}
+
+INSTANTIATE_TEST_SUITE_P(MicrofacetNdfs, AvgRule, ::testing::Values(NDF_GGX, NDF_BECKMANN, NDF_BLINN_PHONG, NDF_GAUSSIAN),
+                         [](const ::testing::TestParamInfo<int>& info) {
+                           std::string s = ndfNames()[info.param];
+                           std::replace(s.begin(), s.end(), '-', '_');
+                           return s;
+                         });
+
+// The bake's device rule agrees with the host's (same panels, the float arithmetic apart), and its
+// entries claim the floors: the default pair's table, entry by entry.
+TEST(AvgRuleDevice, DeviceTableMatchesTheHostRule) {
+  const int n = 32;
+  int gaf = GAF_SMITH_CORRELATED;
+  KernelTable t = testing_device::runner().albedoAvg(NDF_GGX, gaf, n, false);
+  std::vector<float> rs(n);
+  for (int j = 0; j < n; ++j) rs[j] = (static_cast<float>(j) + 0.5f) / static_cast<float>(n);
+  std::vector<AvgSum> host = hostRule(NDF_GGX, gaf, rs);
+  for (int j = 0; j < n; ++j) {
+    EXPECT_NEAR(t.planes[0][j], host[j].value, 4e-7) << "r " << rs[j];
+    // the claim holds the rule's bound (computed from float node bounds) and the floor
+    EXPECT_GE(t.err[j], 0.5 * (host[j].bound + AVG_ERR_FLOOR * host[j].value)) << "r " << rs[j];
+    EXPECT_LE(t.err[j], 2.0 * (host[j].bound + AVG_ERR_FLOOR * host[j].value) + 6e-8) << "r " << rs[j];
+    EXPECT_EQ(host[j].panels, rs[j] * rs[j] < 0.01f ? 2 : 1) << "r " << rs[j];
+  }
+}
+
+}  // namespace
+}  // namespace brdfbake
