@@ -94,6 +94,12 @@ BRDF_FN real gaf_G(int gaf, int ndf, BrdfParams p, real ni, param_t no, real nh,
 }
 
 #ifndef BRDF_LANE_PASS
+/* Whether the pair's Lambda is the tabulated exact one (smith_tables.h): blinn-phong and the
+ * gaussian with smith-exact or smith-correlated-exact (ggx's and beckmann's are closed forms). */
+BRDF_FN int gaf_lambda_tabulated(int ndf, int gaf) {
+  return (gaf == GAF_SMITH_EXACT || gaf == GAF_SMITH_CORRELATED_EXACT) && (ndf == NDF_BLINN_PHONG || ndf == NDF_GAUSSIAN);
+}
+
 /* Where G has a kink as a function of the azimuth phi of h (fixed theta_h), as values of cos(phi).
  * The integrators split their phi panels there so Gauss rules see only smooth pieces.
  * With o = (s, 0, mu) and h at (theta, phi): o.h = s sin cos(phi) + mu c, n.i = 2 (o.h) c - mu.

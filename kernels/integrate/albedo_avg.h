@@ -45,7 +45,7 @@
 #define AVG_SMITH_TABLE_ERR_BLINN_PHONG RC(6e-8)
 #define AVG_SMITH_TABLE_ERR_GAUSSIAN RC(2.6e-7)
 BRDF_FN real avg_model_error(int ndf, int gaf) {
-  if (hemi_model_error(ndf, gaf) <= RC(0.0)) return RC(0.0);
+  if (!gaf_lambda_tabulated(ndf, gaf)) return RC(0.0);
   return ndf == NDF_GAUSSIAN ? AVG_SMITH_TABLE_ERR_GAUSSIAN : AVG_SMITH_TABLE_ERR_BLINN_PHONG;
 }
 /* What E_avg's bound adds to its rule's, relative to the value, where the nodes' estimates are bare. */

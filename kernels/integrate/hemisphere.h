@@ -330,9 +330,7 @@ BRDF_FN BrdfParams brdf_params(int ndf, int gaf, real r) {
 
 /* The model's own approximation: the tabulated exact Lambda's share (0 where it is exact). */
 BRDF_FN real hemi_model_error(int ndf, int gaf) {
-  int tabulated = (gaf == GAF_SMITH_EXACT || gaf == GAF_SMITH_CORRELATED_EXACT) &&
-                  (ndf == NDF_BLINN_PHONG || ndf == NDF_GAUSSIAN);
-  return tabulated ? HEMI_SMITH_TABLE_ERR : RC(0.0);
+  return gaf_lambda_tabulated(ndf, gaf) ? HEMI_SMITH_TABLE_ERR : RC(0.0);
 }
 /* Adds f times the moments' magnitudes to their error estimates. */
 BRDF_FN void hemi_add_relative(real f, HemiResult* h) {
