@@ -20,8 +20,9 @@ struct AvgSum {
   int panels = 0;
 };
 
-// E_avg at each r: GK31 panels over mu, halved where the bound is largest until it meets the goal
-// (relative to max(1, E_avg)); sharp: |K31 - G15| rescaled (brdf64::gk_error).
+// E_avg at each r: Gauss-Kronrod panels over mu (GK31; GK15 for the horizon layer's, sharp pairs
+// only: avgFirstBreak), halved where the bound is largest until it meets the goal (relative to
+// max(1, E_avg)); sharp: |K - G| rescaled (brdf64::gk_error).
 std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double goal, const AvgEvaluator& eval);
 
 // Where the first panel ends at r: below 1 where E(mu) has a layer of width ~alpha at mu = 0 that

@@ -6,7 +6,7 @@
 // layer of width ~alpha at the horizon, where the Smith and Schlick G1 fall from ~1 to ~mu/alpha;
 // the weight 2 mu makes that layer contribute O(alpha^2). One Gauss-Kronrod 15/31 rule over [0, 1]
 // meets the 8e-6 goal for every pair and r (largest bound 6.7e-6 over all of them at size 32), but
-// below alpha ~ 0.01 its first nodes skip the layer and its rescaled estimate misses by up to 1e-7:
+// below alpha ~ 0.01 its first nodes skip the layer and its rescaled estimate misses by up to 1.1e-7:
 // there the rule starts from a GK15 panel on [0, 16 alpha] and a GK31 one on the rest
 // (kernels/integrate/albedo_avg.h AVG_LAYER_ALPHA; GK15 for the layer's panel, as accurate there as
 // GK31 and half the nodes, which cost the most: those entries' extra panel is 10% of the table's
@@ -20,12 +20,14 @@
 // Node k's refinement target (the estimator's second budget where its own bound exceeds it)
 // shares the inner term out by weight, AVG_TARGET / (n 2 mu_k w_k), but is never below the albedo
 // table's own target: every node at the refined budget would take E_avg to 8.8 to 9.0 times the
-// albedo table's time instead of 0.9 (`brdfbake-bench --albedo-avg` with the target below set to 0),
+// albedo table's time instead of 0.9 (`brdfbake-bench --albedo-avg` with the target below set to 0;
+// measured before the layer panels, which add ~10%: 0.90 after, in one loaded run),
 // and it is to cost no more than the albedo table it averages (issue 7).
 // The nodes' bounds: for the plain average of the pairs with rescaled estimates, the rule's bare
 // estimates (no per-node floor) and one floor on E_avg, AVG_ERR_FLOOR, measured on the averages
 // (tests/avg_rule_test.cpp); each node's own floor (1e-7 of E at the default budget) assumed every
-// node missed by its worst in one direction, and was two thirds of the default pair's claim.
+// node missed by its worst in one direction, and made up two thirds of the default pair's
+// quadrature claim (1e-7 of 1.7e-7; the float model and the stored rounding are the rest).
 // The entry's claim here is the quadrature's, plus the one rounding of the double sum to float,
 // known exactly (|float(sum) - sum|, at most half an ulp); the float arithmetic of the nodes is
 // bake/error_model.h's avgFloatArithmeticError.
@@ -61,7 +63,7 @@ struct AvgPanel {
 };
 
 // The nodes' positions, rounded to float for the device, are not the rule's: f(y_k) stands for
-// f(x_k), off by f'(x_k) (x_k - y_k), |x_k - y_k| <= 2^-25 mu_k. Summed with the weights that is up
+// f(x_k), off by f'(x_k) (x_k - y_k), |x_k - y_k| <= 2^-24 mu_k. Summed with the weights that is up
 // to ~1e-8 of E_avg (measured, in double, as the rule's error changing by 5e-9 to 1.2e-8 when the
 // panels move). The first-order term is added back: f' from the neighbouring nodes' secants
 // (three-point formula on the uneven spacing), which is far more accurate than the term needs.
@@ -91,7 +93,9 @@ std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double
   std::vector<std::vector<AvgPanel>> panels(n);
   std::vector<std::vector<size_t>> fresh(n);
   for (size_t j = 0; j < n; ++j) {
-    double b = avgFirstBreak(rs[j]);
+    // the layer panel where it was measured: the rescaled estimates' pairs (tests/avg_rule_test.cpp);
+    // charlie's layer is wider and is left to the halving, as the |K15 - G7| GAFs' is
+    double b = sharp ? avgFirstBreak(rs[j]) : 1.0;
     panels[j].push_back(AvgPanel{0.0, b, b < 1.0 ? kGk15 : kGk31});
     if (b < 1.0) panels[j].push_back(AvgPanel{b, 1.0});
     for (size_t q = 0; q < panels[j].size(); ++q) fresh[j].push_back(q);
@@ -167,10 +171,11 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
     rs[j] = rLo + (rHi - rLo) * t;
   }
   // The rule's estimate is sharpened (brdf64::gk_error) where the hemisphere estimator's is: E(mu)
-  // is then analytic on [0, 1], except for a Fresnel weight with a critical angle (eta < 1), whose
-  // E_F(mu) has a square-root kink there. |K31 - G15| estimates G15's error; rescaled, it is at
-  // most 3.1e-8 on every such pair's 32-entry table, against 2.8e-6 (ggx + schlick-ggx, r = 0.05
-  // to 0.15, where E(mu) changes on the scale mu ~ alpha).
+  // is then analytic on [0, 1] (the horizon layer apart, which has its own panel), except for a
+  // Fresnel weight with a critical angle (eta < 1), whose E_F(mu) has a square-root kink there.
+  // |K - G| estimates the Gauss rule's error; rescaled, it is at most 3.1e-8 on every such pair's
+  // 32-entry table, against 2.8e-6 (ggx + schlick-ggx, r = 0.05 to 0.15, where E(mu) changes on the
+  // scale mu ~ alpha).
   const bool sharp = brdf64::hemi_sharp_estimate(ndf, gaf) && brdf64::fresnel_kink(w.moments, w.fresnel, w.x) < 0;
   // The plain albedo of those pairs takes the nodes' bare estimates and the floor measured on E_avg
   // itself (kernels/integrate/albedo_avg.h AVG_ERR_FLOOR); the rest, every node's own floor.

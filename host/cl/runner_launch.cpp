@@ -97,7 +97,8 @@ void setRArgs(cl::Kernel& k, const cl::Buffer& values, const cl::Buffer& bounds,
 }  // namespace
 
 // Quadrature nodes (mu, r, target) for the hemisphere kernel: planes {value, absolute bound}
-// (bake.cl, mu_list = 1). The average albedo's rule that chooses them is host/cl/runner_avg.cpp.
+// (bake.cl, mu_list = 1, or 2 for bare estimates). The average albedo's rule that chooses them is
+// host/cl/runner_avg.cpp.
 std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, const std::vector<cl_float4>& nodes,
                                                               const HemiWeight& w, bool bare) {
   Compiled& c = compiled(ndf, gaf, kHemisphere);

@@ -1,15 +1,16 @@
 /* albedo_avg.h: the average albedo's rule (the estimator of E it averages is hemisphere.h). */
 /* Average albedo E_avg = 2 int_0^1 E(mu) mu dmu (Kulla and Conty 2017): the Gauss-Kronrod 15/31
- * rule on [0, 1] its panels use, nodes AVG_MU, Kronrod weights AVG_WK and Kronrod minus Gauss
- * weights AVG_WD (the 15 Gauss nodes are the odd ones), so that a panel's value is sum AVG_WK 2 mu E
- * and its estimate |sum AVG_WD 2 mu E|. The rule itself (panels, halving, bounds) runs on the host,
+ * rule on [0, 1] its panels use (the horizon layer's panel: GK15, quadrature.h), nodes AVG_MU,
+ * Kronrod weights AVG_WK and Kronrod minus Gauss weights AVG_WD (the 15 Gauss nodes are the odd
+ * ones), so that a panel's value is sum AVG_WK 2 mu E and its estimate |sum AVG_WD 2 mu E|. The rule itself (panels, halving, bounds) runs on the host,
  * host/cl/runner_avg.cpp, which hands the device its nodes (kernels/bake.cl, mu_list). */
 #define AVG_NODES 31
-/* The inner bounds' share of E_avg's bound, split evenly over the nodes by weight: node k is
- * refined when its bound exceeds AVG_TARGET / (31 * 2 mu_k * wk_k) (but never below the albedo's
- * own target, host/cl/runner_avg.cpp), so that the inner term sum wk 2 mu err_E stays near
- * AVG_TARGET. The grazing nodes (mu = 0.001, 0.006), where E costs most, weigh least, and are
- * refined least. The albedo's own target, HEMI_BAKE_TARGET: at 8e-6 (the entries' goal) the
+/* The inner bounds' share of E_avg's bound, split evenly over the nodes by weight: node k of an
+ * n-node panel rule is refined when its bound exceeds AVG_TARGET / (n * 2 mu_k * wk_k)
+ * (avg_target_share; but never below the albedo's own target, host/cl/runner_avg.cpp), so that
+ * the inner term sum wk 2 mu err_E stays near AVG_TARGET. The grazing nodes (mu = 0.001, 0.006),
+ * where E costs most, weigh least, and are refined least. AVG_TARGET is the albedo's own target
+ * (HEMI_BAKE_TARGET, 3e-7); it was 8e-6, the entries' goal, at which the
  * gaussian's few nodes whose default-budget estimate is 1e4 times its error (1.8e-5 against 6e-10
  * at mu = 0.105, r = 0.52) stayed unrefined and made half its E_avg claims (1.2e-6, ggx's 2.2e-7);
  * at 3e-7 the gaussian + smith claims 4.0e-7 instead of 9.7e-7, in about the albedo table's time,
@@ -106,9 +107,6 @@ BRDF_CONST real AVG_WD[AVG_NODES] = {
     RC(0.0127304236633576600934370005098), RC(-0.0078726473334005729081268152507),
     RC(0.00268873993646167449389602571506)};
 
-/* The same for node mu of an n-node panel rule with weight w on [0, 1] (any panel: its inner term
- * stays within AVG_TARGET times its length). */
+/* Node mu's refinement target (AVG_TARGET above) in an n-node panel rule, w its weight on [0, 1]
+ * (any panel: its inner term stays within AVG_TARGET times its length). */
 BRDF_FN real avg_target_share(int n, real mu, real w) { return AVG_TARGET / (RC(2.0) * (real)n * mu * w); }
-BRDF_FN real avg_node_target(int k) {
-  return AVG_TARGET / (RC(2.0) * (real)AVG_NODES * AVG_MU[k] * AVG_WK[k]);
-}
