@@ -126,7 +126,7 @@ TEST(AvgRuleDevice, DeviceTableMatchesTheHostRule) {
     // the claim holds the rule's bound (computed from float node bounds) and the floor
     EXPECT_GE(t.err[j], 0.5 * (host[j].bound + AVG_ERR_FLOOR * host[j].value)) << "r " << rs[j];
     EXPECT_LE(t.err[j], 2.0 * (host[j].bound + AVG_ERR_FLOOR * host[j].value) + 6e-8) << "r " << rs[j];
-    EXPECT_EQ(host[j].panels, rs[j] * rs[j] < 0.01f ? 2 : 1) << "r " << rs[j];
+    EXPECT_EQ(host[j].panels, brdf64::avg_first_break(rs[j]) < 1 ? 2 : 1) << "r " << rs[j];
   }
 }
 

@@ -21,12 +21,8 @@ struct AvgSum {
 };
 
 // E_avg at each r: Gauss-Kronrod panels over mu (GK31; GK15 for the horizon layer's, sharp pairs
-// only: avgFirstBreak), halved where the bound is largest until it meets the goal (relative to
-// max(1, E_avg)); sharp: |K - G| rescaled (brdf64::gk_error).
+// only: kernels/integrate/albedo_avg.h avg_first_break), halved where the bound is largest until
+// it meets the goal (relative to max(1, E_avg)); sharp: |K - G| rescaled (brdf64::gk_error).
 std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double goal, const AvgEvaluator& eval);
-
-// Where the first panel ends at r: below 1 where E(mu) has a layer of width ~alpha at mu = 0 that
-// one panel over [0, 1] does not resolve (kernels/integrate/albedo_avg.h AVG_LAYER_ALPHA).
-double avgFirstBreak(float r);
 
 }  // namespace brdfbake

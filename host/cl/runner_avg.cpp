@@ -44,7 +44,7 @@ namespace {
 constexpr int kMaxPanels = 32;     // per entry; the halving stops there (the bound says how far it got)
 
 // A panel's rule on [0, 1]: GK31 (kernels/integrate/albedo_avg.h), or GK15 (quadrature.h, mapped
-// from [-1, 1]) for the horizon layer's panel (avgFirstBreak).
+// from [-1, 1]) for the horizon layer's panel (albedo_avg.h avg_first_break).
 struct AvgRule {
   int n;
   double x(int i) const { return n == AVG_NODES ? brdf64::AVG_MU[i] : 0.5 * (1 + brdf64::GK15_XL[i]); }
@@ -86,8 +86,6 @@ double nodeShift(const AvgPanel& p, const double* y, const double* f) {
 }
 }  // namespace
 
-double avgFirstBreak(float r) { return brdf64::avg_first_break(r); }
-
 std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double goal, const AvgEvaluator& eval) {
   const size_t n = rs.size();
   std::vector<std::vector<AvgPanel>> panels(n);
@@ -95,7 +93,7 @@ std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double
   for (size_t j = 0; j < n; ++j) {
     // the layer panel where it was measured: the rescaled estimates' pairs (tests/avg_rule_test.cpp);
     // charlie's layer is wider and is left to the halving, as the |K15 - G7| GAFs' is
-    double b = sharp ? avgFirstBreak(rs[j]) : 1.0;
+    double b = sharp ? brdf64::avg_first_break(rs[j]) : 1.0;
     panels[j].push_back(AvgPanel{0.0, b, b < 1.0 ? kGk15 : kGk31});
     if (b < 1.0) panels[j].push_back(AvgPanel{b, 1.0});
     for (size_t q = 0; q < panels[j].size(); ++q) fresh[j].push_back(q);
