@@ -43,7 +43,8 @@ std::vector<AvgSum> hostRule(int ndf, int gaf, const std::vector<float>& rs) {
                          (*value)[k] = h.a + h.b;
                          (*bound)[k] = h.err_a + h.err_b;
                        }
-                     });
+                     },
+                     avgViewBreaks(gaf));
 }
 
 std::vector<float> sweepR() {

@@ -34,9 +34,9 @@ std::string hemisphereMethod() {
          " redone with each outer panel cut at " + cuts + ", " + std::to_string(2 * HEMI_TRAP_N) +
          " trapezoid intervals, grading halved" +
          " and every arc panel halved; error: per texel, the rules' estimates (GK15: |K15-G7| rescaled as QUADPACK's "
-         "qk15 with C=" + fmtG(brdf64::kGkSharpC) + " where the GAF is smooth; trapezoid: |T16-T8|^3/|T8-T4|) + a floor of " +
+         "qk15 with C=" + fmtG(brdf64::kGkSharpC) + " on panels split at the GAF's kinks, plain for charlie; trapezoid: |T16-T8|^3/|T8-T4|) + a floor of " +
          fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorRefined) + " at the refined budget; " +
-         fmtG(brdf64::kFloorPlain) + " with |K15-G7|) of the value + float arithmetic (K1 min(1,|value|) + K0) u (u = 2^-24; " +
+         fmtG(brdf64::kFloorPlain) + " for charlie) of the value + float arithmetic (K1 min(1,|value|) + K0) u (u = 2^-24; " +
          "(K1, K0) = " + model(kHemiFloatGgx) + " ggx, " + model(kHemiFloatBeckmann) + " beckmann, " +
          model(kHemiFloatBlinnPhong) + " blinn-phong, " + model(kHemiFloat) + " gaussian and every Fresnel-weighted moment, " +
          model(kSheenFloat) + " charlie, " + model(kCharlieSmithFloat) + " with charlie-smith) + storage rounding";

@@ -86,16 +86,27 @@ double nodeShift(const AvgPanel& p, const double* y, const double* f) {
 }
 }  // namespace
 
-std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double goal, const AvgEvaluator& eval) {
+std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double goal, const AvgEvaluator& eval,
+                                const std::vector<double>& breaks) {
   const size_t n = rs.size();
   std::vector<std::vector<AvgPanel>> panels(n);
   std::vector<std::vector<size_t>> fresh(n);
   for (size_t j = 0; j < n; ++j) {
     // the layer panel where it was measured: the rescaled estimates' pairs (tests/avg_rule_test.cpp);
     // charlie's layer is wider and is left to the halving, as the |K15 - G7| GAFs' is
+    // then GK31 panels up to 1, ending at the views where E(mu) is singular
+    std::vector<double> ends;
     double b = sharp ? brdf64::avg_first_break(rs[j]) : 1.0;
-    panels[j].push_back(AvgPanel{0.0, b, b < 1.0 ? kGk15 : kGk31});
-    if (b < 1.0) panels[j].push_back(AvgPanel{b, 1.0});
+    if (b < 1.0) {
+      panels[j].push_back(AvgPanel{0.0, b, kGk15});
+      ends.push_back(b);
+    } else {
+      ends.push_back(0.0);
+    }
+    for (double x : breaks)
+      if (x > ends.back() && x < 1.0) ends.push_back(x);
+    ends.push_back(1.0);
+    for (size_t e = 0; e + 1 < ends.size(); ++e) panels[j].push_back(AvgPanel{ends[e], ends[e + 1]});
     for (size_t q = 0; q < panels[j].size(); ++q) fresh[j].push_back(q);
   }
   std::vector<double> value, bound;
@@ -160,6 +171,11 @@ std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double
   return out;
 }
 
+std::vector<double> avgViewBreaks(int gaf) {
+  double mu[GAF_MAX_VIEW_BREAKS];
+  return std::vector<double>(mu, mu + brdf64::gaf_view_breaks(gaf, mu));
+}
+
 KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w, float rLo,
                                     float rHi) {
   std::vector<float> rs(n);
@@ -179,13 +195,15 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
   // itself (kernels/integrate/albedo_avg.h AVG_ERR_FLOOR); the rest, every node's own floor.
   const bool bare = sharp && w.moments == HEMI_SPLIT;
   std::vector<AvgSum> sums = averageRule(
-      rs, sharp, kAvgGoal, [&](const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound) {
+      rs, sharp, kAvgGoal,
+      [&](const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound) {
         std::vector<cl_float4> in;
         in.reserve(nodes.size());
         for (const AvgNode& q : nodes) in.push_back({{q.mu, q.r, q.target, 0.0f}});
         std::vector<std::vector<float>> out = hemisphereNodes(ndf, gaf, in, w, bare);
         for (size_t k = 0; k < nodes.size(); ++k) (*value)[k] = out[0][k], (*bound)[k] = out[1][k];
-      });
+      },
+      avgViewBreaks(gaf));
   const double floor = bare ? brdf64::avg_floor(ndf, gaf) : 0.0;
   KernelTable t;
   t.width = n;
