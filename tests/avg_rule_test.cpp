@@ -11,13 +11,15 @@
 // (the rescaled estimate's: hemi_sharp_estimate) at r across the horizon-layer range and the rest,
 // and prints the largest miss, (error - rule bound) / E_avg, per pair; BRDFBAKE_AVG_SWEEP=1 runs
 // every r of 32- and 64-entry tables and a 33-entry node grid instead (how the floors were set:
-// ~35 minutes on two cores).
+// ~35 minutes on two cores; BRDFBAKE_AVG_GAFS=0,2 restricts it to those GAF ids).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -67,8 +69,19 @@ TEST_P(AvgRule, BoundHoldsWithTheFloorsMeasuredOnTheAverage) {
   const int ndf = GetParam();
   const std::vector<float> rs = sweepR();
   double worstMiss = 0, worstTable = 0;
+  // BRDFBAKE_AVG_GAFS=2,4 (GAF ids, kernels/brdf/gaf.h): those GAFs only, to sweep a few pairs
+  std::vector<int> only;
+  if (const char* e = std::getenv("BRDFBAKE_AVG_GAFS")) {
+    std::istringstream in(e);
+    for (std::string id; std::getline(in, id, ',');) {
+      ASSERT_TRUE(!id.empty() && id.find_first_not_of("0123456789") == std::string::npos)
+          << "BRDFBAKE_AVG_GAFS: comma-separated GAF ids (kernels/brdf/gaf.h), got \"" << e << "\"";
+      only.push_back(std::stoi(id));
+    }
+  }
   for (int gaf = 0; gaf < GAF_COUNT; ++gaf) {
     if (!pairSupported(ndf, gaf) || !brdf64::hemi_sharp_estimate(ndf, gaf)) continue;
+    if (!only.empty() && std::find(only.begin(), only.end(), gaf) == only.end()) continue;
     std::vector<AvgSum> got = hostRule(ndf, gaf, rs);
     std::vector<double> ref(rs.size());
     std::vector<std::thread> threads;

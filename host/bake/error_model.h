@@ -98,12 +98,13 @@ inline double floatArithmeticError(double scale, FloatModel m = kHemiFloat) {
 // neumann kept |K15 - G7| and a model of their own, 2.55 and 5.75 u; their estimates are rescaled
 // now, their averages run the same rule as the others', and one model per NDF covers all.)
 // Fresnel-weighted averages and charlie's (several panels) keep the summed bound.
-constexpr FloatModel kAvgFloatMicrofacet[4] = {{0, 2.3}, {0, 2.15}, {0, 2.4}, {0, 5.75}};  // NDF_GGX .. NDF_GAUSSIAN
+constexpr FloatModel kAvgFloatMicrofacet[4] = {{0, 2.3}, {0, 2.15}, {0, 2.4}, {0, 5.76}};  // NDF_GGX .. NDF_GAUSSIAN
 inline double avgFloatArithmeticError(double value, int ndf, int gaf, bool weighted = false) {
   if (weighted || ndf == NDF_CHARLIE) {
     FloatModel m = hemiFloatModel(ndf, gaf, weighted);
     return floatArithmeticError(value, FloatModel{m.k1, 2 * m.k0});
   }
+  // (the four microfacet NDFs are ids 0 to 3, NDF_GGX .. NDF_GAUSSIAN; charlie returned above)
   return floatArithmeticError(value, kAvgFloatMicrofacet[ndf - NDF_GGX]);
 }
 

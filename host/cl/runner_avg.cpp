@@ -10,7 +10,9 @@
 // there the rule starts from a GK15 panel on [0, 16 alpha] and a GK31 one on the rest
 // (kernels/integrate/albedo_avg.h AVG_LAYER_ALPHA; GK15 for the layer's panel, as accurate there as
 // GK31 and half the nodes, which cost the most: those entries' extra panel is 10% of the table's
-// time). Charlie's sheen lobe grows towards grazing half-vectors as alpha falls, and its E(mu)
+// time). The panels also end at the GAF's view breaks (cook-torrance's and neumann's, brdf64::
+// gaf_view_breaks), where the hemisphere estimator's theta breaks coincide and E(mu) may be
+// singular. Charlie's sheen lobe grows towards grazing half-vectors as alpha falls, and its E(mu)
 // changes within a layer near mu = 0 that these panels do not resolve either (a bound of 5e-5 at
 // r = 1/64). So the rule is adaptive, as QUADPACK's QAG is (Piessens et al. 1983): while an entry's
 // bound exceeds the goal, halve its panel with the largest bound; every round evaluates only the
@@ -93,8 +95,8 @@ std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double
   std::vector<std::vector<size_t>> fresh(n);
   for (size_t j = 0; j < n; ++j) {
     // the layer panel where it was measured: the rescaled estimates' pairs (tests/avg_rule_test.cpp);
-    // charlie's layer is wider and is left to the halving, as the |K15 - G7| GAFs' is
-    // then GK31 panels up to 1, ending at the views where E(mu) is singular
+    // charlie's layer is wider and is left to the halving. Then GK31 panels up to 1, ending at the
+    // GAF's view breaks (brdf64::gaf_view_breaks)
     std::vector<double> ends;
     double b = sharp ? brdf64::avg_first_break(rs[j]) : 1.0;
     if (b < 1.0) {
@@ -185,7 +187,8 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
     rs[j] = rLo + (rHi - rLo) * t;
   }
   // The rule's estimate is sharpened (brdf64::gk_error) where the hemisphere estimator's is: E(mu)
-  // is then analytic on [0, 1] (the horizon layer apart, which has its own panel), except for a
+  // is then analytic on each starting panel (the horizon layer has its own; cook-torrance and
+  // neumann's panels end at their view breaks, gaf_view_breaks), except for a
   // Fresnel weight with a critical angle (eta < 1), whose E_F(mu) has a square-root kink there.
   // |K - G| estimates the Gauss rule's error; rescaled, it is at most 3.1e-8 on every such pair's
   // 32-entry table, against 2.8e-6 (ggx + schlick-ggx, r = 0.05 to 0.15, where E(mu) changes on the
