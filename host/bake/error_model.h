@@ -1,5 +1,5 @@
 // The float arithmetic's share of a baked table's error. The kernels compute in float; their
-// per-texel estimates (kernels/integrate/hemisphere.h hemi_rel_error, ndf_kp) cover the
+// per-texel estimates (kernels/integrate/hemisphere_texel.h hemi_rel_error, hemisphere.h ndf_kp) cover the
 // quadrature only. What float adds is modelled per texel from the texel's own values:
 //
 //   float error <= (K1 min(1, |v|) + K0) u,   relative to max(1, |value|) like every bound,

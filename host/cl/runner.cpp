@@ -77,7 +77,8 @@ std::string kernelSource(int ndf, int gaf) {
   for (const char* f : pointwise) append(src, f);
   src += "#undef BRDF_LANE_PASS\n#undef real\n#define real float\n";
   for (const char* f : {"kernels/brdf/brdf.h", "kernels/integrate/quadrature.h", "kernels/integrate/azimuth.h",
-                        "kernels/integrate/hemisphere.h", "kernels/integrate/sheen.h", "kernels/integrate/albedo_avg.h",
+                        "kernels/integrate/hemisphere.h", "kernels/integrate/hemisphere_texel.h",
+                        "kernels/integrate/sheen.h", "kernels/integrate/albedo_avg.h",
                         "kernels/integrate/diffuse_albedo.h", "kernels/bake.cl"})
     append(src, f);
   return src;

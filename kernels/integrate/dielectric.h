@@ -38,7 +38,7 @@
 /* inner panels halved once by default: |K15 - G7| of one GK15 panel overstates the error by
  * orders of magnitude, and the outer refinement cannot reduce an inner bound */
 #define DIEL_INNER 1
-#define DIEL_CORNER_R RC(1e-5) /* as hemisphere.h's HEMI_CORNER_R */
+#define DIEL_CORNER_R RC(1e-5) /* as hemisphere_texel.h's HEMI_CORNER_R */
 /* the graded breaks' factors 4^j, j = -3..4, and the outer axis' fixed breaks (the e^-v decay) */
 #define DIEL_NGRADES 8
 BRDF_CONST real DIEL_GRADES[DIEL_NGRADES] = {RC(0.015625), RC(0.0625), RC(0.25), RC(1.0), RC(4.0), RC(16.0), RC(64.0), RC(256.0)};
@@ -305,7 +305,7 @@ BRDF_FN DielResult diel_albedo(int ndf, int gaf, BrdfParams p, real mu, real eta
 
 /* The table's value at (mu, r, eta), its edges included: r = 0 is the smooth interface's limit
  * (D a delta at h = n, G = 1): E_R = F(mu), E_T = 1 - F(mu); the corner mu = 0, r = 0 is the limit
- * along mu = 0 (hemisphere.h HEMI_CORNER_R). eta = 1 needs no case of its own (F = 0, o_t = -i). */
+ * along mu = 0 (hemisphere_texel.h HEMI_CORNER_R). eta = 1 needs no case of its own (F = 0, o_t = -i). */
 BRDF_FN DielResult diel_texel(int ndf, int gaf, real mu, real r, real eta, real target) {
   DielResult res;
   if (r <= RC(0.0) && mu > RC(0.0)) {

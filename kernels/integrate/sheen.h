@@ -22,7 +22,7 @@
  *    circle's integrand is smooth there, as in hemisphere.h).
  * The bound is hemisphere.h's: |K15 - G7| of the outer rule plus the inner rules' bounds.
  * alpha = 0: the lobe lies on the horizon, where n.i = 2 (o.h) c - mu = -mu < 0, so E = 0 for mu > 0
- * (the corner mu = 0 is evaluated at HEMI_CORNER_R, hemisphere.h).
+ * (the corner mu = 0 is evaluated at HEMI_CORNER_R, hemisphere_texel.h).
  */
 BRDF_FN HemiResult sheen_moments(int gaf, BrdfParams p, real mu, int refine) {
   HemiResult res;
