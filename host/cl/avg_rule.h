@@ -23,9 +23,10 @@ struct AvgSum {
 // E_avg at each r: Gauss-Kronrod panels over mu (GK31; GK15 for the horizon layer's, sharp pairs
 // only: kernels/integrate/albedo_avg.h avg_first_break), halved where the bound is largest until
 // it meets the goal (relative to max(1, E_avg)); sharp: |K - G| rescaled (brdf64::gk_error).
-// breaks: views where E(mu) is singular (brdf64::gaf_view_breaks), where the first panels end.
+// breaks: the GAF's view breaks (avgViewBreaks, brdf64::gaf_view_breaks), where the first panels
+// end; no default, so that every caller runs the bake's rule for its GAF.
 std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double goal, const AvgEvaluator& eval,
-                                const std::vector<double>& breaks = {});
+                                const std::vector<double>& breaks);
 // The views where the GAF's E(mu) is singular (brdf64::gaf_view_breaks), for averageRule.
 std::vector<double> avgViewBreaks(int gaf);
 

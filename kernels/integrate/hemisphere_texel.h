@@ -77,6 +77,10 @@ BRDF_FN real hemi_rel_error(HemiResult h) {
  * near 1e-6 to 3e-6 where it was pessimistic, so a lower target refined 30% (at 1e-6) to 70% (at
  * 3e-7) of a table, 4 to 9 times the time, for claims at most 3 to 6 times tighter. */
 #define HEMI_PLAIN_TARGET RC(8e-6)
+/* The target a texel is refined above: the bake's, or charlie's own where that is larger. */
+BRDF_FN real hemi_target(int ndf, int gaf, real target) {
+  return hemi_sharp_estimate(ndf, gaf) ? target : fmax(target, HEMI_PLAIN_TARGET);
+}
 
 /* The default budget, and the refined one where its estimate exceeds `target` (the refined result
  * is kept if its estimate is smaller); level >= 0 instead: that budget alone (= hemisphere_moments).
@@ -87,7 +91,7 @@ BRDF_FN real hemi_rel_error(HemiResult h) {
  * one copy of the estimator, not one per budget (PoCL inlines every call site). */
 BRDF_FN HemiResult hemisphere_moments_chosen(int ndf, int gaf, BrdfParams p, real mu, int level, real target,
                                              int bare) {
-  if (!hemi_sharp_estimate(ndf, gaf)) target = fmax(target, HEMI_PLAIN_TARGET);
+  target = hemi_target(ndf, gaf, target);
   HemiResult h;
   real e = RC(0.0);
   int first = 1;
