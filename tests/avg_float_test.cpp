@@ -8,13 +8,16 @@
 // average's float error directly — the bake's rule (host/cl/avg_rule.h, its panels included) with
 // the device's nodes against the same rule in double at the same nodes, each node taking the budget
 // (default or refined) its device value came from — for every
-// non-sheen pair at the r of a 32-entry table (texel centres), a 33-entry node grid and a 64-entry
-// table, and holds avgFloatArithmeticError to it.
+// non-sheen pair at the r of a 32-entry table (texel centres) and a 33-entry node grid (and a
+// 64-entry table with BRDFBAKE_AVG_SWEEP=1, as the model was measured; left out of the suite for
+// time), and holds avgFloatArithmeticError to it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "bake/error_model.h"
@@ -43,9 +46,11 @@ TEST_P(AvgFloat, AverageFloatErrorWithinItsModel) {
   double worstU = 0, worstUse = 0;
   for (int gaf = 0; gaf < GAF_COUNT; ++gaf) {
     if (!pairSupported(ndf, gaf)) continue;
-    const bool bare = brdf64::hemi_sharp_estimate(ndf, gaf);  // as KernelRunner::albedoAvg asks the device
+    const bool bare = true;  // as KernelRunner::albedoAvg asks the device for every microfacet pair
     double pairU = 0;
-    for (auto [n, nodeGrid] : {std::pair{32, false}, std::pair{33, true}, std::pair{64, false}}) {
+    std::vector<std::pair<int, bool>> tables = {{32, false}, {33, true}};
+    if (const char* e = std::getenv("BRDFBAKE_AVG_SWEEP"); e && std::string(e) == "1") tables.push_back({64, false});
+    for (auto [n, nodeGrid] : tables) {
       std::vector<float> rs = rValues(n, nodeGrid);
       // The bake's rule (host/cl/avg_rule.h) with the device's E at its nodes; alongside, the same
       // estimator in double at each node, at the budget its device value came from (the closer of

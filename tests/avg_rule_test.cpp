@@ -8,7 +8,7 @@
 // device would get), so that what it measures is the quadrature
 // alone (the float arithmetic is tests/avg_float_test.cpp's), against the independent reference
 // (host/reference, adaptive Boost GK in double on other coordinates). It checks every such pair
-// (the rescaled estimate's: hemi_sharp_estimate) at r across the horizon-layer range and the rest,
+// (the rescaled estimate's) at r across the horizon-layer range and the rest,
 // and prints the largest miss, (error - rule bound) / E_avg, per pair; BRDFBAKE_AVG_SWEEP=1 runs
 // every r of 32- and 64-entry tables and a 33-entry node grid instead (how the floors were set:
 // ~35 minutes on two cores; BRDFBAKE_AVG_GAFS=0,2 restricts it to those GAF ids).
@@ -57,9 +57,11 @@ std::vector<float> sweepR() {
     for (int j = 0; j <= 32; ++j) rs.push_back(static_cast<float>(j) / 32.0f);
     return rs;
   }
-  // the horizon layer's range (alpha < 0.01: r < 0.1) densely, the rest sparsely, and the ends
-  for (int j : {1, 3, 5, 7, 11, 21, 41, 63}) rs.push_back(static_cast<float>(j) / 64.0f);
-  for (float r : {0.0f, 1.0f / 32, 1.0f}) rs.push_back(r);
+  // the horizon layer's range (alpha < 0.01: r < 0.1) and the largest misses of the sweep (r = 7/64
+  // and 1/8, just above it), the rest sparsely, and the ends (8 r: the 11 of sessions 21 and 22 made
+  // this the suite's longest test, 2.5 minutes for ggx alone on a loaded machine)
+  for (int j : {1, 5, 7, 8, 21, 63}) rs.push_back(static_cast<float>(j) / 64.0f);
+  for (float r : {0.0f, 1.0f}) rs.push_back(r);
   return rs;
 }
 
@@ -80,7 +82,7 @@ TEST_P(AvgRule, BoundHoldsWithTheFloorsMeasuredOnTheAverage) {
     }
   }
   for (int gaf = 0; gaf < GAF_COUNT; ++gaf) {
-    if (!pairSupported(ndf, gaf) || !brdf64::hemi_sharp_estimate(ndf, gaf)) continue;
+    if (!pairSupported(ndf, gaf)) continue;
     if (!only.empty() && std::find(only.begin(), only.end(), gaf) == only.end()) continue;
     std::vector<AvgSum> got = hostRule(ndf, gaf, rs);
     std::vector<double> ref(rs.size());

@@ -11,7 +11,7 @@
 
 namespace brdf64 {
 const double kPhiGrow = HEMI_PHI_GROW, kPhiGrowOwn = HEMI_PHI_GROW_OWN;  // RC() needs brdf64::real
-const double kGkSharpC = GK_SHARP_C, kFloorSharp = HEMI_ERR_FLOOR_SHARP, kFloorPlain = HEMI_ERR_FLOOR_PLAIN,
+const double kGkSharpC = GK_SHARP_C, kFloorSharp = HEMI_ERR_FLOOR_SHARP,
              kFloorRefined = HEMI_ERR_FLOOR_REFINED;
 const double kAvgLayerAlpha = AVG_LAYER_ALPHA, kAvgLayerBreak = AVG_LAYER_BREAK, kAvgFloor = AVG_ERR_FLOOR;
 }
@@ -34,9 +34,8 @@ std::string hemisphereMethod() {
          " redone with each outer panel cut at " + cuts + ", " + std::to_string(2 * HEMI_TRAP_N) +
          " trapezoid intervals, grading halved" +
          " and every arc panel halved; error: per texel, the rules' estimates (GK15: |K15-G7| rescaled as QUADPACK's "
-         "qk15 with C=" + fmtG(brdf64::kGkSharpC) + " on panels split at the GAF's kinks, plain for charlie; trapezoid: |T16-T8|^3/|T8-T4|) + a floor of " +
-         fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorRefined) + " at the refined budget; " +
-         fmtG(brdf64::kFloorPlain) + " for charlie) of the value + float arithmetic (K1 min(1,|value|) + K0) u (u = 2^-24; " +
+         "qk15 with C=" + fmtG(brdf64::kGkSharpC) + " on panels split at the GAF's kinks; trapezoid: |T16-T8|^3/|T8-T4|) + a floor of " +
+         fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorRefined) + " at the refined budget) of the value + float arithmetic (K1 min(1,|value|) + K0) u (u = 2^-24; " +
          "(K1, K0) = " + model(kHemiFloatGgx) + " ggx, " + model(kHemiFloatBeckmann) + " beckmann, " +
          model(kHemiFloatBlinnPhong) + " blinn-phong, " + model(kHemiFloat) + " gaussian and every Fresnel-weighted moment, " +
          model(kSheenFloat) + " charlie, " + model(kCharlieSmithFloat) + " with charlie-smith) + storage rounding";

@@ -366,8 +366,8 @@ int main(int argc, char** argv) {
         float mu = (i + 0.5f) / n, r = (j + 0.5f) / n;
         brdf32::BrdfParams p = brdf32::brdf_params(ndf, gaf, r);
         brdf32::HemiResult h = brdf32::hemisphere_moments(ndf, gaf, p, mu, 0);
-        // as the bake refines (kernels/bake.cl BAKE_TARGET; charlie's own target where --pair names it)
-        if (brdf32::hemi_rel_error(h) > brdf32::hemi_target(ndf, gaf, HEMI_BAKE_TARGET)) {
+        // as the bake refines (kernels/bake.cl BAKE_TARGET)
+        if (brdf32::hemi_rel_error(h) > HEMI_BAKE_TARGET) {
           ++refined;
           h = brdf32::hemisphere_moments(ndf, gaf, p, mu, 1);
         }

@@ -106,12 +106,19 @@ BRDF_FN int gaf_lambda_tabulated(int ndf, int gaf) {
  *   n.i = n.o          <=> o.h = mu/c                      (neumann, cook-torrance)
  *   2 c mu = o.h       <=> cook-torrance's masking term reaches 1
  *   2 c n.i = o.h      <=> o.h (4c^2 - 1) = 2 c mu (shadowing term reaches 1)
+ *   n.i = 1/2          <=> o.h = (1/2 + mu)/(2 c)          (charlie-smith: the fitted Lambda
+ *     switches branch at cos = 1/2, ndf.h charlie_lambda; continuous with its slope, its second
+ *     derivative jumps)
  * Returns the number of kinks written to cosphi[] (at most 3). */
 BRDF_FN int gaf_kinks(int gaf, real mu, real s, real c, real sn, real* cosphi) {
   int n = 0;
-  if (gaf != GAF_NEUMANN && gaf != GAF_COOK_TORRANCE) return 0;
-  if (s <= RC(0.0) || sn <= RC(0.0)) return 0;
+  if (gaf != GAF_NEUMANN && gaf != GAF_COOK_TORRANCE && gaf != GAF_CHARLIE_SMITH) return 0;
+  if (s <= RC(0.0) || sn <= RC(0.0) || c <= RC(0.0)) return 0;
   real inv = RC(1.0) / (s * sn);
+  if (gaf == GAF_CHARLIE_SMITH) {
+    cosphi[n++] = ((RC(0.5) + mu) / (RC(2.0) * c) - mu * c) * inv;
+    return n;
+  }
   cosphi[n++] = (mu / c - mu * c) * inv;
   if (gaf == GAF_COOK_TORRANCE) {
     cosphi[n++] = (RC(2.0) * c * mu - mu * c) * inv;
@@ -134,16 +141,30 @@ BRDF_FN int gaf_kinks(int gaf, real mu, real s, real c, real sn, real* cosphi) {
  * o.h (4 c^2 - 1) = 2 c mu meet where c^2 = 1/2, theta_h = pi/4, at cos phi = mu/s: on the arc
  * for views mu < s (theta_o > pi/4); there the branch of the min between them changes. Without
  * this break, the panel holding pi/4 missed by up to 1.3e-6 of the value (ggx, mu = 0.51, r = 1),
- * with it by 4e-10 (double, against the reference). Writes tan^2 of each to t2[] (at most 5) and
- * returns the count. */
+ * with it by 4e-10 (double, against the reference).
+ * charlie-smith's n.i = 1/2: i lies in the plane of o at angle 2 theta_h - theta_o from n at
+ * phi = 0 and 2 theta_h + theta_o at phi = pi, so theta_h = (theta_o +- pi/3)/2 and
+ * (pi/3 - theta_o)/2. Its kink is C1, so the phi integral goes as a 5/2 power there. Without
+ * these breaks (and the kink in phi) the charlie-smith albedo at the default budget was off by up
+ * to 5.5e-7 of the value (mu = 0.7, r = 1), and 4 times its rescaled estimate (mu = 1, r = 0.8,
+ * where the kink is the circle theta_h = pi/6); with them by 1.1e-7 (double, against
+ * host/reference/sheen_reference.cpp, 11 r x 13 mu).
+ * Writes tan^2 of each to t2[] (at most 5) and returns the count. */
 #define GAF_MAX_THETA_BREAKS 5
 BRDF_FN int gaf_theta_breaks(int gaf, real mu, real s, real* t2) {
-  if (gaf != GAF_NEUMANN && gaf != GAF_COOK_TORRANCE) return 0;
+  if (gaf != GAF_NEUMANN && gaf != GAF_COOK_TORRANCE && gaf != GAF_CHARLIE_SMITH) return 0;
   real th_o = atan2(s, mu);
   real half_pi = RC(0.5) * BRDF_PI;
   real th[GAF_MAX_THETA_BREAKS] = {RC(0.0)}; /* (GCC cannot see that only th[0 .. n) is read) */
   int n = 0;
-  th[n++] = th_o;
+  if (gaf == GAF_CHARLIE_SMITH) {
+    real third = BRDF_PI / RC(3.0);
+    th[n++] = RC(0.5) * (th_o + third);
+    th[n++] = RC(0.5) * (th_o - third);
+    th[n++] = RC(0.5) * (third - th_o);
+  } else {
+    th[n++] = th_o;
+  }
   if (gaf == GAF_COOK_TORRANCE) {
     th[n++] = half_pi - th_o;
     th[n++] = (half_pi + th_o) / RC(3.0);
@@ -165,6 +186,14 @@ BRDF_FN int gaf_theta_breaks(int gaf, real mu, real s, real* t2) {
  * either side differs by O(sn) = O(sqrt(v)) near h = n (cook-torrance's min is 1 there). Missed
  * without the substitution: 2.3e-6 of the value (ggx, mu = 0.82, r = 0.32); with it 1.4e-8. */
 BRDF_FN int gaf_root_at_normal(int gaf) { return gaf == GAF_NEUMANN; }
+
+/* Whether G is singular (not analytic) at i's horizon, n.i -> 0: charlie-smith, whose fitted
+ * Lambda(x) = exp(a/(1 + b x^c) + d x + e) with c = 0.17 to 0.20 (ndf.h charlie_L) makes G a
+ * function of x^c there. The azimuth arc's last panel, which ends at n.i = 0, substitutes
+ * phi = phimax - L (1 - y)^2 (azimuth.h). Without it the charlie-smith albedo missed by up to
+ * 8e-8 of the value at the default budget and 5.5e-8 at the refined one (r = 1/256, mu = 1/256 to
+ * 0.01, where n.i stays in the x^c layer over much of the arc), with it by 3e-12. */
+BRDF_FN int gaf_root_at_horizon(int gaf) { return gaf == GAF_CHARLIE_SMITH; }
 
 /* Whether H = (G/n.o) F (o.h)/(n.h) stays large at i's horizon on the scale of the view's own
  * cut: `none` (G/n.o = 1/n.o) and kelemen (1/(o.h)^2, with o.h = mu/(2 c) at the horizon). Where

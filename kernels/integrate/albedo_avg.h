@@ -29,7 +29,7 @@
 #define AVG_LAYER_ALPHA RC(0.01)
 #define AVG_LAYER_BREAK RC(16.0)
 /* E_avg's own floor, relative to the value, for the plain (unweighted) average of the pairs with a
- * rescaled estimate (hemi_sharp_estimate): added once to the sum of the outer estimates and the
+ * rescaled estimate (the microfacet NDFs; host/cl/runner_avg.cpp): added once to the sum of the outer estimates and the
  * nodes' bare estimates (hemisphere_moments_chosen), in place of every node's floor
  * (HEMI_ERR_FLOOR_*, 1e-7 of E at the default budget), which assumed that each node missed by its
  * worst and all in one direction. Measured (tests/avg_rule_test.cpp with BRDFBAKE_AVG_SWEEP=1: the

@@ -7,19 +7,15 @@
 #define HEMI_PHI_GROW RC(4.0)  /* grading of the arc panels towards phimax; refined: halved */
 #define HEMI_PHI_GROW_OWN RC(16.0) /* the same from the Smith/Schlick layer n.i ~ alpha (hemi_phi) */
 
-/* Whether the estimate of a GK15 panel's error is sharpened (gk_error in quadrature.h): for the
- * models whose integrand is analytic on and near every panel. Every microfacet GAF: the min/max
- * kinks of cook-torrance and neumann sit on panel ends in phi (gaf_kinks) and in theta_h, with
- * substitutions where the phi integral has a root or 3/2-power end (gaf_theta_breaks,
- * gaf_root_at_normal), and the horizon layers of `none` and kelemen are graded
- * (gaf_horizon_layer). Before those (session 22), their rescaled estimates missed by up to 1.3e-6
- * of the value, so they kept |K15 - G7|, 6 to 52 times their error. Not for the charlie NDF (its
- * lobe on the horizon of h: at mu = 1, r = 5/8 charlie-smith's rescaled estimate is 3 times
- * below its error). */
-BRDF_FN int hemi_sharp_estimate(int ndf, int gaf) {
-  (void)gaf;
-  return ndf != NDF_CHARLIE;
-}
+/* Every GK15 panel's error estimate is sharpened (gk_error in quadrature.h, sharp = 1): every
+ * integrand is analytic on and near each panel, because the panels end where it is not. The
+ * min/max kinks of cook-torrance and neumann and charlie-smith's branch switch sit on panel ends
+ * in phi (gaf_kinks) and in theta_h (gaf_theta_breaks), with substitutions where the phi integral
+ * has a root or 3/2-power end (gaf_root_at_normal, the theta breaks) and where G itself is
+ * singular at i's horizon (gaf_root_at_horizon); the horizon layers of `none` and kelemen are
+ * graded (gaf_horizon_layer). Before those, the rescaled estimates missed by up to 1.3e-6 of the
+ * value (session 22: none, cook-torrance, kelemen, neumann) and 4 times the error (session 23:
+ * the charlie NDF), so those kept |K15 - G7|, 6 to 52 times their error. */
 
 /* Whether the GAF's shadowing of i changes on the scale n.i ~ alpha rather than n.i ~ mu: the Smith
  * Lambdas (Lambda_i ~ alpha tan(theta_i), so G1(i) goes from ~1 to ~n.i/alpha within n.i ~ alpha)
@@ -33,13 +29,13 @@ BRDF_FN int hemi_gaf_alpha_layer(int gaf) {
  * (gk_error) to ea, eb. All 15 nodes in one lane vector on the device (HEMI_GK_N = 16, the last of
  * weight 0); the nodes' values are kept for resasc (a second pass over them). */
 /* sq_lo / sq_hi: an end with a square-root singularity in the integrand (Fresnel's critical
- * angle), made smooth by phi = lo + L y^2 (hi - L (1 - y)^2; the smoothstep for both). */
+ * angle) or a power of n.i (charlie-smith at phimax), eased by phi = lo + L y^2 (hi - L (1 - y)^2;
+ * the smoothstep for both). */
 BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo,
                          real hi, int sq_lo, int sq_hi, real* ka, real* kb, real* ea, real* eb) {
   real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo), len = hi - lo;
   real sa = RC(0.0), sb = RC(0.0), da = RC(0.0), db = RC(0.0);
   real ra = RC(0.0), rb = RC(0.0); /* resasc: the Kronrod weights sum to 2, so the mean is sa/2 */
-  int sharp = hemi_sharp_estimate(ndf, gaf);
 #if BRDF_LANES < HEMI_GK_N
   real va[16], vb[16]; /* the host: one node per pass, kept for resasc's second pass */
 #endif
@@ -74,24 +70,20 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
     lane_store(fa, va, k);
     lane_store(fb, vb, k);
   }
-  if (sharp) {
-    for (k = 0; k < HEMI_GK_N; ++k) {
-      ra += GK15_WKL[k] * fabs(va[k] - RC(0.5) * sa);
-      rb += GK15_WKL[k] * fabs(vb[k] - RC(0.5) * sb);
-    }
+  for (k = 0; k < HEMI_GK_N; ++k) {
+    ra += GK15_WKL[k] * fabs(va[k] - RC(0.5) * sa);
+    rb += GK15_WKL[k] * fabs(vb[k] - RC(0.5) * sb);
   }
 #else
     /* the device: every node is in this one pass, so the mean is known already */
-    if (sharp) {
-      ra = lane_sum(wk * fabs(fa - RC(0.5) * sa));
-      rb = lane_sum(wk * fabs(fb - RC(0.5) * sb));
-    }
+    ra = lane_sum(wk * fabs(fa - RC(0.5) * sa));
+    rb = lane_sum(wk * fabs(fb - RC(0.5) * sb));
   }
 #endif
   *ka += sa * hw;
   *kb += sb * hw;
-  *ea += gk_error(fabs(da), ra, sharp) * hw;
-  *eb += gk_error(fabs(db), rb, sharp) * hw;
+  *ea += gk_error(fabs(da), ra, 1) * hw;
+  *eb += gk_error(fabs(db), rb, 1) * hw;
 }
 
 /* Trapezoid on the whole half-circle with n = 16 or 32 intervals (nodes cos(k pi/n)): values to
@@ -199,12 +191,13 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
     real hi = k < nb ? br[k] : phimax;
     if (hi > lo) {
       int sl = lo == fk, sh = hi == fk;
+      int hz = !full && hi == phimax && gaf_root_at_horizon(gaf); /* G singular at n.i = 0 (gaf.h) */
       /* 2^refine equal pieces; the substitutions stay on the pieces that touch the kink */
       int pieces = 1 << refine;
       real w = (hi - lo) / (real)pieces;
       for (int q = 0; q < pieces; ++q) {
         real a = lo + w * (real)q, b = q + 1 < pieces ? lo + w * (real)(q + 1) : hi;
-        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, a, b, q == 0 && sl, q + 1 == pieces && sh, ia, ib, ea, eb);
+        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, a, b, q == 0 && sl, q + 1 == pieces && (sh || hz), ia, ib, ea, eb);
       }
     }
     lo = hi;

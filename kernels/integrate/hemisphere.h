@@ -117,17 +117,15 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
     pea += wk * ea;
     peb += wk * eb;
   }
-  int sharp = hemi_sharp_estimate(ndf, gaf);
   real ra = RC(0.0), rb = RC(0.0); /* resasc (the Kronrod weights sum to 2: the mean is pka/2) */
-  if (sharp)
-    for (int k = 0; k < 15; ++k) {
-      ra += GK15_WKL[k] * fabs(ga[k] - RC(0.5) * pka);
-      rb += GK15_WKL[k] * fabs(gb[k] - RC(0.5) * pkb);
-    }
+  for (int k = 0; k < 15; ++k) {
+    ra += GK15_WKL[k] * fabs(ga[k] - RC(0.5) * pka);
+    rb += GK15_WKL[k] * fabs(gb[k] - RC(0.5) * pkb);
+  }
   res->a += pka;
   res->b += pkb;
-  res->err_a += gk_error(fabs(pda), ra, sharp) + pea;
-  res->err_b += gk_error(fabs(pdb), rb, sharp) + peb;
+  res->err_a += gk_error(fabs(pda), ra, 1) + pea;
+  res->err_b += gk_error(fabs(pdb), rb, 1) + peb;
 }
 
 /* One outer panel [cur, next] at budget `refine` (hemisphere_moments explains the levels). */

@@ -7,7 +7,7 @@
  * true error can exceed them. Measured in double against the converged rule (refine = 3), as the
  * texel's claim is made (the largest error over A, B, E against the largest estimate), over every
  * pair's 128x128 edge texels, every 32nd texel inside and 9x9 node grids (mu = 0, 1 and r = 0, 1),
- * both budgets: the sharpened estimates (hemi_sharp_estimate) miss by at most 5.5e-8 of the value
+ * both budgets: the sharpened estimates (gk_error) miss by at most 5.5e-8 of the value
  * (blinn-phong + smith-exact at mu = 0.47, r = 255/256; 4.4e-8 for ggx + smith at mu = 255/256,
  * r = 0.11, where G1(i) changes within n.i ~ alpha of i's horizon next to v1, inside one outer
  * panel), |K15 - G7| by at most 1.6e-7 of it (beckmann + none, mu = 1/256, r = 255/256; none
@@ -24,13 +24,16 @@
  * the 128x128 edges): its own floor, 1e-9, kept the same margin (2.2) as the default's. Measured
  * on the unweighted moments of the pairs without a tabulated Lambda (whose 6.6e-7 dwarfs it), at
  * levels 0 and 1; the Fresnel-weighted moments and the convergence ladders' levels 2 and up use it
- * unmeasured. Session 22 sharpened none, cook-torrance, kelemen and neumann too (azimuth.h
- * hemi_sharp_estimate): over the same texels their misses are at most 2.5e-8 of the value at the
+ * unmeasured. Session 22 sharpened none, cook-torrance, kelemen and neumann too
+ * (azimuth.h): over the same texels their misses are at most 2.5e-8 of the value at the
  * default budget and 6.2e-10 at the refined one (gaussian + neumann at the 128x128 edges, mu =
- * 1/256), so the refined floor is now 1.5e-9 (margin 2.4). HEMI_ERR_FLOOR_PLAIN is the charlie
- * NDF's, whose estimate stays |K15 - G7|. */
+ * 1/256), so the refined floor is now 1.5e-9 (margin 2.4). Session 23 rescaled the charlie NDF's
+ * estimates too (charlie-smith's kinks and horizon singularity, gaf.h): against the sheen reference
+ * (host/reference/sheen_reference.cpp, independent of these rules) over 17 r x 27 mu per sheen
+ * pair (charlie-smith, neubelt, none, implicit), they miss by at most 4.4e-9 of the value at the
+ * default budget and 1.1e-10 at the refined one (charlie-smith, r = 1, mu = 3/8 and 0.49), inside
+ * both floors. Before that charlie kept |K15 - G7| with a floor of 2e-7. */
 #define HEMI_ERR_FLOOR_SHARP RC(1e-7)
-#define HEMI_ERR_FLOOR_PLAIN RC(2e-7)
 #define HEMI_ERR_FLOOR_REFINED RC(1.5e-9)
 /* The exact Smith Lambda of blinn-phong and the gaussian is tabulated (smith_tables.h): its G1 is
  * within 3.3e-7 of the exact one (docs/MODELS.md "Exact Smith Lambda", the generator's largest at
@@ -47,16 +50,13 @@ BRDF_FN void hemi_add_relative(real f, HemiResult* h) {
   h->err_a += f * fabs(h->a);
   h->err_b += f * fabs(h->b);
 }
-BRDF_FN real hemi_floor(int ndf, int gaf, int refine) {
-  if (!hemi_sharp_estimate(ndf, gaf)) return HEMI_ERR_FLOOR_PLAIN;
-  return refine > 0 ? HEMI_ERR_FLOOR_REFINED : HEMI_ERR_FLOOR_SHARP;
-}
+BRDF_FN real hemi_floor(int refine) { return refine > 0 ? HEMI_ERR_FLOOR_REFINED : HEMI_ERR_FLOOR_SHARP; }
 
 /* The moments at (mu, alpha) and their error estimates (absolute): the rule's, the floor, and the
  * model's own approximation (the tabulated exact Lambda). */
 BRDF_FN HemiResult hemisphere_moments(int ndf, int gaf, BrdfParams p, real mu, int refine) {
   HemiResult h = hemi_rule(ndf, gaf, p, mu, refine);
-  hemi_add_relative(hemi_floor(ndf, gaf, refine) + hemi_model_error(ndf, gaf), &h);
+  hemi_add_relative(hemi_floor(refine) + hemi_model_error(ndf, gaf), &h);
   return h;
 }
 
@@ -71,17 +71,6 @@ BRDF_FN real hemi_rel_error(HemiResult h) {
   return fmax(ee, fmax(ea, eb));
 }
 
-/* The charlie NDF, whose estimate stays |K15 - G7| (hemi_sharp_estimate), is refined only above
- * this. Measured when none, cook-torrance, kelemen and neumann kept it too (before session 22):
- * that estimate was a median 20 to 500 times their true error, and the refined budget's own stayed
- * near 1e-6 to 3e-6 where it was pessimistic, so a lower target refined 30% (at 1e-6) to 70% (at
- * 3e-7) of a table, 4 to 9 times the time, for claims at most 3 to 6 times tighter. */
-#define HEMI_PLAIN_TARGET RC(8e-6)
-/* The target a texel is refined above: the bake's, or charlie's own where that is larger. */
-BRDF_FN real hemi_target(int ndf, int gaf, real target) {
-  return hemi_sharp_estimate(ndf, gaf) ? target : fmax(target, HEMI_PLAIN_TARGET);
-}
-
 /* The default budget, and the refined one where its estimate exceeds `target` (the refined result
  * is kept if its estimate is smaller); level >= 0 instead: that budget alone (= hemisphere_moments).
  * The tabulated Lambda's error is added after the choice: no budget reduces it. bare: the chosen
@@ -91,13 +80,12 @@ BRDF_FN real hemi_target(int ndf, int gaf, real target) {
  * one copy of the estimator, not one per budget (PoCL inlines every call site). */
 BRDF_FN HemiResult hemisphere_moments_chosen(int ndf, int gaf, BrdfParams p, real mu, int level, real target,
                                              int bare) {
-  target = hemi_target(ndf, gaf, target);
   HemiResult h;
   real e = RC(0.0);
   int first = 1;
   for (int l = level < 0 ? 0 : level;; l = 1) {
     HemiResult c = hemi_rule(ndf, gaf, p, mu, l), cf = c;
-    hemi_add_relative(hemi_floor(ndf, gaf, l), &cf);
+    hemi_add_relative(hemi_floor(l), &cf);
     real ec = hemi_rel_error(cf);
     if (first || ec < e) {
       h = bare ? c : cf;

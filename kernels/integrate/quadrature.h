@@ -100,8 +100,7 @@ BRDF_FN void sort_ascending(real* v, int n) {
  *   err = resasc min(1, (C kg/resasc)^(3/2)),
  * which assumes K15 converges faster than G7 by the power 3/2, as on integrands analytic around
  * the panel. QUADPACK's C = 200 is a margin for double precision; the estimators here use
- * C = GK_SHARP_C = 3, measured: on every NDF/GAF pair the sharp estimators are used for
- * (hemi_sharp_estimate) the largest miss of the texel's estimate against its true error is 5.5e-8
+ * C = GK_SHARP_C = 3, measured: on every NDF/GAF pair the largest miss of the texel's estimate against its true error is 5.5e-8
  * of the value (edges and node grids included; hemisphere_texel.h HEMI_ERR_FLOOR_SHARP covers it), and a
  * 128x128 ggx + smith-correlated table refines 0.3% of its texels at HEMI_BAKE_TARGET (C = 10:
  * 15%). sharp = 0 keeps kg, a bound of K15's error wherever G7's error exceeds K15's. */

@@ -19,11 +19,25 @@
  *    views v2 ~ e mu^2/4 is tiny and H changes on that scale (n.i, n.o ~ mu), so the panels after the
  *    first are kept within 3 times their distance from both v = 0 and v2; and graded towards v1;
  *  - full region [v1, v1 + HEMI_VCAP]: widths HEMI_BREAKS counted from v1 (smooth at v1: the whole
- *    circle's integrand is smooth there, as in hemisphere.h).
- * The bound is hemisphere.h's: |K15 - G7| of the outer rule plus the inner rules' bounds.
+ *    circle's integrand is smooth there, as in hemisphere.h);
+ *  - both cut at the GAF's theta breaks (gaf.h gaf_theta_breaks: charlie-smith's n.i = 1/2), with
+ *    the square substitution on the panels beside them, as in hemisphere.h.
+ * The estimate is hemisphere.h's: gk_error of the outer rule plus the inner rules' estimates.
  * alpha = 0: the lobe lies on the horizon, where n.i = 2 (o.h) c - mu = -mu < 0, so E = 0 for mu > 0
  * (the corner mu = 0 is evaluated at HEMI_CORNER_R, hemisphere_texel.h).
  */
+/* The first of the theta breaks' v[0 .. n) inside (cur, end), or end. */
+BRDF_FN real sheen_next_break(const real* v, int n, real cur, real end) {
+  for (int q = 0; q < n; ++q)
+    if (v[q] > cur && v[q] < end) end = v[q];
+  return end;
+}
+BRDF_FN int sheen_is_break(const real* v, int n, real x) {
+  int hit = 0;
+  for (int q = 0; q < n; ++q) hit |= v[q] == x;
+  return hit;
+}
+
 BRDF_FN HemiResult sheen_moments(int gaf, BrdfParams p, real mu, int refine) {
   HemiResult res;
   res.a = 0;
@@ -38,6 +52,9 @@ BRDF_FN HemiResult sheen_moments(int gaf, BrdfParams p, real mu, int refine) {
   real v2 = log1p(t1 * t1) / ie;
   real v1 = t1 > RC(0.0) ? log1p(RC(1.0) / (t1 * t1)) / ie : RC(1.0) / RC(0.0);
   real pend = fmin(v1, v2 + HEMI_VCAP);
+  real gt2[GAF_MAX_THETA_BREAKS], gv[GAF_MAX_THETA_BREAKS];
+  int ng = gaf_theta_breaks(gaf, mu, s, gt2);
+  for (int q = 0; q < ng; ++q) gv[q] = ndf_v_of_tan2(ndf, p, gt2[q]);
   real cur = v2;
   int k = 0;
   while (cur < pend) {
@@ -45,20 +62,23 @@ BRDF_FN HemiResult sheen_moments(int gaf, BrdfParams p, real mu, int refine) {
     real next = k < HEMI_NBREAKS ? v2 + HEMI_BREAKS[k] : pend;
     if (cur > RC(0.0)) next = fmin(next, RC(4.0) * cur);
     if (cur > v2) next = fmin(next, v2 + RC(4.0) * (cur - v2));
-    next = fmin(next, pend);
+    next = fmin(next, sheen_next_break(gv, ng, cur, pend));
     if (pend == v1 && next < v1 && next - cur > RC(3.0) * (v1 - next)) {
       real d = v1 - next;
       while (v1 - RC(4.0) * d > cur) d *= RC(4.0);
       next = v1 - d;
     }
-    hemi_panel(ndf, gaf, p, mu, s, t1, v1, cur, next, 1, cur == v2, next == v1, refine, &res);
+    hemi_panel(ndf, gaf, p, mu, s, t1, v1, cur, next, 1, cur == v2 || sheen_is_break(gv, ng, cur),
+               next == v1 || sheen_is_break(gv, ng, next), refine, &res);
     cur = next;
   }
   if (v1 < v2 + HEMI_VCAP) {
     cur = v1;
-    for (k = 0; k < HEMI_NBREAKS; ++k) {
-      real next = v1 + HEMI_BREAKS[k];
-      hemi_panel(ndf, gaf, p, mu, s, t1, v1, cur, next, 0, 0, 0, refine, &res);
+    for (k = 0; k < HEMI_NBREAKS;) {
+      real next = fmin(v1 + HEMI_BREAKS[k], sheen_next_break(gv, ng, cur, v1 + HEMI_BREAKS[k]));
+      hemi_panel(ndf, gaf, p, mu, s, t1, v1, cur, next, 0, sheen_is_break(gv, ng, cur), sheen_is_break(gv, ng, next),
+                 refine, &res);
+      if (next == v1 + HEMI_BREAKS[k]) ++k;
       cur = next;
     }
   }
