@@ -174,10 +174,12 @@ TEST(Sheen, KernelAlbedoAvgAndKp) {
     KernelTable t = runner().albedoAvg(NDF_CHARLIE, gaf, n, false);
     for (int j = n - 1; j < n; ++j) {  // the nested reference takes minutes per r at small r
       double r = static_cast<float>((j + 0.5) / n);
-      // 2 int E mu dmu of the reference's E by Gauss-Legendre 30 on [0, 0.1] and [0.1, 1] (E is smooth
-      // in mu at this r; reference::sheenAlbedoAvg's nested adaptive rule takes minutes)
+      // 2 int E mu dmu of the reference's E by Gauss-Legendre 30 on [0, 0.1], [0.1, 1/2] and [1/2, 1]
+      // (E is smooth in mu at this r but for charlie-smith's kink at mu = 1/2, where the view's fitted
+      // Lambda switches branch: without that split this reference was off by 3e-7;
+      // reference::sheenAlbedoAvg's nested adaptive rule takes minutes)
       double want = 0;
-      for (auto [lo, hi] : {std::pair{0.0, 0.1}, std::pair{0.1, 1.0}})
+      for (auto [lo, hi] : {std::pair{0.0, 0.1}, std::pair{0.1, 0.5}, std::pair{0.5, 1.0}})
         want += boost::math::quadrature::gauss<double, 30>::integrate(
             [&](double mu) { return 2 * mu * reference::sheenAlbedo(gaf, r, mu); }, lo, hi);
       double err = rel(t.planes[0][j], want);
@@ -200,12 +202,12 @@ TEST(Sheen, KernelAlbedoAvgAndKp) {
 // to ~1e-9 here: two rules), of reference::sheenAlbedo.
 TEST(Sheen, AlbedoAvgMeetsTheGoalAtTheSmallestRoughness) {
   const int n = 32;
-  const double edges[] = {0, 1e-4, 1e-3, 4e-3, 0.01, 0.03, 0.1, 0.3, 1};
+  const double edges[] = {0, 1e-4, 1e-3, 4e-3, 0.01, 0.03, 0.1, 0.3, 0.5, 1};
   for (int gaf : {GAF_CHARLIE_SMITH, GAF_NEUBELT}) {
     KernelTable t = runner().albedoAvg(NDF_CHARLIE, gaf, n, false);
-    for (int j = 0; j < n; ++j) EXPECT_LE(t.err[j], KernelRunner::kAvgGoal) << gafNames()[gaf] << " entry " << j;
+    for (int j = 0; j < n; ++j) EXPECT_LE(t.err[j], KernelRunner::kAvgGoalSheen) << gafNames()[gaf] << " entry " << j;
     double r = static_cast<float>(0.5 / n), want[2] = {0, 0};
-    for (int k = 0; k + 1 < 9; ++k) {
+    for (int k = 0; k + 1 < 10; ++k) {
       auto f = [&](double mu) { return 2 * mu * reference::sheenAlbedo(gaf, r, mu); };
       want[0] += boost::math::quadrature::gauss<double, 20>::integrate(f, edges[k], edges[k + 1]);
       want[1] += boost::math::quadrature::gauss<double, 30>::integrate(f, edges[k], edges[k + 1]);

@@ -38,7 +38,8 @@ std::string hemisphereMethod() {
          fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorRefined) + " at the refined budget) of the value + float arithmetic (K1 min(1,|value|) + K0) u (u = 2^-24; " +
          "(K1, K0) = " + model(kHemiFloatGgx) + " ggx, " + model(kHemiFloatBeckmann) + " beckmann, " +
          model(kHemiFloatBlinnPhong) + " blinn-phong, " + model(kHemiFloat) + " gaussian and every Fresnel-weighted moment, " +
-         model(kSheenFloat) + " charlie, " + model(kCharlieSmithFloat) + " with charlie-smith) + storage rounding";
+         model(kSheenFloat) + " charlie with none, " + model(kSheenFloatBounded) + " with neubelt and implicit, " +
+         model(kCharlieSmithFloat) + " with charlie-smith) + storage rounding";
 }
 
 }  // namespace
@@ -55,10 +56,10 @@ std::string methodText(TableKind kind) {
       return "E_avg = 2 int E(mu) mu dmu by Gauss-Kronrod panels on [0,1]: one GK31 panel, or where alpha < " +
              fmtG(brdf64::kAvgLayerAlpha) + " GK15 on [0," + fmtG(brdf64::kAvgLayerBreak) +
              " alpha] (the horizon layer) and GK31 on the rest; the worst halved until the bound is under " +
-             fmtG(KernelRunner::kAvgGoal) +
+             fmtG(KernelRunner::kAvgGoal) + " (" + fmtG(KernelRunner::kAvgGoalSheen) + " for charlie)" +
              "; sums in double on the host, the nodes' float positions corrected to first order; error: the panels' "
-             "|K-G| (rescaled where E is analytic) + the nodes' estimates (for the plain average of the GAFs with "
-             "rescaled estimates: their bare estimates + " +
+             "|K-G| (rescaled where E is analytic) + the nodes' estimates (for the plain average of the microfacet "
+             "NDFs: their bare estimates + " +
              fmtG(brdf64::kAvgFloor) + " of E_avg, measured on the averages, + " +
              fmtG(brdf64::avg_model_error(NDF_BLINN_PHONG, GAF_SMITH_EXACT)) + " (blinn-phong) or " +
              fmtG(brdf64::avg_model_error(NDF_GAUSSIAN, GAF_SMITH_EXACT)) +

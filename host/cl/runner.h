@@ -81,6 +81,9 @@ class KernelRunner {
   KernelTable albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w = {}, float rLo = 0.0f,
                         float rHi = 1.0f);
   static constexpr double kAvgGoal = 8e-6;  // an entry's bound (relative to max(1, E_avg)), as a texel's
+  // charlie's: its E(mu) rises within mu ~ 0.05 at small r, where one more halving brings the bound
+  // from ~3e-6 to ~4e-8 (neubelt, r = 1/64); the microfacet NDFs' bounds are far under either goal
+  static constexpr double kAvgGoalSheen = 3e-7;
   // The hemisphere kernel at arbitrary points: nodes[k] = (mu, r, refinement target, unused);
   // planes {the value (E, or with a Fresnel weight that model's albedo), its absolute bound, A, B}.
   // bare: the bound is the rule's estimate alone (kernels/integrate/hemisphere.h

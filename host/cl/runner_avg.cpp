@@ -187,21 +187,21 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
                        : (static_cast<float>(j) + 0.5f) / static_cast<float>(n);
     rs[j] = rLo + (rHi - rLo) * t;
   }
-  // The rule's estimate is sharpened (brdf64::gk_error) for the microfacet NDFs: E(mu) is then
-  // analytic on each starting panel (the horizon layer has its own; cook-torrance and neumann's
-  // panels end at their view breaks, gaf_view_breaks), except for a Fresnel weight with a critical
-  // angle (eta < 1), whose E_F(mu) has a square-root kink there. Not for charlie: its layer near
-  // mu = 0 is left to the halving, and charlie-smith's E(mu) has a kink at mu = 1/2 (its fitted
-  // Lambda of the view switches branch there), so its rule keeps |K - G| and every node's floor.
+  // The rule's estimate is sharpened (brdf64::gk_error): E(mu) is analytic on each starting panel
+  // (the horizon layer has its own; cook-torrance, neumann and charlie-smith's panels end at their
+  // view breaks, gaf_view_breaks), except for a Fresnel weight with a critical angle (eta < 1),
+  // whose E_F(mu) has a square-root kink there. Charlie (sharpened since session 23) halves to its
+  // own goal and keeps every node's floor: AVG_ERR_FLOOR was measured on the microfacet pairs.
   // |K - G| estimates the Gauss rule's error; rescaled, it is at most 3.1e-8 on every such pair's
   // 32-entry table, against 2.8e-6 (ggx + schlick-ggx, r = 0.05 to 0.15, where E(mu) changes on the
   // scale mu ~ alpha).
-  const bool sharp = !isSheenNdf(ndf) && brdf64::fresnel_kink(w.moments, w.fresnel, w.x) < 0;
+  const bool sheen = isSheenNdf(ndf);
+  const bool sharp = brdf64::fresnel_kink(w.moments, w.fresnel, w.x) < 0;
   // The plain albedo of those pairs takes the nodes' bare estimates and the floor measured on E_avg
   // itself (kernels/integrate/albedo_avg.h AVG_ERR_FLOOR); the rest, every node's own floor.
-  const bool bare = sharp && w.moments == HEMI_SPLIT;
+  const bool bare = sharp && w.moments == HEMI_SPLIT && !sheen;
   std::vector<AvgSum> sums = averageRule(
-      rs, sharp, kAvgGoal,
+      rs, sharp, sheen ? kAvgGoalSheen : kAvgGoal,
       [&](const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound) {
         std::vector<cl_float4> in;
         in.reserve(nodes.size());
