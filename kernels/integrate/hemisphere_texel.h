@@ -11,8 +11,8 @@
  * (blinn-phong + smith-exact at mu = 0.47, r = 255/256; 4.4e-8 for ggx + smith at mu = 255/256,
  * r = 0.11, where G1(i) changes within n.i ~ alpha of i's horizon next to v1, inside one outer
  * panel), |K15 - G7| by at most 1.6e-7 of it (beckmann + none, mu = 1/256, r = 255/256; none
- * is rescaled since session 22, and the 2e-7 plain floor is left to charlie, whose own misses
- * tests/sheen_test.cpp checks against its reference). The
+ * is rescaled since session 22, charlie since session 23, so every pair has the sharpened
+ * estimate's floors below). The
  * floor, relative to the value so that it scales with what the rule integrates (and averages into
  * E_avg's node bounds where the average keeps them; the plain average of the rescaled pairs has a
  * floor of its own, albedo_avg.h AVG_ERR_FLOOR), covers both; tests/accuracy_test.cpp checks every such texel against the
