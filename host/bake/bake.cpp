@@ -56,12 +56,12 @@ enum class Arith {
   HemiAvgFresnel,  // E_F,avg: the nodes' float error bounds averaged, plus the rounding
   Kp,          // k_p's rule
   HostDouble,  // computed in double on the host: the rounding to float
-  Flat,        // the diffuse kernel: kFloatArithmeticAllowance
+  Diffuse,     // the diffuse kernel: floatArithmeticError of E with its model's diffuseFloatModel
 };
 
 // Each texel's claim from one kernel run: its quadrature estimate plus its float arithmetic,
 // merged (the largest) into `claim`.
-void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int ndf, int gaf) {
+void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int ndf, int gaf, int diffuse = -1) {
   if (claim.empty()) claim.assign(t.err.size(), 0.0);
   for (size_t x = 0; x < t.err.size(); ++x) {
     double scale = 0;
@@ -74,7 +74,7 @@ void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int nd
       case Arith::HemiAvgFresnel: arith = avgFloatArithmeticError(scale, ndf, gaf, true); break;
       case Arith::Kp: arith = floatArithmeticError(scale, kKpFloat); break;
       case Arith::HostDouble: arith = floatArithmeticError(scale, kRoundToFloat); break;
-      case Arith::Flat: arith = kFloatArithmeticAllowance; break;
+      case Arith::Diffuse: arith = floatArithmeticError(scale, diffuseFloatModel(diffuse)); break;
     }
     claim[x] = std::max(claim[x], static_cast<double>(t.err[x]) + arith);
   }
@@ -126,7 +126,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       } else if (job.diffuse >= 0) {
         // the diffuse albedo over (mu, r) in B, as HDRP's pre-integrated FGD table keeps it
         KernelTable d = runner.diffuseAlbedo(job.diffuse, job.width, job.height, 0.0f, 1.0f, job.nodeGrid);
-        addClaims(claim, d, Arith::Flat, job.ndf, job.gaf);
+        addClaims(claim, d, Arith::Diffuse, job.ndf, job.gaf, job.diffuse);
         img.planes = {kt.planes[0], kt.planes[1], d.planes[0]};
         fresnel = "schlick";
         channels = "R=A,G=B,B=E_d (" + diffuseNames()[job.diffuse] + " diffuse albedo at roughness r)";
@@ -142,7 +142,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
         DiffuseAxis ax = diffuseAxis(job.diffuse);
         kt = runner.diffuseAlbedo(job.diffuse, job.width, job.height, static_cast<float>(ax.lo),
                                   static_cast<float>(ax.hi), job.nodeGrid);
-        addClaims(claim, kt, Arith::Flat, job.ndf, job.gaf);
+        addClaims(claim, kt, Arith::Diffuse, job.ndf, job.gaf, job.diffuse);
         img.planes = {kt.planes[0]};
         channels = "R=G=B=E_d (" + diffuseNames()[job.diffuse] + " diffuse albedo, rho = 1)";
         axes = "mu," + ax.name;

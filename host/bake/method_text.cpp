@@ -47,7 +47,9 @@ std::string hemisphereMethod() {
 std::string diffuseMethod() {
   return "theta_i in GK15 panels (" + std::to_string(DIFFUSE_PANELS) +
          " each side of theta_o), phi by GK15 on [0,pi/2] and [pi/2,pi] where f_d depends on it; error |K15-G7| + " +
-         fmtG(kFloatArithmeticAllowance) + " float allowance + storage rounding";
+         "float arithmetic (K1 min(1,|E|) + K0) u (u = 2^-24; (K1, K0) = (" + fmtG(kDiffuseFloat.k1) + ", " +
+         fmtG(kDiffuseFloat.k0) + "), (" + fmtG(kDiffuseFloatAsPrinted.k1) + ", " + fmtG(kDiffuseFloatAsPrinted.k0) +
+         ") for shirley-as-printed) + storage rounding";
 }
 
 std::string methodText(TableKind kind) {
