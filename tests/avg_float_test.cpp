@@ -106,7 +106,8 @@ TEST_P(AvgFloat, AverageFloatErrorWithinItsModel) {
               worstUse);
 }
 
-// (charlie's averages take several panels and keep the summed bound: sheen_test.cpp)
+// (charlie's averages have a float model of their own, measured on its tables and checked by
+// sheen_test.cpp's Sheen.FloatArithmeticWithinItsModels)
 INSTANTIATE_TEST_SUITE_P(MicrofacetNdfs, AvgFloat, ::testing::Values(NDF_GGX, NDF_BECKMANN, NDF_BLINN_PHONG, NDF_GAUSSIAN),
                          [](const ::testing::TestParamInfo<int>& info) {
                            std::string s = ndfNames()[info.param];

@@ -25,11 +25,11 @@
 // error at every one of those texels. Fresnel-weighted moments (E_F, F82-tint's C) keep the
 // (6 s + 3) u every NDF had before (not measured per NDF; tests/fresnel_test.cpp checks ggx +
 // smith-correlated's whole claims against the reference). The
-// charlie NDF with charlie-smith reaches 29 u (its G/(n.o) grows without bound towards grazing
-// views; mu = 1/256), with its other visibilities 6.5 u (none, s = 0.55). Re-measured in session 23
+// charlie NDF with charlie-smith reached 29 u before session 23 (its G/(n.o) grows without bound
+// towards grazing views; mu = 1/256), with its other visibilities 6.5 u (none, s = 0.55). Re-measured in session 23
 // (the rescaled estimates' panels: charlie-smith's kink breaks and horizon substitution), every
 // texel of a 32x32 and a 128x128 table against the same rule in double at the closer budget:
-// charlie-smith 36.5 u (mu = 3/256, r = 0.14), so (48 s + 4) u, at least 1.43 times; none 8.9 u,
+// charlie-smith 36.5 u (mu = 3/256, r = 0.14), so (48 s + 4) u, at least 1.42 times; none 8.9 u,
 // (10 s + 4) u at least 1.43 times; neubelt 3.9 u and implicit 1.5 u, (4 s + 3) u at least 1.78
 // times (they had none's model, 3.3 to 5 times their error). tests/accuracy_test.cpp and
 // tests/sheen_test.cpp check the models at every such texel. Another OpenCL device with less
@@ -57,7 +57,7 @@ constexpr FloatModel kHemiFloatBeckmann{2.5, 3};
 constexpr FloatModel kHemiFloatBlinnPhong{3.5, 3};
 // The same for the charlie (sheen) NDF: with charlie-smith, and with its other visibilities.
 constexpr FloatModel kCharlieSmithFloat{48, 4};
-constexpr FloatModel kSheenFloat{10, 4};        // gaf none
+constexpr FloatModel kSheenFloatNone{10, 4};
 constexpr FloatModel kSheenFloatBounded{4, 3};  // neubelt and implicit, whose G/(n.o) stays bounded
 // k_p: one GK15 sum of e^-v times a constant (the gaussian: a smooth ratio) per panel; measured at
 // most 2.3 u min(1, |v|) on the 9-node and 32-texel grids of the four NDFs.
@@ -83,7 +83,7 @@ constexpr FloatModel kRoundToFloat{1, 0};
 // weighted: a Fresnel-weighted moment (HEMI_FRESNEL, HEMI_F82C).
 inline FloatModel hemiFloatModel(int ndf, int gaf, bool weighted = false) {
   if (ndf == NDF_CHARLIE)
-    return gaf == GAF_CHARLIE_SMITH ? kCharlieSmithFloat : gaf == GAF_NONE ? kSheenFloat : kSheenFloatBounded;
+    return gaf == GAF_CHARLIE_SMITH ? kCharlieSmithFloat : gaf == GAF_NONE ? kSheenFloatNone : kSheenFloatBounded;
   if (weighted) return kHemiFloat;
   switch (ndf) {
     case NDF_GGX: return kHemiFloatGgx;

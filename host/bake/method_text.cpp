@@ -38,7 +38,7 @@ std::string hemisphereMethod() {
          fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorRefined) + " at the refined budget) of the value + float arithmetic (K1 min(1,|value|) + K0) u (u = 2^-24; " +
          "(K1, K0) = " + model(kHemiFloatGgx) + " ggx, " + model(kHemiFloatBeckmann) + " beckmann, " +
          model(kHemiFloatBlinnPhong) + " blinn-phong, " + model(kHemiFloat) + " gaussian and every Fresnel-weighted moment, " +
-         model(kSheenFloat) + " charlie with none, " + model(kSheenFloatBounded) + " with neubelt and implicit, " +
+         model(kSheenFloatNone) + " charlie with none, " + model(kSheenFloatBounded) + " with neubelt and implicit, " +
          model(kCharlieSmithFloat) + " with charlie-smith) + storage rounding";
 }
 

@@ -7,16 +7,6 @@
 #define HEMI_PHI_GROW RC(4.0)  /* grading of the arc panels towards phimax; refined: halved */
 #define HEMI_PHI_GROW_OWN RC(16.0) /* the same from the Smith/Schlick layer n.i ~ alpha (hemi_phi) */
 
-/* Every GK15 panel's error estimate is sharpened (gk_error in quadrature.h, sharp = 1): every
- * integrand is analytic on and near each panel, because the panels end where it is not. The
- * min/max kinks of cook-torrance and neumann and charlie-smith's branch switch sit on panel ends
- * in phi (gaf_kinks) and in theta_h (gaf_theta_breaks), with substitutions where the phi integral
- * has a root or 3/2-power end (gaf_root_at_normal, the theta breaks) and where G itself is
- * singular at i's horizon (gaf_root_at_horizon); the horizon layers of `none` and kelemen are
- * graded (gaf_horizon_layer). Before those, the rescaled estimates missed by up to 1.3e-6 of the
- * value (session 22: none, cook-torrance, kelemen, neumann) and 4 times the error (session 23:
- * the charlie NDF), so those kept |K15 - G7|, 6 to 52 times their error. */
-
 /* Whether the GAF's shadowing of i changes on the scale n.i ~ alpha rather than n.i ~ mu: the Smith
  * Lambdas (Lambda_i ~ alpha tan(theta_i), so G1(i) goes from ~1 to ~n.i/alpha within n.i ~ alpha)
  * and Schlick's G1 = n.i/(n.i (1 - k) + k) with k ~ alpha (schlick-ggx-direct's k >= 1/8 is not). */
@@ -27,8 +17,17 @@ BRDF_FN int hemi_gaf_alpha_layer(int gaf) {
 
 /* GK15 over phi in [lo, hi]: adds the Kronrod values to ka, kb and their error estimates
  * (gk_error) to ea, eb. All 15 nodes in one lane vector on the device (HEMI_GK_N = 16, the last of
- * weight 0); the nodes' values are kept for resasc (a second pass over them). */
-/* sq_lo / sq_hi: an end with a square-root singularity in the integrand (Fresnel's critical
+ * weight 0); the nodes' values are kept for resasc (a second pass over them).
+ * The estimates here and on hemisphere.h's outer panels are sharpened (gk_error, sharp = 1) for
+ * every pair: the integrand is analytic on and near each panel, because the panels end where it is
+ * not. The min/max kinks of cook-torrance and neumann and charlie-smith's branch switch sit on
+ * panel ends in phi (gaf_kinks) and in theta_h (gaf_theta_breaks), with substitutions where the
+ * phi integral has a root or 3/2-power end (gaf_root_at_normal, the theta breaks) and where G
+ * itself is singular at i's horizon (gaf_root_at_horizon); the horizon layers of `none` and
+ * kelemen are graded (gaf_horizon_layer). Before those, the rescaled estimates missed by up to
+ * 1.3e-6 of the value (session 22: none, cook-torrance, kelemen, neumann) and fell 4 times below
+ * the error (session 23: the charlie NDF), so those kept |K15 - G7|, 6 to 52 times their error.
+ * sq_lo / sq_hi: an end with a square-root singularity in the integrand (Fresnel's critical
  * angle) or a power of n.i (charlie-smith at phimax), eased by phi = lo + L y^2 (hi - L (1 - y)^2;
  * the smoothstep for both). */
 BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo,

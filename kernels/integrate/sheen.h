@@ -75,10 +75,10 @@ BRDF_FN HemiResult sheen_moments(int gaf, BrdfParams p, real mu, int refine) {
   if (v1 < v2 + HEMI_VCAP) {
     cur = v1;
     for (k = 0; k < HEMI_NBREAKS;) {
-      real next = fmin(v1 + HEMI_BREAKS[k], sheen_next_break(gv, ng, cur, v1 + HEMI_BREAKS[k]));
+      real end = v1 + HEMI_BREAKS[k], next = sheen_next_break(gv, ng, cur, end);
       hemi_panel(ndf, gaf, p, mu, s, t1, v1, cur, next, 0, sheen_is_break(gv, ng, cur), sheen_is_break(gv, ng, next),
                  refine, &res);
-      if (next == v1 + HEMI_BREAKS[k]) ++k;
+      if (next == end) ++k;
       cur = next;
     }
   }
