@@ -117,11 +117,14 @@ inline double floatArithmeticError(double scale, FloatModel m = kHemiFloat) {
 // Fresnel-weighted averages keep the summed bound. Charlie's (session 23; it had the summed bound,
 // 22 u for charlie-smith at E_avg ~ 0.3): the bake's table against its rule in double at the same
 // nodes, every entry of 16-, 32- and 64-entry tables and a 33-node grid: at most 2.10 u
-// (charlie-smith, r = 0.90; the stored value's rounding included), 0.50 u (neubelt): 3 u.
+// (charlie-smith, r = 0.90; the stored value's rounding included) and 2.01 u (none): 3 u; 0.50 u
+// (neubelt) and 0.40 u (implicit): 1 u.
 constexpr FloatModel kAvgFloatMicrofacet[4] = {{0, 2.3}, {0, 2.15}, {0, 2.4}, {0, 5.76}};  // NDF_GGX .. NDF_GAUSSIAN
 constexpr FloatModel kAvgFloatSheen{0, 3};
+constexpr FloatModel kAvgFloatSheenBounded{0, 1};  // neubelt and implicit
 inline double avgFloatArithmeticError(double value, int ndf, int gaf, bool weighted = false) {
-  if (ndf == NDF_CHARLIE) return floatArithmeticError(value, kAvgFloatSheen);
+  if (ndf == NDF_CHARLIE)
+    return floatArithmeticError(value, gaf == GAF_NEUBELT || gaf == GAF_IMPLICIT ? kAvgFloatSheenBounded : kAvgFloatSheen);
   if (weighted) {
     FloatModel m = hemiFloatModel(ndf, gaf, weighted);
     return floatArithmeticError(value, FloatModel{m.k1, 2 * m.k0});

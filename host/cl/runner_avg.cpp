@@ -191,7 +191,7 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
   // (the horizon layer has its own; cook-torrance, neumann and charlie-smith's panels end at their
   // view breaks, gaf_view_breaks), except for a Fresnel weight with a critical angle (eta < 1),
   // whose E_F(mu) has a square-root kink there. Charlie (sharpened since session 23) halves to its
-  // own goal and keeps every node's floor: AVG_ERR_FLOOR was measured on the microfacet pairs.
+  // own goal (its E(mu) at small r rises within mu ~ 0.05 of the horizon).
   // |K - G| estimates the Gauss rule's error; rescaled, it is at most 3.1e-8 on every such pair's
   // 32-entry table, against 2.8e-6 (ggx + schlick-ggx, r = 0.05 to 0.15, where E(mu) changes on the
   // scale mu ~ alpha).
@@ -199,7 +199,7 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
   const bool sharp = brdf64::fresnel_kink(w.moments, w.fresnel, w.x) < 0;
   // The plain albedo of those pairs takes the nodes' bare estimates and the floor measured on E_avg
   // itself (kernels/integrate/albedo_avg.h AVG_ERR_FLOOR); the rest, every node's own floor.
-  const bool bare = sharp && w.moments == HEMI_SPLIT && !sheen;
+  const bool bare = sharp && w.moments == HEMI_SPLIT;
   std::vector<AvgSum> sums = averageRule(
       rs, sharp, sheen ? kAvgGoalSheen : kAvgGoal,
       [&](const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound) {

@@ -29,7 +29,7 @@
 #define AVG_LAYER_ALPHA RC(0.01)
 #define AVG_LAYER_BREAK RC(16.0)
 /* E_avg's own floor, relative to the value, for the plain (unweighted) average of the pairs with a
- * rescaled estimate (the microfacet NDFs; host/cl/runner_avg.cpp): added once to the sum of the outer estimates and the
+ * rescaled estimate (every NDF; host/cl/runner_avg.cpp): added once to the sum of the outer estimates and the
  * nodes' bare estimates (hemisphere_moments_chosen), in place of every node's floor
  * (HEMI_ERR_FLOOR_*, 1e-7 of E at the default budget), which assumed that each node missed by its
  * worst and all in one direction. Measured (tests/avg_rule_test.cpp with BRDFBAKE_AVG_SWEEP=1: the
@@ -39,7 +39,11 @@
  * AVG_LAYER_ALPHA), 3.3e-10 for ggx, 5.3e-12 for the gaussian. The floor keeps a margin of 2.4.
  * Since session 22 none, cook-torrance, kelemen and neumann are rescaled too: the same sweep over
  * their 16 pairs (BRDFBAKE_AVG_GAFS=0,2,3,4, 48 minutes on the loaded machine) finds at most
- * 7.5e-10 (beckmann + kelemen, r = 1/8), inside the floor. */
+ * 7.5e-10 (beckmann + kelemen, r = 1/8), inside the floor. Charlie's averages since session 23
+ * too: the same rule with bare estimates in double against the sheen reference's E_avg (Gauss-
+ * Legendre 20 and 30 on panels graded towards mu = 0 and split at 1/2, agreeing to 3.6e-9), every r
+ * of a 32-entry table (charlie-smith; neubelt too, and its node grid's r = 1/32 to 1/2): never
+ * beyond the rule's bound (neubelt's largest error 3.1e-10 of E_avg). */
 #define AVG_ERR_FLOOR RC(5e-9)
 /* The tabulated exact Lambda's share of E_avg (blinn-phong and the gaussian with smith-exact and
  * smith-correlated-exact). hemi_model_error's 6.6e-7 is the integrand's worst case at one point;
