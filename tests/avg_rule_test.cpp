@@ -28,26 +28,14 @@
 #include "common/brdf_host.h"
 #include "common/models.h"
 #include "reference/reference.h"
+#include "host_avg_rule.h"
 #include "test_device.h"
 
 namespace brdfbake {
 namespace {
 using brdf64::real;  // for the RC() of albedo_avg.h's constants
 
-// The rule with E in double at the nodes it asks for, bare estimates as the bake's kernel gives them.
-std::vector<AvgSum> hostRule(int ndf, int gaf, const std::vector<float>& rs) {
-  return averageRule(rs, true, KernelRunner::kAvgGoal,
-                     [&](const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound) {
-                       for (size_t k = 0; k < nodes.size(); ++k) {
-                         double mu = nodes[k].mu;
-                         brdf64::BrdfParams p = brdf64::hemisphere_texel_params(ndf, gaf, mu, nodes[k].r);
-                         brdf64::HemiResult h = brdf64::hemisphere_moments_chosen(ndf, gaf, p, mu, -1, nodes[k].target, 1);
-                         (*value)[k] = h.a + h.b;
-                         (*bound)[k] = h.err_a + h.err_b;
-                       }
-                     },
-                     avgViewBreaks(gaf));
-}
+using testing_avg::hostRule;
 
 std::vector<float> sweepR() {
   std::vector<float> rs;

@@ -16,13 +16,13 @@
 #include <unistd.h>
 
 #include "bake/error_model.h"
-#include "cl/avg_rule.h"
 #include "cli_run.h"
 #include "common/brdf_host.h"
 #include "common/models.h"
 #include "exr/table_file.h"
 #include "reference/reference.h"
 #include "reference/sheen_reference.h"
+#include "host_avg_rule.h"
 #include "test_device.h"
 
 namespace fs = std::filesystem;
@@ -263,18 +263,7 @@ TEST(Sheen, FloatArithmeticWithinItsModels) {
     KernelTable t = runner().albedoAvg(NDF_CHARLIE, gaf, n, false);
     std::vector<float> rs(n);
     for (int j = 0; j < n; ++j) rs[j] = (j + 0.5f) / n;
-    std::vector<AvgSum> dbl = averageRule(
-        rs, true, KernelRunner::kAvgGoalSheen,
-        [&](const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound) {
-          for (size_t k = 0; k < nodes.size(); ++k) {
-            double mu = nodes[k].mu;
-            brdf64::BrdfParams p = brdf64::hemisphere_texel_params(NDF_CHARLIE, gaf, mu, nodes[k].r);
-            brdf64::HemiResult h = brdf64::hemisphere_moments_chosen(NDF_CHARLIE, gaf, p, mu, -1, nodes[k].target, 1);
-            (*value)[k] = h.a + h.b;
-            (*bound)[k] = h.err_a + h.err_b;
-          }
-        },
-        avgViewBreaks(gaf));
+    std::vector<AvgSum> dbl = testing_avg::hostRule(NDF_CHARLIE, gaf, rs, KernelRunner::kAvgGoalSheen);
     double worst = 0;
     for (int j = 0; j < n; ++j) {
       const double err = rel(t.planes[0][j], dbl[j].value);
