@@ -58,7 +58,10 @@ constexpr FloatModel kHemiFloatBlinnPhong{3.5, 3};
 // The same for the charlie (sheen) NDF: with charlie-smith, and with its other visibilities.
 constexpr FloatModel kCharlieSmithFloat{48, 4};
 constexpr FloatModel kSheenFloatNone{10, 4};
-constexpr FloatModel kSheenFloatBounded{4, 3};  // neubelt and implicit, whose G/(n.o) stays bounded
+constexpr FloatModel kSheenFloatBounded{4, 3};  // neubelt and implicit (sheenGBounded)
+// The sheen visibilities whose G/(n.o) stays bounded towards grazing views, and whose tables carry
+// a fraction of the others' float error (below, per texel and on the averages).
+inline bool sheenGBounded(int gaf) { return gaf == GAF_NEUBELT || gaf == GAF_IMPLICIT; }
 // k_p: one GK15 sum of e^-v times a constant (the gaussian: a smooth ratio) per panel; measured at
 // most 2.3 u min(1, |v|) on the 9-node and 32-texel grids of the four NDFs.
 constexpr FloatModel kKpFloat{4, 0};
@@ -83,7 +86,7 @@ constexpr FloatModel kRoundToFloat{1, 0};
 // weighted: a Fresnel-weighted moment (HEMI_FRESNEL, HEMI_F82C).
 inline FloatModel hemiFloatModel(int ndf, int gaf, bool weighted = false) {
   if (ndf == NDF_CHARLIE)
-    return gaf == GAF_CHARLIE_SMITH ? kCharlieSmithFloat : gaf == GAF_NONE ? kSheenFloatNone : kSheenFloatBounded;
+    return sheenGBounded(gaf) ? kSheenFloatBounded : gaf == GAF_CHARLIE_SMITH ? kCharlieSmithFloat : kSheenFloatNone;
   if (weighted) return kHemiFloat;
   switch (ndf) {
     case NDF_GGX: return kHemiFloatGgx;
@@ -121,10 +124,10 @@ inline double floatArithmeticError(double scale, FloatModel m = kHemiFloat) {
 // (neubelt) and 0.40 u (implicit): 1 u.
 constexpr FloatModel kAvgFloatMicrofacet[4] = {{0, 2.3}, {0, 2.15}, {0, 2.4}, {0, 5.76}};  // NDF_GGX .. NDF_GAUSSIAN
 constexpr FloatModel kAvgFloatSheen{0, 3};
-constexpr FloatModel kAvgFloatSheenBounded{0, 1};  // neubelt and implicit
+constexpr FloatModel kAvgFloatSheenBounded{0, 1};  // neubelt and implicit (sheenGBounded)
 inline double avgFloatArithmeticError(double value, int ndf, int gaf, bool weighted = false) {
   if (ndf == NDF_CHARLIE)
-    return floatArithmeticError(value, gaf == GAF_NEUBELT || gaf == GAF_IMPLICIT ? kAvgFloatSheenBounded : kAvgFloatSheen);
+    return floatArithmeticError(value, sheenGBounded(gaf) ? kAvgFloatSheenBounded : kAvgFloatSheen);
   if (weighted) {
     FloatModel m = hemiFloatModel(ndf, gaf, weighted);
     return floatArithmeticError(value, FloatModel{m.k1, 2 * m.k0});

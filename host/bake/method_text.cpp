@@ -60,8 +60,8 @@ std::string methodText(TableKind kind) {
              " alpha] (the horizon layer) and GK31 on the rest; the worst halved until the bound is under " +
              fmtG(KernelRunner::kAvgGoal) + " (" + fmtG(KernelRunner::kAvgGoalSheen) + " for charlie)" +
              "; sums in double on the host, the nodes' float positions corrected to first order; error: the panels' "
-             "|K-G| (rescaled where E is analytic) + the nodes' estimates (for the plain average of the microfacet "
-             "NDFs: their bare estimates + " +
+             "|K-G| (rescaled where E is analytic) + the nodes' estimates (for the plain average: their bare "
+             "estimates + " +
              fmtG(brdf64::kAvgFloor) + " of E_avg, measured on the averages, + " +
              fmtG(brdf64::avg_model_error(NDF_BLINN_PHONG, GAF_SMITH_EXACT)) + " (blinn-phong) or " +
              fmtG(brdf64::avg_model_error(NDF_GAUSSIAN, GAF_SMITH_EXACT)) +
