@@ -10,7 +10,9 @@ static inline real diel_grid(int i, int n, int node_grid) {
 }
 
 /* One slab of the 3D table: slices z0 .. z0 + zn - 1, x = mu, y = r; planes E_R, E_T and the
- * bound relative to max(1, |value|) one after another, [((c * zn + z - z0) * ny + y) * nx + x].
+ * bound one after another, [((c * zn + z - z0) * ny + y) * nx + x]. The bound is the two lobes'
+ * estimates summed: it covers E_R, E_T and E_R + E_T (the table's third channel), all <= 1, so
+ * absolute and relative to max(1, |value|) coincide.
  * etas[z - z0]: the slice's eta. */
 kernel void bake_dielectric(global float* out, global const real* etas, int nx, int ny, int zn, int node_grid,
                             float target) {
@@ -22,11 +24,11 @@ kernel void bake_dielectric(global float* out, global const real* etas, int nx, 
   size_t plane = (size_t)nx * ny * zn, at = ((size_t)zl * ny + y) * nx + x;
   out[at] = (float)d.er;
   out[plane + at] = (float)d.et;
-  out[2 * plane + at] = (float)(fmax(d.err_r, d.err_t));
+  out[2 * plane + at] = (float)(d.err_r + d.err_t);
 }
 
 /* Points (mu[k], r[k], eta[k]), k < n: the averages' nodes (host/bake/dielectric_avg.cpp chooses them
- * per (r, eta)); planes E_R, E_T, bound (absolute, the larger) one after another, [c * n + k]. */
+ * per (r, eta)); planes E_R, E_T, bound (absolute, the two lobes' summed) one after another, [c * n + k]. */
 kernel void bake_dielectric_points(global float* out, global const real* mus, global const real* rs,
                                    global const real* etas, int n, float target) {
   int k = get_global_id(0);
@@ -34,5 +36,5 @@ kernel void bake_dielectric_points(global float* out, global const real* mus, gl
   DielResult d = diel_texel(BRDF_NDF, BRDF_GAF, mus[k], rs[k], etas[k], (real)target);
   out[k] = (float)d.er;
   out[n + k] = (float)d.et;
-  out[2 * n + k] = (float)(fmax(d.err_r, d.err_t));
+  out[2 * n + k] = (float)(d.err_r + d.err_t);
 }

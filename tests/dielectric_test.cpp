@@ -85,6 +85,37 @@ TEST(Dielectric, KernelMatchesReference) {
   std::printf("dielectric: worst device error against the reference %.2e\n", worst);
 }
 
+// The rescaled estimates (kernels/integrate/dielectric.h) against the same rule converged (every inner
+// panel in 8, 64 outer panels), in double on the host: each lobe's error within its estimate. The
+// four texels where session 24 found a break missing (the estimate then 1.9 to 9.6 times below the
+// error) and a 3 x 3 grid at three etas, for a pair of each NDF and GAF.
+TEST(Dielectric, RescaledEstimatesBoundTheConvergedRule) {
+  struct Pt {
+    double mu, r, eta;
+  };
+  std::vector<Pt> pts = {{0.375, 0.625, 0.95},         // the TIR kink meets the reflected edge
+                         {5.0 / 12, 0.75, 0.4},        // x* meets ck
+                         {0.75, 11.0 / 12, 1 / 1.5},   // theta_h = 0 just before a break
+                         {1.0 / 256, 1.0 / 12, 0.44051}};  // x*'s crossing at 89.6 degrees
+  for (double eta : {0.6, 1.0001, 1.5})
+    for (double mu : {0.1, 0.5, 0.9})
+      for (double r : {0.2, 0.6, 1.0}) pts.push_back({mu, r, eta});
+  const int pairs[2][2] = {{NDF_GGX, GAF_SMITH_CORRELATED}, {NDF_BECKMANN, GAF_SMITH}};
+  for (auto& pr : pairs) {
+    double worst = 0;
+    for (const Pt& q : pts) {
+      auto d = brdf64::diel_texel(pr[0], pr[1], q.mu, q.r, q.eta, kDielectricTarget);
+      auto t = brdf64::diel_albedo(pr[0], pr[1], brdf64::brdf_params_kp(pr[1], q.r, 0.0), q.mu, q.eta, 3, 1e-14);
+      double er = std::fabs(d.er - t.er), et = std::fabs(d.et - t.et);
+      worst = std::max({worst, er / d.err_r, et / d.err_t});
+      EXPECT_LE(er, d.err_r) << "E_R at mu " << q.mu << " r " << q.r << " eta " << q.eta;
+      EXPECT_LE(et, d.err_t) << "E_T at mu " << q.mu << " r " << q.r << " eta " << q.eta;
+      EXPECT_LE(d.err_r + d.err_t, 2.5 * kDielectricTarget) << "mu " << q.mu << " r " << q.r << " eta " << q.eta;
+    }
+    std::printf("%s+%s: the largest error / estimate %.2f\n", ndfNames()[pr[0]].c_str(), gafNames()[pr[1]].c_str(), worst);
+  }
+}
+
 // eta = 1: no interface. E_R = 0 exactly (F = 0), E_T the closed form (1 + Lambda) G_T(Lambda, Lambda)
 // (not 1: single scattering loses what hits the microsurface twice), on the device.
 TEST(Dielectric, EtaOneClosedForm) {
@@ -194,7 +225,7 @@ TEST(Dielectric, AveragesMatchTightRuleWithHonestBounds) {
         auto d = brdf64::diel_texel(pr[0], pr[1], p.mu[k], p.r[k], p.eta[k], 2e-8);
         v.er.push_back(d.er);
         v.et.push_back(d.et);
-        v.bound.push_back(std::max(d.err_r, d.err_t));
+        v.bound.push_back(d.err_r + d.err_t);
       }
       return v;
     };

@@ -8,7 +8,7 @@
 
 namespace brdfbake {
 
-// One batch: E_R, E_T and their bound (absolute, the larger of the two) at points (mu[k], r[k], eta[k]).
+// One batch: E_R, E_T and their bound (absolute, the two lobes' estimates summed) at points (mu[k], r[k], eta[k]).
 struct DielectricPoints {
   std::vector<double> mu, r, eta;
 };

@@ -16,9 +16,14 @@
 namespace brdfbake {
 
 namespace {
-// The device program runs in double (cl_khr_fp64; PoCL has it): its arithmetic adds far less than
-// this; without fp64 it runs in float, for which the 2D tables' 1e-6 allowance is kept.
-constexpr double kDoubleAllowance = 1e-7, kFloatAllowance = 1e-6;
+// The device program runs in double (cl_khr_fp64; PoCL has it). Its arithmetic, measured: the
+// device's float values equal the host's double rule rounded to float at every texel of a 32^3
+// table (session 24), so the two differ by far less than a float's half-ulp; 1e-9 covers that with
+// room. Without fp64 it runs in float, for which the 2D tables' unmeasured 1e-6 allowance is kept.
+constexpr double kDoubleAllowance = 1e-9, kFloatAllowance = 1e-6;
+// The storage: E_R and E_T are rounded once to float, 2^-25 for values below 1; E_R + E_T is summed
+// from those in float, three roundings; half rounds each float once more, 2^-12 below 1.
+double storageRounding(bool half) { return 3 * std::ldexp(1.0, -25) + (half ? std::ldexp(1.0, -12) : 0.0); }
 
 std::string coordText() {
   return "s = (eta - 1)/(eta + 1) = sign(eta - 1) sqrt(F0), F0 = ((eta - 1)/(eta + 1))^2 the normal-incidence "
@@ -30,7 +35,8 @@ std::string methodText(bool avg) {
       "h-space quadrature in double on the device (kernels/integrate/dielectric.h): theta_h on the NDF's CDF "
       "coordinate, phi split at every x = i.h feature (domain edges, TIR at sqrt(1 - eta^2), n.o_t = 0, a graded "
       "Fresnel layer of width sqrt(|eta^2 - 1|) near eta = 1), GK15 panels under a smoothstep substitution, outer "
-      "axis refined adaptively; bound per texel |K15 - G7| + inner bounds";
+      "axis refined adaptively; bound per texel: |K15 - G7| rescaled as QUADPACK's qk15 does, panels and inner panels, "
+      "plus a floor of 1e-9 of the value, E_R's and E_T's summed";
   if (avg)
     m += "; averages 2 int E mu dmu by an adaptive rule in mu (host/bake/dielectric_avg.cpp): panels split at the "
          "critical cosine sqrt(1 - eta^2), smoothstep-mapped GK15, halved where |K15 - G7| is largest, nodes per (r, "
@@ -140,7 +146,7 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
   str["brdf.method"] = methodText(job.avg);
   str["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
   double allowance = runner.hasDouble() ? kDoubleAllowance : kFloatAllowance;
-  img.floats["brdf.error"] = static_cast<float>(out.maxBound + allowance + std::ldexp(1.0, job.half ? -11 : -24));
+  img.floats["brdf.error"] = static_cast<float>(out.maxBound + allowance + storageRounding(job.half));
   img.floats["brdf.error.quadrature"] = static_cast<float>(out.maxBound);
   return out;
 }
