@@ -115,6 +115,15 @@ BRDF_FN real diel_gk_error(real kg, real k, real* v) {
   return gk_error(fabs(kg), ras, 1);
 }
 
+/* Node m of a GK15 panel, its weighted values wr, wt of the two lobes, into the panel's sums
+ * s = {K15 of E_R, of E_T, K15 - G7 of E_R, of E_T}. */
+BRDF_FN void diel_gk_node(int m, real wr, real wt, real* s) {
+  s[0] += GK15_WKL[m] * wr;
+  s[1] += GK15_WKL[m] * wt;
+  s[2] += GK15_WDL[m] * wr;
+  s[3] += GK15_WDL[m] * wt;
+}
+
 /* The inner integral at theta_h over phi in [0, pi]: values and bounds of both lobes. */
 BRDF_FN void diel_phi(int ndf, int gaf, BrdfParams p, DielView v, real c, real sn, int refine, real* ir, real* it,
                       real* er, real* et) {
@@ -162,7 +171,7 @@ BRDF_FN void diel_phi(int ndf, int gaf, BrdfParams p, DielView v, real c, real s
     if (len <= RC(0.0)) continue;
     for (int u = 0; u < sub; ++u) {
       real y0 = (real)u / (real)sub, yl = RC(1.0) / (real)sub;
-      real kr = RC(0.0), kt = RC(0.0), gr = RC(0.0), gt = RC(0.0), vr[15], vt[15];
+      real sum[4] = {RC(0.0), RC(0.0), RC(0.0), RC(0.0)}, vr[15], vt[15];
       for (int m = 0; m < 15; ++m) {
         real jac, y = y0 + yl * RC(0.5) * (GK15_XL[m] + RC(1.0));
         real phi = a + len * diel_smooth(y, &jac);
@@ -171,15 +180,12 @@ BRDF_FN void diel_phi(int ndf, int gaf, BrdfParams p, DielView v, real c, real s
         real wgt = RC(0.5) * yl * len * jac;
         vr[m] = wgt * hr;
         vt[m] = wgt * ht;
-        kr += GK15_WKL[m] * vr[m];
-        kt += GK15_WKL[m] * vt[m];
-        gr += GK15_WDL[m] * vr[m];
-        gt += GK15_WDL[m] * vt[m];
+        diel_gk_node(m, vr[m], vt[m], sum);
       }
-      sr += kr;
-      st += kt;
-      dr += diel_gk_error(gr, kr, vr);
-      dt += diel_gk_error(gt, kt, vt);
+      sr += sum[0];
+      st += sum[1];
+      dr += diel_gk_error(sum[2], sum[0], vr);
+      dt += diel_gk_error(sum[3], sum[1], vt);
     }
   }
   *ir = sr;
@@ -191,7 +197,7 @@ BRDF_FN void diel_phi(int ndf, int gaf, BrdfParams p, DielView v, real c, real s
 /* One outer piece: v = a + (b - a) S(y), y in [y0, y1]; values and bounds (times 1/pi) into out[4]. */
 BRDF_FN void diel_outer(int ndf, int gaf, BrdfParams p, DielView v, real a, real b, real y0, real y1, int refine,
                         real* out) {
-  real kr = RC(0.0), kt = RC(0.0), gr = RC(0.0), gt = RC(0.0), ier = RC(0.0), iet = RC(0.0), vr[15], vt[15];
+  real sum[4] = {RC(0.0), RC(0.0), RC(0.0), RC(0.0)}, ier = RC(0.0), iet = RC(0.0), vr[15], vt[15];
   for (int m = 0; m < 15; ++m) {
     real jac, y = y0 + (y1 - y0) * RC(0.5) * (GK15_XL[m] + RC(1.0));
     real vv = a + (b - a) * diel_smooth(y, &jac);
@@ -202,17 +208,14 @@ BRDF_FN void diel_outer(int ndf, int gaf, BrdfParams p, DielView v, real a, real
     real wgt = RC(0.5) * (y1 - y0) * (b - a) * jac * exp(-vv) * BRDF_INV_PI;
     vr[m] = wgt * ir;
     vt[m] = wgt * it;
-    kr += GK15_WKL[m] * vr[m];
-    kt += GK15_WKL[m] * vt[m];
-    gr += GK15_WDL[m] * vr[m];
-    gt += GK15_WDL[m] * vt[m];
+    diel_gk_node(m, vr[m], vt[m], sum);
     ier += GK15_WKL[m] * wgt * er;
     iet += GK15_WKL[m] * wgt * et;
   }
-  out[0] = kr;
-  out[1] = kt;
-  out[2] = diel_gk_error(gr, kr, vr) + ier;
-  out[3] = diel_gk_error(gt, kt, vt) + iet;
+  out[0] = sum[0];
+  out[1] = sum[1];
+  out[2] = diel_gk_error(sum[2], sum[0], vr) + ier;
+  out[3] = diel_gk_error(sum[3], sum[1], vt) + iet;
 }
 
 /* The view's constants for (mu, eta) at roughness p. */
