@@ -19,8 +19,9 @@ double dielectricEta(double s);
 std::vector<double> dielectricEtas(const DielectricJob& job, int z0, int n);
 
 // The estimate each texel's quadrature aims at, per lobe (kernels/integrate/dielectric.h). 2e-6 until
-// session 24, when the estimates were the bare |K15 - G7|; rescaled, 5e-8 costs 1.6 times the old
-// budget's time (1e-8: 2.9 times), and with the storage rounding a float table claims about 2e-7.
+// session 24, when the estimates were the bare |K15 - G7|; rescaled, 5e-8 makes the 32^3 table take
+// 141 s where it took 110 s (brdfbake-bench --dielectric, README "Rough glass"), and with the
+// storage rounding a float table claims about 2e-7.
 constexpr float kDielectricTarget = 5e-8f;
 
 // A computed dielectric table: the header (its brdf.error from the texels' bounds) and, for the

@@ -6,10 +6,6 @@
 #define HEMI_TRAP_N 16         /* trapezoid intervals on the whole circle; refined: twice as many */
 #define HEMI_PHI_GROW RC(4.0)  /* grading of the arc panels towards phimax; refined: halved */
 #define HEMI_PHI_GROW_OWN RC(16.0) /* the same from the Smith/Schlick layer n.i ~ alpha (hemi_phi) */
-/* Fresnel's kink close to phi = pi (hemi_phi): graded where its square root lies within
- * a = acosh(HEMI_FRESNEL_NEAR_CK) = 1 of the arc, from no closer than HEMI_FRESNEL_NEAR_MIN */
-#define HEMI_FRESNEL_NEAR_CK RC(1.5430806348152437)
-#define HEMI_FRESNEL_NEAR_MIN RC(1e-6)
 
 /* Whether the GAF's shadowing of i changes on the scale n.i ~ alpha rather than n.i ~ mu: the Smith
  * Lambdas (Lambda_i ~ alpha tan(theta_i), so G1(i) goes from ~1 to ~n.i/alpha within n.i ~ alpha)
@@ -149,21 +145,16 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
    * the panel's end. The 16-interval trapezoid converges like e^-(32 a), too slowly below a ~ 1,
    * and there its estimate d1 (d1/d2)^2 is not yet asymptotic: it fell 3 to 4 times below the
    * error (eta = 1/1.5, ggx + smith-correlated, mu = 0.92, r = 0.86: error 3.9e-7 of E_F, estimate
-   * 1.3e-7). GK15 panels graded 4-fold from that distance towards fg resolve it instead. */
+   * 1.3e-7). GK15 panels graded 4-fold from that distance towards fg resolve it instead
+   * (sqrt_near_pi, quadrature.h). */
   real fg = RC(-1.0), fw = RC(0.0); /* the graded point and the first panel's width (fw = 0: none) */
   if (oc > RC(0.0) && s * sn > RC(0.0)) {
     real ck = (oc - mu * h.c) / (s * sn);
     if (ck < RC(1.0) && ck > RC(-1.0)) {
       fk = acos(ck);
       kinks[nk++] = ck;
-      if (BRDF_PI - fk < RC(0.25) * fk) {
-        fg = fk;
-        fw = fmax(BRDF_PI - fk, HEMI_FRESNEL_NEAR_MIN);
-      }
-    } else if (ck <= RC(-1.0) && ck > -HEMI_FRESNEL_NEAR_CK) {
-      fg = BRDF_PI;
-      fw = fmax(acosh(-ck), HEMI_FRESNEL_NEAR_MIN);
     }
+    fw = sqrt_near_pi(ck, &fg);
   }
   if (full && nk == 0 && fw <= RC(0.0) && refine <= 1) {
     hemi_phi_trap(ndf, gaf, p, mu, s, h, sn, refine ? 2 * HEMI_TRAP_N : HEMI_TRAP_N, ia, ib, ea, eb);

@@ -41,10 +41,6 @@
 #define DIEL_MAXP 64
 #define DIEL_VCAP RC(40.0)
 #define DIEL_GRADE RC(0.5)
-/* TIR's square root nearly touching an arc at phi = pi (diel_phi): graded where it lies within
- * acosh(DIEL_NEAR_CK) = 1 of it, from no closer than DIEL_NEAR_MIN */
-#define DIEL_NEAR_CK RC(1.5430806348152437)
-#define DIEL_NEAR_MIN RC(1e-6)
 /* Added to each lobe's rescaled estimate: DIEL_ERR_FLOOR_REL of the value plus DIEL_ERR_FLOOR_ABS.
  * Measured in double against the same rule converged (every inner panel in 8, 64 outer panels,
  * |K15 - G7| below 1e-14), over 576 texel centres x 9 etas (0.4 to 2.5, 0.99 and 1.0001 included)
@@ -147,20 +143,12 @@ BRDF_FN void diel_phi(int ndf, int gaf, BrdfParams p, DielView v, real c, real s
       real cphi = (xs[k] - v.mu * c) / ss;
       if (cphi > RC(-1.0) && cphi < RC(1.0)) ph[np++] = acos(cphi);
     }
-  /* TIR's square root close to phi = pi without a break there (azimuth.h hemi_phi has the same):
-   * the whole arc above ck, singular at pi -+ i acosh(-cphi), or ck on the arc at fk near pi,
-   * mirrored at 2 pi - fk: panels graded 4-fold towards it from that distance */
+  /* TIR's square root close to phi = pi without a break there (sqrt_near_pi, quadrature.h; azimuth.h
+   * hemi_phi has the same): panels graded 4-fold towards it */
   if (v.ck > RC(0.0) && ss > RC(0.0)) {
-    real cphi = (v.ck - v.mu * c) / ss, g = RC(-1.0), d = RC(0.0);
-    if (cphi <= RC(-1.0) && cphi > -DIEL_NEAR_CK) {
-      g = BRDF_PI;
-      d = acosh(-cphi);
-    } else if (cphi > RC(-1.0) && cphi < RC(1.0)) {
-      g = acos(cphi);
-      d = BRDF_PI - g;
-      if (d >= RC(0.25) * g) g = RC(-1.0);
-    }
-    for (d = fmax(d, DIEL_NEAR_MIN); g > RC(0.0) && d < RC(0.5) * g && np < DIEL_MAXB; d *= RC(4.0)) ph[np++] = g - d;
+    real g = RC(0.0);
+    for (real d = sqrt_near_pi((v.ck - v.mu * c) / ss, &g); d > RC(0.0) && d < RC(0.5) * g && np < DIEL_MAXB; d *= RC(4.0))
+      ph[np++] = g - d;
   }
   ph[np++] = BRDF_PI;
   sort_ascending(ph, np);

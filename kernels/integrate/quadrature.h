@@ -85,6 +85,29 @@ BRDF_CONST real TRAP32_D2[33] = {RC(-1.0), RC(0.0), RC(2.0), RC(0.0), RC(-2.0), 
                                  RC(2.0), RC(0.0), RC(-2.0), RC(0.0), RC(2.0), RC(0.0), RC(-2.0), RC(0.0), RC(2.0),
                                  RC(0.0), RC(-2.0), RC(0.0), RC(2.0), RC(0.0), RC(-1.0)};
 
+/* A square root of the integrand at cos(phi) = cphi (Fresnel's critical angle) close to an azimuth
+ * arc's end phi = pi without a break there: beyond the arc (cphi < -1), singular at pi -+ i a with
+ * a = acosh(-cphi), or on it at fk = acos(cphi) near pi, mirrored at 2 pi - fk beyond the break at
+ * fk. Panels graded 4-fold towards *g (pi, or fk) from the returned distance resolve it, where that
+ * distance is under 1 (cphi > -SQRT_NEAR_CK = -cosh(1)), resp. under fk/4; 0: no grading. Never
+ * closer than SQRT_NEAR_MIN. */
+#define SQRT_NEAR_CK RC(1.5430806348152437)
+#define SQRT_NEAR_MIN RC(1e-6)
+BRDF_FN real sqrt_near_pi(real cphi, real* g) {
+  if (cphi <= RC(-1.0) && cphi > -SQRT_NEAR_CK) {
+    *g = BRDF_PI;
+    return fmax(acosh(-cphi), SQRT_NEAR_MIN);
+  }
+  if (cphi > RC(-1.0) && cphi < RC(1.0)) {
+    real fk = acos(cphi);
+    if (BRDF_PI - fk < RC(0.25) * fk) {
+      *g = fk;
+      return fmax(BRDF_PI - fk, SQRT_NEAR_MIN);
+    }
+  }
+  return RC(0.0);
+}
+
 /* Insertion sort of a few breakpoints (at most 16), ascending. */
 BRDF_FN void sort_ascending(real* v, int n) {
   for (int i = 1; i < n; ++i)
