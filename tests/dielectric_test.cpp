@@ -222,7 +222,7 @@ TEST(Dielectric, AveragesMatchTightRuleWithHonestBounds) {
     DielectricEval host = [&](const DielectricPoints& p) {
       DielectricValues v;
       for (size_t k = 0; k < p.mu.size(); ++k) {
-        auto d = brdf64::diel_texel(pr[0], pr[1], p.mu[k], p.r[k], p.eta[k], 2e-8);
+        auto d = brdf64::diel_texel(pr[0], pr[1], p.mu[k], p.r[k], p.eta[k], 1e-9);
         v.er.push_back(d.er);
         v.et.push_back(d.et);
         v.bound.push_back(d.err_r + d.err_t);
@@ -236,8 +236,9 @@ TEST(Dielectric, AveragesMatchTightRuleWithHonestBounds) {
       std::printf("%s+%s r %.2f eta %.4f: E_R,avg %.7f E_T,avg %.7f, %d nodes, bound %.2e, error %.2e (tight bound %.2e)\n",
                   ndfNames()[pr[0]].c_str(), gafNames()[pr[1]].c_str(), rs[j], es[j], a.er[j], a.et[j], a.nodes[j],
                   a.bound[j], err, b.bound[j]);
-      EXPECT_LT(a.bound[j], 1e-5);
-      EXPECT_LE(err, a.bound[j] + b.bound[j] + 1e-7) << "bound not honest at r " << rs[j] << " eta " << es[j];
+      EXPECT_LT(a.bound[j], 2 * kDielectricAvgTarget);
+      // + the device nodes' float rounding, 2^-25 of each value, and the sums' (the bake claims 3 x 2^-25)
+      EXPECT_LE(err, a.bound[j] + b.bound[j] + 2 * std::ldexp(1.0, -25)) << "bound not honest at r " << rs[j] << " eta " << es[j];
       EXPECT_LE(a.er[j] + a.et[j], 1 + 1e-6);
     }
   }

@@ -22,8 +22,12 @@ namespace {
 // half-ulp; 1e-9 covers that with room. Without fp64 it runs in float, for which the 2D tables' unmeasured 1e-6 allowance is kept.
 constexpr double kDoubleAllowance = 1e-9, kFloatAllowance = 1e-6;
 // The storage: E_R and E_T are rounded once to float, 2^-25 for values below 1; E_R + E_T is summed
-// from those in float, three roundings; half rounds each float once more, 2^-12 below 1.
-double storageRounding(bool half) { return 3 * std::ldexp(1.0, -25) + (half ? std::ldexp(1.0, -12) : 0.0); }
+// from those in float, three roundings. The averages are formed in double from the nodes' float
+// values (2^-25 of E_R,avg + E_T,avg <= 1) and rounded once. Half rounds each float once more,
+// 2^-12 below 1.
+double storageRounding(bool half, bool avg) {
+  return (avg ? 2 : 3) * std::ldexp(1.0, -25) + (half ? std::ldexp(1.0, -12) : 0.0);
+}
 
 std::string coordText() {
   return "s = (eta - 1)/(eta + 1) = sign(eta - 1) sqrt(F0), F0 = ((eta - 1)/(eta + 1))^2 the normal-incidence "
@@ -39,8 +43,9 @@ std::string methodText(bool avg) {
       "plus a floor of 1e-9 of the value, E_R's and E_T's summed";
   if (avg)
     m += "; averages 2 int E mu dmu by an adaptive rule in mu (host/bake/dielectric_avg.cpp): panels split at the "
-         "critical cosine sqrt(1 - eta^2), smoothstep-mapped GK15, halved where |K15 - G7| is largest, nodes per (r, "
-         "eta); bound sum |K15 - G7| + weighted node bounds";
+         "critical cosine sqrt(1 - eta^2), at mu = eta and at 16 alpha, smoothstep-mapped GK15, halved where the "
+         "estimate is largest, nodes per (r, eta); bound: the panels' rescaled |K15 - G7| (|K15 - G7| on panels "
+         "starting below 16 alpha) + weighted node bounds";
   return m + "; brdf.error: the largest bound + arithmetic allowance + storage rounding";
 }
 }  // namespace
@@ -146,7 +151,7 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
   str["brdf.method"] = methodText(job.avg);
   str["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
   double allowance = runner.hasDouble() ? kDoubleAllowance : kFloatAllowance;
-  img.floats["brdf.error"] = static_cast<float>(out.maxBound + allowance + storageRounding(job.half));
+  img.floats["brdf.error"] = static_cast<float>(out.maxBound + allowance + storageRounding(job.half, job.avg));
   img.floats["brdf.error.quadrature"] = static_cast<float>(out.maxBound);
   return out;
 }
