@@ -21,7 +21,7 @@ namespace brdfbake {
 // So the rule splits [0, 1] at mu_c, eta and 16 alpha and maps every panel [a, b] by the smoothstep
 // mu = a + (b - a) y^2 (3 - 2y), which turns square-root ends into smooth ones and squeezes nodes
 // towards both ends; each panel is GK15 in y (value K15; estimate |K15 - G7| rescaled as
-// QUADPACK's qk15 does, gk_error, except on the panel at mu = 0, which keeps |K15 - G7|). Panels
+// QUADPACK's qk15 does, gk_error, except on panels starting below 16 alpha, which keep |K15 - G7|). Panels
 // are then halved in y where their estimate is largest (the ones within a factor 4 of the worst,
 // all at once) until the entry's bound is under the target; the nodes thus grade towards the
 // breaks and 0 as E demands, per (r, eta). Bound of an entry: per lobe the sum of the panels'
