@@ -106,11 +106,7 @@ DielectricAverages dielectricAverages(const DielectricEval& eval, const std::vec
         // Smith G1(i) changes within mu ~ alpha (as hemisphere.h's average, host/cl/runner_avg.cpp)
         double muLo = p.a + (p.b - p.a) * p.y0 * p.y0 * (3 - 2 * p.y0);
         bool atZero = muLo < 16 * r[j] * r[j];
-        for (int l = 0; l < 2; ++l) {
-          double ras = 0;
-          for (int m = 0; m < 15; ++m) ras += brdf64::GK15_WKL[m] * std::fabs(wf[l][m] - 0.5 * p.k[l]);
-          p.e[l] = atZero ? std::fabs(p.d[l]) : brdf64::gk_error(std::fabs(p.d[l]), ras, 1);
-        }
+        for (int l = 0; l < 2; ++l) p.e[l] = atZero ? std::fabs(p.d[l]) : brdf64::diel_gk_error(p.d[l], p.k[l], wf[l]);
       }
       out.nodes[j] += static_cast<int>(fresh[j].size()) * 15;
       fresh[j].clear();
