@@ -28,13 +28,15 @@ kernel void bake_dielectric(global float* out, global const real* etas, int nx, 
 }
 
 /* Points (mu[k], r[k], eta[k]), k < n: the averages' nodes (host/bake/dielectric_avg.cpp chooses them
- * per (r, eta)); planes E_R, E_T, bound (absolute, the two lobes' summed) one after another, [c * n + k]. */
-kernel void bake_dielectric_points(global float* out, global const real* mus, global const real* rs,
+ * per (r, eta)); planes E_R, E_T, E_R's bound, E_T's bound (absolute) one after another, [c * n + k],
+ * as `real`: the host forms the averages from the nodes unrounded, so only the stored entries round. */
+kernel void bake_dielectric_points(global real* out, global const real* mus, global const real* rs,
                                    global const real* etas, int n, float target) {
   int k = get_global_id(0);
   if (k >= n) return;
   DielResult d = diel_texel(BRDF_NDF, BRDF_GAF, mus[k], rs[k], etas[k], (real)target);
-  out[k] = (float)d.er;
-  out[n + k] = (float)d.et;
-  out[2 * n + k] = (float)(d.err_r + d.err_t);
+  out[k] = d.er;
+  out[n + k] = d.et;
+  out[2 * n + k] = d.err_r;
+  out[3 * n + k] = d.err_t;
 }

@@ -69,7 +69,7 @@ TEST(Dielectric, KernelMatchesReference) {
     auto t = runner().dielectricPoints(NDF_GGX, GAF_SMITH_CORRELATED, {mu}, {r}, {eta}, 1e-9f);
     auto ref = reference::dielectricAlbedo(NDF_GGX, GAF_SMITH_CORRELATED, mu, r, eta);
     double er = rel(t[0][0], ref.r), et = rel(t[1][0], ref.t);
-    EXPECT_LE(std::max(er, et), t[2][0] + 1e-7) << "E_T " << t[1][0] << " reference " << ref.t;
+    EXPECT_LE(std::max(er, et), t[2][0] + t[3][0] + 1e-7) << "E_T " << t[1][0] << " reference " << ref.t;
   }
   // grazing view under TIR of the mean surface (sin theta_i > eta): the transmitted lobe hugs the
   // horizon from below. The reference missed 5e-5 of E_T here until its circles split at the horizon
@@ -80,7 +80,7 @@ TEST(Dielectric, KernelMatchesReference) {
     auto ref = reference::dielectricAlbedo(NDF_GGX, GAF_SMITH_CORRELATED, mu, r, eta);
     double er = rel(t[0][0], ref.r), et = rel(t[1][0], ref.t);
     worst = std::max({worst, er, et});
-    EXPECT_LE(std::max(er, et), t[2][0] + 1e-7) << "grazing TIR: E_T " << t[1][0] << " ref " << ref.t;
+    EXPECT_LE(std::max(er, et), t[2][0] + t[3][0] + 1e-7) << "grazing TIR: E_T " << t[1][0] << " ref " << ref.t;
   }
   std::printf("dielectric: worst device error against the reference %.2e\n", worst);
 }
@@ -207,17 +207,22 @@ TEST(Dielectric, EnergyAndFinitenessOverStressRanges) {
 }
 
 // The averages over mu (dielectric-avg's rule, bake/dielectric_avg.h) with their nodes on the device,
-// against the same rule run on the host in double to a 100x tighter target (up to its 48 panels):
-// stiff entries (the TIR kink near r = 0, mu^Lambda at mu = 0 for smith-correlated, eta near 1).
-// Bounds under 1e-5 and honest. The E(mu) the rule averages is checked against the independent
-// reference above.
+// against the same rule run on the host in double, nodes to 1e-9 and entries to 1.5e-9 (up to 48 panels):
+// stiff entries (the TIR kink near r = 0, mu^Lambda at mu = 0 for smith-correlated, eta near 1),
+// and for ggx two where the layer above the critical cosine made the rescaled estimates 32 and 24
+// times too small before it kept |K15 - G7| (session 25). Bounds under twice the target and honest,
+// channel by channel. The E(mu) the rule averages is checked against the independent reference above.
 TEST(Dielectric, AveragesMatchTightRuleWithHonestBounds) {
-  const std::vector<double> rs = {0.03, 1.0, 0.5}, es = {1 / 1.5, 0.2, 1.0001};
   const int pairs[2][2] = {{NDF_GGX, GAF_SMITH_CORRELATED}, {NDF_BECKMANN, GAF_SMITH}};
   for (auto& pr : pairs) {
+    std::vector<double> rs = {0.03, 1.0, 0.5}, es = {1 / 1.5, 0.2, 1.0001};
+    if (pr[0] == NDF_GGX) {
+      rs.insert(rs.end(), {0.0625, 0.2});
+      es.insert(es.end(), {0.8983050847457626, 0.6});
+    }
     DielectricEval dev = [&](const DielectricPoints& p) {
-      auto pl = runner().dielectricPoints(pr[0], pr[1], p.mu, p.r, p.eta, kDielectricTarget);
-      return DielectricValues{{pl[0].begin(), pl[0].end()}, {pl[1].begin(), pl[1].end()}, {pl[2].begin(), pl[2].end()}};
+      auto pl = runner().dielectricPoints(pr[0], pr[1], p.mu, p.r, p.eta, kDielectricAvgNodeTarget);
+      return DielectricValues{pl[0], pl[1], pl[2], pl[3]};
     };
     DielectricEval host = [&](const DielectricPoints& p) {
       DielectricValues v;
@@ -225,20 +230,28 @@ TEST(Dielectric, AveragesMatchTightRuleWithHonestBounds) {
         auto d = brdf64::diel_texel(pr[0], pr[1], p.mu[k], p.r[k], p.eta[k], 1e-9);
         v.er.push_back(d.er);
         v.et.push_back(d.et);
-        v.bound.push_back(d.err_r + d.err_t);
+        v.br.push_back(d.err_r);
+        v.bt.push_back(d.err_t);
       }
       return v;
     };
     auto a = dielectricAverages(dev, rs, es);
-    auto b = dielectricAverages(host, rs, es, kDielectricAvgTarget / 100);
+    auto b = dielectricAverages(host, rs, es, 1.5e-9);
     for (size_t j = 0; j < rs.size(); ++j) {
-      double err = std::max(std::fabs(a.er[j] - b.er[j]), std::fabs(a.et[j] - b.et[j]));
+      // each of the entry's three values (E_R,avg, E_T,avg, their sum) within its own bound, both
+      // rules' bounds summed, + the device's double arithmetic (the nodes come back unrounded)
+      const double d[3] = {a.er[j] - b.er[j], a.et[j] - b.et[j], a.er[j] + a.et[j] - b.er[j] - b.et[j]};
+      const double ba[3] = {a.br[j], a.bt[j], a.bound[j]}, bb[3] = {b.br[j], b.bt[j], b.bound[j]};
+      double err = 0;
+      for (int c = 0; c < 3; ++c) {
+        err = std::max(err, std::fabs(d[c]));
+        EXPECT_LE(std::fabs(d[c]), ba[c] + bb[c] + 1e-9) << "bound not honest (channel " << c << ") at r " << rs[j] << " eta " << es[j];
+      }
+      EXPECT_NEAR(a.bound[j], a.br[j] + a.bt[j], 1e-15);
       std::printf("%s+%s r %.2f eta %.4f: E_R,avg %.7f E_T,avg %.7f, %d nodes, bound %.2e, error %.2e (tight bound %.2e)\n",
                   ndfNames()[pr[0]].c_str(), gafNames()[pr[1]].c_str(), rs[j], es[j], a.er[j], a.et[j], a.nodes[j],
                   a.bound[j], err, b.bound[j]);
       EXPECT_LT(a.bound[j], 2 * kDielectricAvgTarget);
-      // + the device nodes' float rounding, 2^-25 of each value, and the sums' (the bake claims 3 x 2^-25)
-      EXPECT_LE(err, a.bound[j] + b.bound[j] + 2 * std::ldexp(1.0, -25)) << "bound not honest at r " << rs[j] << " eta " << es[j];
       EXPECT_LE(a.er[j] + a.et[j], 1 + 1e-6);
     }
   }
@@ -270,6 +283,11 @@ TEST(DielectricCli, BakesBothTablesWithMetadata) {
   EXPECT_EQ(avg.width, 4);
   EXPECT_EQ(avg.height, 4);
   for (size_t k = 0; k < avg.planes[0].size(); ++k) EXPECT_LE(avg.planes[2][k], 1 + 1e-6);
+  // the averages' claim: the largest entry bound plus that entry's own rounding to float (at most
+  // 2^-25 below 1) and the double arithmetic's 1e-9, not a worst-case storage term per node
+  const double q = avg.floats.at("brdf.error.quadrature"), claim = avg.floats.at("brdf.error");
+  EXPECT_GE(claim, q);
+  EXPECT_LE(claim, (q + std::ldexp(1.0, -25) + 1e-9) * (1 + 1e-6));
   fs::remove_all(d);
 }
 

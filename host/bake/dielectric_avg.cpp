@@ -20,24 +20,30 @@ namespace brdfbake {
 //    rule there, as hemisphere.h's average does (host/cl/runner_avg.cpp).
 // So the rule splits [0, 1] at mu_c, eta and 16 alpha and maps every panel [a, b] by the smoothstep
 // mu = a + (b - a) y^2 (3 - 2y), which turns square-root ends into smooth ones and squeezes nodes
-// towards both ends; each panel is GK15 in y (value K15; estimate |K15 - G7| rescaled as
-// QUADPACK's qk15 does, gk_error, except on panels starting below 16 alpha, which keep |K15 - G7|). Panels
-// are then halved in y where their estimate is largest (the ones within a factor 4 of the worst,
-// all at once) until the entry's bound is under the target; the nodes thus grade towards the
-// breaks and 0 as E demands, per (r, eta). Bound of an entry: per lobe the sum of the panels'
-// estimates plus sum_k w_k 2 mu_k err(mu_k) (the node bounds), the larger lobe's. Measured against
-// the same rule run tight (nodes to 1e-9, entries to 1e-9), ggx + smith-correlated and beckmann +
-// smith at r = 0.03, 0.2, 0.5, 1 x eta = 0.4, 1/1.5, 0.95, 1.0001, 1.5, 2.5: every entry within its
-// bound (the figures: README "Rough glass"). Before session 24 the estimates were
-// the bare |K15 - G7| with a target of 6e-6, 30 times the error.
+// towards both ends; each panel is GK15 in y (value K15; estimate |K15 - G7| rescaled as QUADPACK's
+// qk15 does, gk_error, except in the two layers where E is smooth only on the scale alpha: panels
+// starting below 16 alpha, and panels of the critical cosine's break starting within 16 alpha above
+// it, keep |K15 - G7|). That second layer was found in session 25: E_R is F's square root there,
+// smoothed over ~alpha, which a panel from mu_c sees as a feature near its end that GK15 does not
+// resolve; rescaled, its estimate fell 32 and 24 times below its error (ggx + smith-correlated, r =
+// 0.0625, eta = 0.898: error 2.8e-7, estimate 8.9e-9; r = 0.2, eta = 0.6: 1.1e-7 against 4.8e-9).
+// Panels are then halved in y where their estimate is largest (the ones within a factor 4 of the
+// worst, all at once) until the entry's bound is under the target; the nodes thus grade towards the
+// breaks and 0 as E demands, per (r, eta). Bound of each lobe: the sum of the panels' estimates plus
+// sum_k w_k 2 mu_k err(mu_k) (the node bounds); of E_R,avg + E_T,avg, the two summed. The nodes come
+// back from the device in double, unrounded. Measured against the same rule run tight (nodes to
+// 2e-9, entries to 1e-8; README "Rough glass" has the figures and commands): every value within its
+// bound. Before session 24 the estimates were the bare |K15 - G7| with a target of 6e-6, 30 times
+// the error.
 namespace {
 constexpr int kMaxPanels = 48, kMaxRounds = 24;
 
 struct Panel {
   double a, b, y0, y1;
-  double k[2] = {0, 0}, d[2] = {0, 0}, inner = 0;  // K15, K15 - G7, node bounds
-  double e[2] = {0, 0};                            // the rule's estimate of each lobe
-  double err() const { return std::max(e[0], e[1]) + inner; }
+  double k[2] = {0, 0}, d[2] = {0, 0}, inner[2] = {0, 0};  // K15, K15 - G7, node bounds
+  double e[2] = {0, 0};                                    // the rule's estimate of each lobe
+  // what the panel adds to the bound of E_R,avg + E_T,avg, the larger of the entry's three values
+  double err() const { return e[0] + e[1] + inner[0] + inner[1]; }
 };
 
 // mu and its weight dmu/dy times the half-width of node m of a panel.
@@ -55,14 +61,15 @@ DielectricAverages dielectricAverages(const DielectricEval& eval, const std::vec
   const size_t n = r.size();
   std::vector<std::vector<Panel>> panels(n);
   std::vector<std::vector<size_t>> fresh(n);  // panels whose nodes are still to be evaluated
+  std::vector<double> mc(n);
   for (size_t j = 0; j < n; ++j) {
-    double mc = dielectricCriticalMu(eta[j]);
+    mc[j] = dielectricCriticalMu(eta[j]);
     std::vector<double> br = {0.0};
-    if (mc > 0 && mc < 1) br.push_back(mc);
-    if (mc > 0 && eta[j] < 1) br.push_back(eta[j]);  // sin theta_i = sqrt(1 - eta^2): mu = eta
+    if (mc[j] > 0 && mc[j] < 1) br.push_back(mc[j]);
+    if (mc[j] > 0 && eta[j] < 1) br.push_back(eta[j]);  // sin theta_i = sqrt(1 - eta^2): mu = eta
     // the layer mu ~ alpha where G1(i) changes (hemisphere.h's average has the same panel)
     double layer = 16 * r[j] * r[j];
-    if (layer > 0 && layer < 0.25 && (mc <= 0 || layer < 0.5 * mc)) br.push_back(layer);
+    if (layer > 0 && layer < 0.25 && (mc[j] <= 0 || layer < 0.5 * mc[j])) br.push_back(layer);
     std::sort(br.begin(), br.end());
     br.push_back(1.0);
     for (size_t k = 0; k + 1 < br.size(); ++k) {
@@ -93,20 +100,21 @@ DielectricAverages dielectricAverages(const DielectricEval& eval, const std::vec
         for (int m = 0; m < 15; ++m, ++at) {
           double mu, w;
           node(p, m, &mu, &w);
-          double f[2] = {2 * mu * v.er[at], 2 * mu * v.et[at]};
+          double f[2] = {2 * mu * v.er[at], 2 * mu * v.et[at]}, b[2] = {v.br[at], v.bt[at]};
           for (int l = 0; l < 2; ++l) {
             wf[l][m] = w * f[l];
             p.k[l] += brdf64::GK15_WKL[m] * w * f[l];
             p.d[l] += brdf64::GK15_WDL[m] * w * f[l];  // WDL: Kronrod minus Gauss weights
+            p.inner[l] += brdf64::GK15_WKL[m] * w * 2 * mu * b[l];
           }
-          p.inner += brdf64::GK15_WKL[m] * w * 2 * mu * v.bound[at];
         }
-        // rescaled (gk_error) where E(mu) is analytic on and near the panel: every panel but those
-        // starting below 16 alpha, which keep |K15 - G7|: E_T goes as mu^Lambda_o at mu = 0, and the
-        // Smith G1(i) changes within mu ~ alpha (as hemisphere.h's average, host/cl/runner_avg.cpp)
-        double muLo = p.a + (p.b - p.a) * p.y0 * p.y0 * (3 - 2 * p.y0);
-        bool atZero = muLo < 16 * r[j] * r[j];
-        for (int l = 0; l < 2; ++l) p.e[l] = atZero ? std::fabs(p.d[l]) : brdf64::diel_gk_error(p.d[l], p.k[l], wf[l]);
+        // rescaled (gk_error) where E(mu) is analytic on and near the panel; |K15 - G7| on the two
+        // layers of width 16 alpha where it is not: above mu = 0 (E_T goes as mu^Lambda_o, and the
+        // Smith G1(i) changes within mu ~ alpha, as in hemisphere.h's average, host/cl/runner_avg.cpp),
+        // and above the critical cosine (F's square root there, smoothed over ~alpha)
+        const double muLo = p.a + (p.b - p.a) * p.y0 * p.y0 * (3 - 2 * p.y0), layer = 16 * r[j] * r[j];
+        const bool sharp = muLo >= layer && !(p.a == mc[j] && muLo - mc[j] < layer);
+        for (int l = 0; l < 2; ++l) p.e[l] = sharp ? brdf64::diel_gk_error(p.d[l], p.k[l], wf[l]) : std::fabs(p.d[l]);
       }
       out.nodes[j] += static_cast<int>(fresh[j].size()) * 15;
       fresh[j].clear();
@@ -115,12 +123,15 @@ DielectricAverages dielectricAverages(const DielectricEval& eval, const std::vec
     // halve (in y) the panels within a factor 4 of the worst, where the entry is above target
     for (size_t j = 0; j < n; ++j) {
       auto& ps = panels[j];
-      double total = 0, worst = 0;
+      double total = 0, worst = 0, inner = 0;
       for (const Panel& p : ps) {
         total += p.err();
         worst = std::max(worst, p.err());
+        inner += p.inner[0] + p.inner[1];
       }
-      if (total <= target) continue;
+      // halving cannot lower the nodes' own share: once the panels' estimates are an eighth of it,
+      // more nodes would not move the bound (at the nodes' target this is rare: README "Rough glass")
+      if (total <= target || total - inner <= inner / 8) continue;
       size_t count = ps.size();
       for (size_t q = 0; q < count && ps.size() < kMaxPanels; ++q) {
         if (ps[q].err() < 0.25 * worst) continue;
@@ -133,21 +144,18 @@ DielectricAverages dielectricAverages(const DielectricEval& eval, const std::vec
       }
     }
   }
-  out.er.resize(n);
-  out.et.resize(n);
-  out.bound.resize(n);
   for (size_t j = 0; j < n; ++j) {
-    double val[2] = {0, 0}, kg[2] = {0, 0}, inner = 0;
-    for (const Panel& p : panels[j]) {
+    double val[2] = {0, 0}, bnd[2] = {0, 0};
+    for (const Panel& p : panels[j])
       for (int l = 0; l < 2; ++l) {
         val[l] += p.k[l];
-        kg[l] += p.e[l];
+        bnd[l] += p.e[l] + p.inner[l];
       }
-      inner += p.inner;
-    }
-    out.er[j] = val[0];
-    out.et[j] = val[1];
-    out.bound[j] = std::max(kg[0], kg[1]) + inner;
+    out.er.push_back(val[0]);
+    out.et.push_back(val[1]);
+    out.br.push_back(bnd[0]);
+    out.bt.push_back(bnd[1]);
+    out.bound.push_back(bnd[0] + bnd[1]);
   }
   return out;
 }

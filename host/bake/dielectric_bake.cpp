@@ -1,5 +1,7 @@
 #include "bake/dielectric_bake.h"
 
+#include <Imath/half.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,13 +23,13 @@ namespace {
 // (16^2 at 8 etas from 0.4 to 2.5, session 24), so the two differ by far less than a float's
 // half-ulp; 1e-9 covers that with room. Without fp64 it runs in float, for which the 2D tables' unmeasured 1e-6 allowance is kept.
 constexpr double kDoubleAllowance = 1e-9, kFloatAllowance = 1e-6;
-// The storage: E_R and E_T are rounded once to float, 2^-25 for values below 1; E_R + E_T is summed
-// from those in float, three roundings. The averages are formed in double from the nodes' float
-// values (2^-25 of E_R,avg + E_T,avg <= 1) and rounded once. Half rounds each float once more,
-// 2^-12 below 1.
-double storageRounding(bool half, bool avg) {
-  return (avg ? 2 : 3) * std::ldexp(1.0, -25) + (half ? std::ldexp(1.0, -12) : 0.0);
-}
+// The 3D table's storage: the device rounds E_R and E_T to float, 2^-25 for values below 1, and
+// E_R + E_T is summed from those in float: three roundings. Half rounds each float once more, 2^-12
+// below 1.
+double storageRounding(bool half) { return 3 * std::ldexp(1.0, -25) + (half ? std::ldexp(1.0, -12) : 0.0); }
+
+// The value a float entry is stored as (float, or half: the EXR writer's Imath conversion).
+double stored(float v, bool half) { return half ? static_cast<float>(Imath::half(v)) : v; }
 
 std::string coordText() {
   return "s = (eta - 1)/(eta + 1) = sign(eta - 1) sqrt(F0), F0 = ((eta - 1)/(eta + 1))^2 the normal-incidence "
@@ -44,9 +46,11 @@ std::string methodText(bool avg) {
   if (avg)
     m += "; averages 2 int E mu dmu by an adaptive rule in mu (host/bake/dielectric_avg.cpp): panels split at the "
          "critical cosine sqrt(1 - eta^2), at mu = eta and at 16 alpha, smoothstep-mapped GK15, halved where the "
-         "estimate is largest, nodes per (r, eta); bound: the panels' rescaled |K15 - G7| (|K15 - G7| on panels "
-         "starting below 16 alpha) + weighted node bounds";
-  return m + "; brdf.error: the largest bound + arithmetic allowance + storage rounding";
+         "estimate is largest, nodes per (r, eta), each to 1e-7 per lobe; bound: the panels' rescaled |K15 - G7| "
+         "(|K15 - G7| on panels starting within 16 alpha above 0 or above the critical cosine) + weighted node "
+         "bounds, E_R's and E_T's summed; brdf.error: the largest of each entry's bound plus its own rounding to "
+         "the stored precision, + arithmetic allowance";
+  return m + (avg ? "" : "; brdf.error: the largest bound + arithmetic allowance + storage rounding");
 }
 }  // namespace
 
@@ -69,7 +73,8 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
   auto t0 = std::chrono::steady_clock::now();
   DielectricTable out;
   TableImage& img = out.image;
-  std::vector<float> bounds;
+  // per texel or entry: the quadrature's bound, and the claim (with storage rounding) it makes
+  std::vector<double> quadrature, claims;
   if (job.avg) {
     // the averages' rule (bake/dielectric_avg.h) on (r, eta) = (x, y), its nodes on the device
     std::vector<double> etas = dielectricEtas(job, 0, job.ny), rs, es;
@@ -79,16 +84,23 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
         es.push_back(etas[y]);
       }
     DielectricEval eval = [&](const DielectricPoints& p) {
-      auto pl = runner.dielectricPoints(job.ndf, job.gaf, p.mu, p.r, p.eta, kDielectricTarget);
-      return DielectricValues{{pl[0].begin(), pl[0].end()}, {pl[1].begin(), pl[1].end()}, {pl[2].begin(), pl[2].end()}};
+      auto pl = runner.dielectricPoints(job.ndf, job.gaf, p.mu, p.r, p.eta, kDielectricAvgNodeTarget);
+      return DielectricValues{pl[0], pl[1], pl[2], pl[3]};
     };
     DielectricAverages av = dielectricAverages(eval, rs, es);
+    // The averages are formed in double from the nodes' unrounded values (in float without fp64:
+    // the float allowance covers that) and rounded once as stored, so each entry's storage term
+    // is its own rounding, known exactly: a channel's claim is its bound plus that.
     img.planes.assign(3, std::vector<float>(rs.size()));
     for (size_t t = 0; t < rs.size(); ++t) {
-      img.planes[0][t] = static_cast<float>(av.er[t]);
-      img.planes[1][t] = static_cast<float>(av.et[t]);
-      img.planes[2][t] = static_cast<float>(av.er[t] + av.et[t]);
-      bounds.push_back(static_cast<float>(av.bound[t]));
+      const double v[3] = {av.er[t], av.et[t], av.er[t] + av.et[t]}, b[3] = {av.br[t], av.bt[t], av.bound[t]};
+      double claim = 0;
+      for (int c = 0; c < 3; ++c) {
+        img.planes[c][t] = static_cast<float>(v[c]);
+        claim = std::max(claim, b[c] + std::fabs(stored(img.planes[c][t], job.half) - v[c]));
+      }
+      quadrature.push_back(av.bound[t]);
+      claims.push_back(claim);
       out.nodes += av.nodes[t];
     }
     img.width = job.nx;
@@ -101,7 +113,10 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
                                      kDielectricTarget);
       out.cube[0].insert(out.cube[0].end(), p[0].begin(), p[0].end());
       out.cube[1].insert(out.cube[1].end(), p[1].begin(), p[1].end());
-      bounds.insert(bounds.end(), p[2].begin(), p[2].end());
+      for (float b : p[2]) {
+        quadrature.push_back(b);
+        claims.push_back(b + storageRounding(job.half));
+      }
     }
     out.cube[2].resize(out.cube[0].size());
     for (size_t t = 0; t < out.cube[0].size(); ++t) out.cube[2][t] = out.cube[0][t] + out.cube[1][t];
@@ -114,9 +129,11 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
   for (const auto& p : job.avg ? img.planes : out.cube)
     for (float v : p)
       if (!std::isfinite(v)) throw Error(kExitSoftware, "internal error: " + what + " has a value that is not finite; nothing was written");
-  for (float b : bounds) {
-    if (!std::isfinite(b)) throw Error(kExitSoftware, "internal error: " + what + " has a bound that is not finite; nothing was written");
-    out.maxBound = std::max(out.maxBound, static_cast<double>(b));
+  double maxClaim = 0;
+  for (size_t t = 0; t < claims.size(); ++t) {
+    if (!std::isfinite(claims[t])) throw Error(kExitSoftware, "internal error: " + what + " has a bound that is not finite; nothing was written");
+    out.maxBound = std::max(out.maxBound, quadrature[t]);
+    maxClaim = std::max(maxClaim, claims[t]);
   }
 
   img.channels = {"R", "G", "B"};
@@ -151,7 +168,7 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
   str["brdf.method"] = methodText(job.avg);
   str["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
   double allowance = runner.hasDouble() ? kDoubleAllowance : kFloatAllowance;
-  img.floats["brdf.error"] = static_cast<float>(out.maxBound + allowance + storageRounding(job.half, job.avg));
+  img.floats["brdf.error"] = static_cast<float>(maxClaim + allowance);
   img.floats["brdf.error.quadrature"] = static_cast<float>(out.maxBound);
   return out;
 }

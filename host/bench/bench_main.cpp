@@ -5,7 +5,7 @@
 //
 // usage: brdfbake-bench [--size N] [--samples S] [--stride K] [--repeat R] [--device TEXT] [--times-only]
 //                       [--pair NDF+GAF]... [--all-pairs] [--albedo-avg] [--cold-start [--build-threads N] [--skip-all]] [--materials]
-//                       [--dielectric [--mc-log2 K]]
+//                       [--dielectric [--mc-log2 K]] [--dielectric-avg [--size N] [--pair NDF+GAF]]
 //   --stride K: reference on every K-th texel per axis plus the first/last rows and columns
 //               (default 1: every texel; the reference takes a few seconds for all 16384).
 //   --times-only: skip the errors; times and ratio only.
@@ -39,6 +39,9 @@
 //   --dielectric [--mc-log2 K]: the 32^3 rough-dielectric table (ggx + smith-correlated) timed
 //               against a 2^K-sample Monte Carlo per cell (default K = 23, Cycles' budget) on 27
 //               cells, scaled; both against the o-space reference. host/bench/dielectric_bench.cpp.
+//   --dielectric-avg [--size N] [--pair NDF+GAF]: the N x N dielectric-avg table (default 8, ggx +
+//               smith-correlated) baked as brdfbake bakes it, every stored value against the same
+//               rule run tight: the largest error against brdf.error. ~4 minutes at 8 (3 s an entry).
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -68,6 +71,7 @@ namespace brdfbake {
 int materialsBench(KernelRunner& runner, int samples, int repeat, int stride);  // materials_bench.cpp
 int volumeBench(KernelRunner& runner, int repeat, int bigSize);  // volume_bench.cpp
 int dielectricBench(KernelRunner& runner, int samplesLog2);     // dielectric_bench.cpp
+int dielectricAvgBench(KernelRunner& runner, int n, int ndf, int gaf);  // dielectric_bench.cpp
 int allPairs(KernelRunner& runner, int n, int stride, const std::vector<std::pair<int, int>>& only);  // pairs_bench.cpp
 int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pairs, int size, int stride,
                 const std::string& csv);  // bounds_bench.cpp
@@ -272,7 +276,7 @@ int main(int argc, char** argv) {
   int n = 128, samples = 1024, stride = 1, repeat = 3;
   std::string device;
   bool timesOnly = false, everyPair = false, avgCheck = false, cold = false, skipAll = false, strideSet = false;
-  bool materials = false, volume = false, dielectric = false, bounds = false;
+  bool materials = false, volume = false, dielectric = false, bounds = false, dielectricAvg = false, sizeSet = false;
   std::vector<std::pair<int, int>> pairs;
   std::string csv;
   int mcLog2 = 23;
@@ -284,7 +288,7 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) { std::fprintf(stderr, "%s: missing value\n", a.c_str()); std::exit(64); }
       return argv[++i];
     };
-    if (a == "--size") n = std::atoi(next().c_str());
+    if (a == "--size") { n = std::atoi(next().c_str()); sizeSet = true; }
     else if (a == "--samples") samples = std::atoi(next().c_str());
     else if (a == "--stride") { stride = std::atoi(next().c_str()); strideSet = true; }
     else if (a == "--repeat") repeat = std::atoi(next().c_str());
@@ -296,6 +300,7 @@ int main(int argc, char** argv) {
     else if (a == "--materials") materials = true;
     else if (a == "--volume") volume = true;
     else if (a == "--dielectric") dielectric = true;
+    else if (a == "--dielectric-avg") dielectricAvg = true;
     else if (a == "--bounds") bounds = true;
     else if (a == "--csv") csv = next();
     else if (a == "--pair") {
@@ -339,6 +344,12 @@ int main(int argc, char** argv) {
       return boundsBench(runner, pairs, n, stride, csv);
     }
     if (dielectric) return dielectricBench(runner, std::max(1, std::min(mcLog2, 24)));
+    if (dielectricAvg) {
+      const int nd = pairs.empty() ? NDF_GGX : pairs[0].first, gf = pairs.empty() ? GAF_SMITH_CORRELATED : pairs[0].second;
+      if ((nd != NDF_GGX && nd != NDF_BECKMANN) || (gf != GAF_SMITH && gf != GAF_SMITH_CORRELATED))
+        throw Error(kExitUsage, "--dielectric-avg --pair: the rough dielectric takes ggx or beckmann with smith or smith-correlated");
+      return dielectricAvgBench(runner, sizeSet ? n : 8, nd, gf);
+    }
     if (volume) return volumeBench(runner, repeat, std::max(1, std::min(volumeSize, 1024)));
     // the split sum of the first --pair (ggx + smith-correlated by default) against Karis's MC
     const int ndf = pairs.empty() ? NDF_GGX : pairs[0].first, gaf = pairs.empty() ? GAF_SMITH_CORRELATED : pairs[0].second;

@@ -11,11 +11,13 @@
 #include <cstdio>
 #include <vector>
 
+#include "bake/dielectric_avg.h"
 #include "bake/dielectric_bake.h"
 #include "bench/bench_util.h"
 #include "bench/mc_common.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"
+#include "common/models.h"
 #include "reference/dielectric_reference.h"
 
 namespace brdfbake {
@@ -128,6 +130,68 @@ int dielectricBench(KernelRunner& runner, int samplesLog2) {
               samplesLog2, tMc, cells.size(), tMc * cellsAll / nc, mcMax, std::sqrt(mcSq / nc));
   std::printf("table / MC: %.1fx faster, %.0fx smaller max error\n", tMc * cellsAll / nc / tTable, mcMax / std::max(tabMax, 1e-12));
   return tabMax <= maxBound + 1e-6 ? 0 : 1;
+}
+
+}  // namespace brdfbake
+
+namespace brdfbake {
+
+// brdfbake-bench --dielectric-avg [--size N] [--pair NDF+GAF]: how tight dielectric-avg's claim is.
+// The N x N table (default 8, ggx + smith-correlated, eta in [0.4, 2.5]) baked as brdfbake bakes it
+// (computeDielectric: float storage, brdf.error), every stored value (E_R,avg, E_T,avg, their sum)
+// against the same rule run tight on the device: nodes to 2e-9 per lobe, entries to 1e-8. That
+// reference is not independent of the kernel (the E(mu) it averages is checked against the o-space
+// reference by Dielectric.KernelMatchesReference); its own bound is printed, and its error runs 5 to
+// 50 times below that bound. Exit 1 if an error exceeds brdf.error plus that bound.
+int dielectricAvgBench(KernelRunner& runner, int n, int ndf, int gaf) {
+  DielectricJob job;
+  job.ndf = ndf;
+  job.gaf = gaf;
+  job.avg = true;
+  job.nx = job.ny = n;
+  job.nz = 1;
+  runner.dielectricPoints(ndf, gaf, {0.5}, {0.5}, {1.5}, kDielectricAvgNodeTarget);  // builds the program: not timed
+  double tBake = 0;
+  DielectricTable table = computeDielectric(runner, job, &tBake);
+  std::vector<double> etas = dielectricEtas(job, 0, n), rs, es;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      rs.push_back((x + 0.5) / n);
+      es.push_back(etas[y]);
+    }
+  std::fprintf(stderr, "dielectric-avg: baked in %.1f s; the tight reference (%d entries) takes about %d s more...\n",
+               tBake, n * n, 3 * n * n);
+  auto t0 = std::chrono::steady_clock::now();
+  DielectricEval tight = [&](const DielectricPoints& p) {
+    auto pl = runner.dielectricPoints(ndf, gaf, p.mu, p.r, p.eta, 2e-9f);
+    return DielectricValues{pl[0], pl[1], pl[2], pl[3]};
+  };
+  DielectricAverages ref = dielectricAverages(tight, rs, es, 1e-8);
+  double tRef = bench::seconds(t0);
+  const TableImage& img = table.image;
+  const double claim = img.floats.at("brdf.error");
+  double worst = 0, refBound = 0;
+  size_t at = 0;
+  int channel = 0, over = 0;
+  for (size_t j = 0; j < rs.size(); ++j) {
+    const double want[3] = {ref.er[j], ref.et[j], ref.er[j] + ref.et[j]};
+    refBound = std::max(refBound, ref.bound[j]);
+    for (int c = 0; c < 3; ++c) {
+      double e = std::fabs(img.planes[c][j] - want[c]);
+      if (e > claim) ++over;
+      if (e > worst) worst = e, at = j, channel = c;
+    }
+  }
+  const char* names[3] = {"E_R,avg", "E_T,avg", "E_R,avg + E_T,avg"};
+  std::printf("dielectric-avg %dx%d, %s + %s, eta in [%.1f, %.1f] uniform in s\n", n, n, ndfNames()[ndf].c_str(),
+              gafNames()[gaf].c_str(), job.etaLo, job.etaHi);
+  std::printf("bake (as brdfbake bakes it): %.1f s, %lld E(mu) evaluations; reference (the same rule, tight): %.1f s, "
+              "its largest bound %.2e\n", tBake, table.nodes, tRef, refBound);
+  std::printf("largest error of a stored value %.3e (%s at r %.4f, eta %.4f); brdf.error %.3e (quadrature %.3e): "
+              "claim / error %.2f; values over the claim: %d\n",
+              worst, names[channel], rs[at], es[at], claim, img.floats.at("brdf.error.quadrature"),
+              claim / std::max(worst, 1e-300), over);
+  return worst <= claim + refBound ? 0 : 1;
 }
 
 }  // namespace brdfbake

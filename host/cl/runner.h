@@ -101,11 +101,12 @@ class KernelRunner {
   // max(1, |value|)) over mu (nx) x r (ny) at each of the given etas, [(z * ny + y) * nx + x].
   std::vector<std::vector<float>> dielectricSlab(int ndf, int gaf, int nx, int ny, const std::vector<double>& etas,
                                                  bool nodeGrid, float target);
-  // E_R, E_T and their bound (absolute, the larger) at points (mus[k], rs[k], etas[k]): the nodes of
-  // the averages' rule (bake/dielectric_avg.h), one plane each.
-  std::vector<std::vector<float>> dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
-                                                   const std::vector<double>& rs, const std::vector<double>& etas,
-                                                   float target);
+  // E_R, E_T and their bounds (absolute, each lobe's) at points (mus[k], rs[k], etas[k]): the nodes
+  // of the averages' rule (bake/dielectric_avg.h), one plane each, in the program's precision (double
+  // where the device has fp64: unrounded, so that only the averages' stored entries round).
+  std::vector<std::vector<double>> dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
+                                                    const std::vector<double>& rs, const std::vector<double>& etas,
+                                                    float target);
 
   // Whether the device has cl_khr_fp64 (the 3D and dielectric programs then compute in double).
   bool hasDouble() const { return fp64_; }

@@ -260,15 +260,16 @@ std::vector<std::vector<float>> KernelRunner::dielectricSlab(int ndf, int gaf, i
   return planes;
 }
 
-std::vector<std::vector<float>> KernelRunner::dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
-                                                               const std::vector<double>& rs,
-                                                               const std::vector<double>& etas, float target) {
+std::vector<std::vector<double>> KernelRunner::dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
+                                                                const std::vector<double>& rs,
+                                                                const std::vector<double>& etas, float target) {
   Compiled& c = compiled(ndf, gaf + kDielectricProgram, kDielectricNodes);
   Slot& s = *slots_[c.slot];
-  const int n = static_cast<int>(mus.size());
-  std::vector<std::vector<float>> planes(3);
+  const size_t n = mus.size();
+  std::vector<std::vector<double>> planes(4);
   if (n == 0) return planes;
-  cl::Buffer out = outBuffer(s.context, static_cast<size_t>(n) * 3);
+  const size_t real = fp64_ ? sizeof(double) : sizeof(float);
+  cl::Buffer out(s.context, CL_MEM_WRITE_ONLY, n * 4 * real);
   cl::Buffer mb = etaBuffer(s.context, mus, fp64_), rb = etaBuffer(s.context, rs, fp64_),
              eb = etaBuffer(s.context, etas, fp64_);
   cl::Kernel k(c.program, kDielectricNodes);
@@ -277,12 +278,18 @@ std::vector<std::vector<float>> KernelRunner::dielectricPoints(int ndf, int gaf,
   k.setArg(a++, mb);
   k.setArg(a++, rb);
   k.setArg(a++, eb);
-  k.setArg(a++, n);
+  k.setArg(a++, static_cast<int>(n));
   k.setArg(a++, target);
-  run(c, k, static_cast<size_t>(n), 0);
-  std::vector<float> all = readBack(s.queue, out, static_cast<size_t>(n) * 3);
-  for (int ch = 0; ch < 3; ++ch)
-    planes[ch].assign(all.begin() + static_cast<std::ptrdiff_t>(ch) * n, all.begin() + static_cast<std::ptrdiff_t>(ch + 1) * n);
+  run(c, k, n, 0);
+  std::vector<double> all(n * 4);
+  if (fp64_) {
+    s.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * 4 * real, all.data());
+  } else {
+    std::vector<float> f = readBack(s.queue, out, n * 4);
+    all.assign(f.begin(), f.end());
+  }
+  for (size_t ch = 0; ch < 4; ++ch)
+    planes[ch].assign(all.begin() + static_cast<std::ptrdiff_t>(ch * n), all.begin() + static_cast<std::ptrdiff_t>((ch + 1) * n));
   return planes;
 }
 
