@@ -130,7 +130,7 @@ DielectricAverages dielectricAverages(const DielectricEval& eval, const std::vec
         inner += p.inner[0] + p.inner[1];
       }
       // halving cannot lower the nodes' own share: once the panels' estimates are an eighth of it,
-      // more nodes would not move the bound (at the nodes' target this is rare: README "Rough glass")
+      // more nodes would not move the bound, which then stays above the target (honest, not tight)
       if (total <= target || total - inner <= inner / 8) continue;
       size_t count = ps.size();
       for (size_t q = 0; q < count && ps.size() < kMaxPanels; ++q) {

@@ -141,8 +141,8 @@ namespace brdfbake {
 // (computeDielectric: float storage, brdf.error), every stored value (E_R,avg, E_T,avg, their sum)
 // against the same rule run tight on the device: nodes to 2e-9 per lobe, entries to 1e-8. That
 // reference is not independent of the kernel (the E(mu) it averages is checked against the o-space
-// reference by Dielectric.KernelMatchesReference); its own bound is printed, and its error runs 5 to
-// 50 times below that bound. Exit 1 if an error exceeds brdf.error plus that bound.
+// reference by Dielectric.KernelMatchesReference); its own largest bound is printed. Exit 1 if an
+// error exceeds brdf.error plus that bound.
 int dielectricAvgBench(KernelRunner& runner, int n, int ndf, int gaf) {
   DielectricJob job;
   job.ndf = ndf;
