@@ -247,18 +247,22 @@ TEST(MerlLookup, MissingBinsLeaveTheWeightsAndNoSupportGivesFalse) {
 }
 
 // The quadrature alone, on the analytic BRDF (no table): against the reference's adaptive
-// integral. Its estimate must hold and be small next to the table's sampling error.
+// integral. Its estimate must hold and be small next to the table's sampling error. The analytic
+// function takes the material's parameters rounded to float (as the device does, hostBrdf), so the
+// reference gets the same r and F0: r = 0.3 as a double would move E by 1.7e-8 at mu = 0.05 and
+// make an honest estimate look 4 times too small (session 25).
 TEST(MerlAlbedo, HSpaceQuadratureMatchesTheReferenceOnAnAnalyticMaterial) {
   for (double r : {0.3, 0.5, 0.8}) {
     Brdf3dSpec s = material(r);
-    for (double mu : {0.1, 0.5, 0.95}) {
+    for (double mu : {0.05, 0.1, 0.5, 0.95}) {
       AlbedoEstimate e = hSpaceAlbedo(analyticFunction(s), mu);
       reference::Weight w;
       w.kind = reference::Weight::Fresnel;
-      w.f = {s.fresnel.model, 0.04, 0};
-      double ref = reference::albedo(s.ndf, s.gaf, r, mu, w).b;
+      w.f = {s.fresnel.model, static_cast<float>(0.04), 0};
+      double ref = reference::albedo(s.ndf, s.gaf, static_cast<float>(r), mu, w).b;
       EXPECT_LT(std::fabs(e.e[0] - ref), 1e-6) << "r " << r << " mu " << mu;
-      EXPECT_LT(std::fabs(e.e[0] - ref), 3 * e.err[0] + 1e-8) << "the estimate holds: r " << r << " mu " << mu;
+      // + the reference's own accuracy (1e-11 absolute per integral, host/reference/reference.cpp)
+      EXPECT_LE(std::fabs(e.e[0] - ref), e.err[0] + 1e-11) << "the estimate holds: r " << r << " mu " << mu;
     }
   }
 }
