@@ -220,10 +220,7 @@ TEST(Dielectric, AveragesMatchTightRuleWithHonestBounds) {
       rs.insert(rs.end(), {0.0625, 0.2});
       es.insert(es.end(), {0.8983050847457626, 0.6});
     }
-    DielectricEval dev = [&](const DielectricPoints& p) {
-      auto pl = runner().dielectricPoints(pr[0], pr[1], p.mu, p.r, p.eta, kDielectricAvgNodeTarget);
-      return DielectricValues{pl[0], pl[1], pl[2], pl[3]};
-    };
+    DielectricEval dev = dielectricDeviceEval(runner(), pr[0], pr[1], kDielectricAvgNodeTarget);
     DielectricEval host = [&](const DielectricPoints& p) {
       DielectricValues v;
       for (size_t k = 0; k < p.mu.size(); ++k) {

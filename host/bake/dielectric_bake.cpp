@@ -69,6 +69,13 @@ std::vector<double> dielectricEtas(const DielectricJob& job, int z0, int n) {
   return etas;
 }
 
+DielectricEval dielectricDeviceEval(KernelRunner& runner, int ndf, int gaf, float target) {
+  return [&runner, ndf, gaf, target](const DielectricPoints& p) {
+    auto pl = runner.dielectricPoints(ndf, gaf, p.mu, p.r, p.eta, target);
+    return DielectricValues{pl[0], pl[1], pl[2], pl[3]};
+  };
+}
+
 DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job, double* seconds) {
   auto t0 = std::chrono::steady_clock::now();
   DielectricTable out;
@@ -83,11 +90,8 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
         rs.push_back(job.nodeGrid ? (job.nx > 1 ? static_cast<double>(x) / (job.nx - 1) : 0.0) : (x + 0.5) / job.nx);
         es.push_back(etas[y]);
       }
-    DielectricEval eval = [&](const DielectricPoints& p) {
-      auto pl = runner.dielectricPoints(job.ndf, job.gaf, p.mu, p.r, p.eta, kDielectricAvgNodeTarget);
-      return DielectricValues{pl[0], pl[1], pl[2], pl[3]};
-    };
-    DielectricAverages av = dielectricAverages(eval, rs, es);
+    DielectricAverages av =
+        dielectricAverages(dielectricDeviceEval(runner, job.ndf, job.gaf, kDielectricAvgNodeTarget), rs, es);
     // The averages are formed in double from the nodes' unrounded values (in float without fp64:
     // the float allowance covers that) and rounded once as stored, so each entry's storage term
     // is its own rounding, known exactly: a channel's claim is its bound plus that.

@@ -4,6 +4,7 @@
 #pragma once
 #include <vector>
 
+#include "bake/dielectric_avg.h"
 #include "bake/output_set.h"
 #include "exr/table_file.h"
 #include "plan/plan.h"
@@ -23,6 +24,10 @@ std::vector<double> dielectricEtas(const DielectricJob& job, int z0, int n);
 // 141 s where it took 110 s (brdfbake-bench --dielectric, README "Rough glass"), and with the
 // storage rounding a float table claims about 2e-7.
 constexpr float kDielectricTarget = 5e-8f;
+
+// The averages' rule's E(mu) on the device (KernelRunner::dielectricPoints) with its nodes to
+// `target` per lobe: what the bake uses (kDielectricAvgNodeTarget), and tests and the bench tighter.
+DielectricEval dielectricDeviceEval(KernelRunner& runner, int ndf, int gaf, float target);
 
 // A computed dielectric table: the header (its brdf.error from the texels' bounds) and, for the
 // 3D table, its planes E_R, E_T, E_R + E_T in slab order [(z * ny + y) * nx + x]; for the average,

@@ -162,11 +162,7 @@ int dielectricAvgBench(KernelRunner& runner, int n, int ndf, int gaf) {
   std::fprintf(stderr, "dielectric-avg: baked in %.1f s; the tight reference (%d entries) takes about %d s more...\n",
                tBake, n * n, 3 * n * n);
   auto t0 = std::chrono::steady_clock::now();
-  DielectricEval tight = [&](const DielectricPoints& p) {
-    auto pl = runner.dielectricPoints(ndf, gaf, p.mu, p.r, p.eta, 2e-9f);
-    return DielectricValues{pl[0], pl[1], pl[2], pl[3]};
-  };
-  DielectricAverages ref = dielectricAverages(tight, rs, es, 1e-8);
+  DielectricAverages ref = dielectricAverages(dielectricDeviceEval(runner, ndf, gaf, 2e-9f), rs, es, 1e-8);
   double tRef = bench::seconds(t0);
   const TableImage& img = table.image;
   const double claim = img.floats.at("brdf.error");

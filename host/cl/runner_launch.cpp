@@ -15,9 +15,10 @@ using namespace runner_detail;
 
 namespace {
 cl::Buffer outBuffer(const cl::Context& ctx, size_t n) { return cl::Buffer(ctx, CL_MEM_WRITE_ONLY, n * sizeof(float)); }
-std::vector<float> readBack(cl::CommandQueue& q, const cl::Buffer& b, size_t n) {
-  std::vector<float> v(n);
-  q.enqueueReadBuffer(b, CL_TRUE, 0, n * sizeof(float), v.data());
+template <class T = float>
+std::vector<T> readBack(cl::CommandQueue& q, const cl::Buffer& b, size_t n) {
+  std::vector<T> v(n);
+  q.enqueueReadBuffer(b, CL_TRUE, 0, n * sizeof(T), v.data());
   return v;
 }
 }  // namespace
@@ -281,9 +282,9 @@ std::vector<std::vector<double>> KernelRunner::dielectricPoints(int ndf, int gaf
   k.setArg(a++, static_cast<int>(n));
   k.setArg(a++, target);
   run(c, k, n, 0);
-  std::vector<double> all(n * 4);
+  std::vector<double> all;
   if (fp64_) {
-    s.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * 4 * real, all.data());
+    all = readBack<double>(s.queue, out, n * 4);
   } else {
     std::vector<float> f = readBack(s.queue, out, n * 4);
     all.assign(f.begin(), f.end());
