@@ -15,6 +15,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli_run.h"
@@ -270,19 +271,47 @@ TEST(MerlAlbedo, HSpaceQuadratureMatchesTheReferenceOnAnAnalyticMaterial) {
 // On a MERL file's interpolant at grazing views: where a theta_d or phi_d edge's curve touches the
 // arc inside a theta_h bin, the inner integral has a square root; until session 25 the theta_h
 // panels were not cut there, the rules did not settle, and at r = 0.3, mu = 1/32 the (6,5) rule
-// was off by 4.4e-7 under an estimate of 1.4e-7. Against the (15,14) rule, which converges to
-// ~1e-10 with the cuts: the estimate holds and the error is small.
+// was off by 4.4e-7 under an estimate of 1.4e-7. With the cuts the rules still converge only
+// algebraically there, and |R_6 - R_4| alone fell below R_6's error at 3 of 48 texel centres
+// (session 26). Against the (25,24) rule, above the ladder's rules: the ladder meets its target
+// below n = 25, its estimate holds, and the error is within the target.
 TEST(MerlAlbedo, EstimateHoldsOnAFilesInterpolantAtGrazingViews) {
   MerlData d = readMerl(merlFileOf(0.3).string());
   RusinkiewiczFn f = merlFunction(d);
-  for (double mu : {1.0 / 32, 3.0 / 32}) {
+  for (double mu : {1.0 / 32, 3.0 / 32, 9.0 / 32}) {
     AlbedoEstimate e = hSpaceAlbedo(f, mu);
-    double tight = hSpaceIntegral(f, mu, HSpaceRule{15, 14})[0];
-    std::printf("mu %.5f: E %.10f, (15,14) %.10f, error %.2e, estimate %.2e\n", mu, e.e[0], tight,
-                std::fabs(e.e[0] - tight), e.err[0]);
-    EXPECT_LE(std::fabs(e.e[0] - tight), e.err[0] + 1e-9) << "mu " << mu;
-    EXPECT_LT(std::fabs(e.e[0] - tight), 2e-8) << "mu " << mu;
+    double tight = hSpaceIntegral(f, mu, HSpaceRule{25, 24})[0];
+    std::printf("mu %.5f: E %.10f by (%d,%d), (25,24) %.10f, error %.2e, estimate %.2e\n", mu, e.e[0], e.nodes,
+                e.nodes - 1, tight, std::fabs(e.e[0] - tight), e.err[0]);
+    EXPECT_LT(e.nodes, 25) << "mu " << mu;
+    EXPECT_LE(e.err[0], merlTexelTarget(e.e)) << "mu " << mu;
+    EXPECT_LE(std::fabs(e.e[0] - tight), e.err[0]) << "mu " << mu;
   }
+}
+
+// brdf.error of a measured material's table: above every stored value's error and within 4 times
+// the largest (issue 9). Before session 26 it was the largest |R_6 - R_4| + the largest storage
+// rounding + a flat 2^-24 that was not derived, 1.1e-7 for this file against errors of ~2e-8.
+// Reference: the (20,19) rule, which the ladder does not reach here.
+TEST(MerlAlbedo, TableClaimBoundsTheStoredValuesWithinFourTimes) {
+  MerlData d = readMerl(merlFileOf(0.3).string());
+  RusinkiewiczFn f = merlFunction(d);
+  const int n = 8;
+  TableImage t = merlTable(d, "ggx", TableKind::Albedo, n, false, false);
+  std::vector<double> ref(n);
+  std::vector<std::thread> workers;
+  for (int w = 0; w < 2; ++w)  // the reference is ~3 times the table's work: two threads
+    workers.emplace_back([&, w] {
+      for (int i = w; i < n; i += 2) ref[i] = hSpaceIntegral(f, (i + 0.5) / n, HSpaceRule{20, 19})[0];
+    });
+  for (auto& w : workers) w.join();
+  double worst = 0;
+  for (int i = 0; i < n; ++i) worst = std::max(worst, std::fabs(double(t.planes[0][i]) - ref[i]));
+  const double claim = t.floats["brdf.error"];
+  std::printf("brdf.error %.3e, largest error of a stored value %.3e: %.2fx\n", claim, worst, claim / worst);
+  EXPECT_NE(t.strings["brdf.method"].find("n climbs"), std::string::npos) << t.strings["brdf.method"];
+  EXPECT_GE(claim, worst);
+  EXPECT_LE(claim, 4 * worst);
 }
 
 // The round trip through the command line: analytic material -> MERL file -> --brdf merl albedo

@@ -7,10 +7,12 @@
 //   phi_h:   at each theta_h node, the circle cut where theta_d or phi_d crosses a bin edge and where
 //            i crosses the horizon (all closed forms), Gauss-Legendre on every piece;
 // so every kink of the trilinear interpolant (and every step of MERL's nearest-bin lookup) is a
-// panel edge. The error estimate is the difference between two such rules (4 x 3 and 6 x 5 nodes
-// per piece); the finer one's value is returned.
+// panel edge. The rules (n, n - 1) (n nodes per theta_h panel, n - 1 per phi_h piece) climb a
+// ladder from n = 4; a rule's estimate is its largest difference from the two rules below it.
 #pragma once
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <functional>
 #include <string>
 
@@ -31,13 +33,25 @@ struct HSpaceRule {
 };
 
 struct AlbedoEstimate {
-  std::array<double, 3> e{}, err{};  // per channel: value and |fine - coarse| (+ inner bounds for E_avg)
+  std::array<double, 3> e{}, err{};  // per channel: value and its estimate (+ inner bounds for E_avg)
   double unsupported = 0;            // share of int (n.i) dw_i / pi where f had no value
+  int nodes = 0;                     // theta_h nodes per bin of the rule returned (largest, for E_avg)
 };
+
+// The rules hSpaceAlbedo climbs, (n, n - 1) for n in kMerlLadder, and where it stops: at the first
+// rule from the third on whose estimate is within merlTexelTarget in every channel (else the
+// last). The target follows what storing the value costs anyway: 2^-25 |E| is half a float ulp
+// at the bottom of E's binade, so the claim (estimate + rounding) stays within a few times the
+// stored values' error for dark materials too; 1e-9 below that.
+inline constexpr std::array<int, 10> kMerlLadder{4, 5, 6, 7, 8, 10, 12, 15, 20, 25};
+inline double merlTexelTarget(const std::array<double, 3>& e) {
+  return std::max(1e-9, std::ldexp(std::max({std::fabs(e[0]), std::fabs(e[1]), std::fabs(e[2])}), -25));
+}
+inline constexpr double kMerlArithmetic = 1e-11;  // the double sums' rounding, added to brdf.error
 
 // One rule's E(mu) per channel; *unsupported (optional) as in AlbedoEstimate.
 std::array<double, 3> hSpaceIntegral(const RusinkiewiczFn& f, double mu, HSpaceRule rule, double* unsupported = nullptr);
-// E(mu) by the fine rule {6, 5}, err = |fine - coarse {4, 3}|.
+// E(mu) by the ladder's rule R_k, err = max(|R_k - R_k-1|, |R_k - R_k-2|) per channel.
 AlbedoEstimate hSpaceAlbedo(const RusinkiewiczFn& f, double mu);
 // E_avg = 2 int_0^1 E(mu) mu dmu: Gauss-Legendre on the mu panels [0, .05, .2, .5, 1], 8 nodes each
 // (err: |8 - 5 nodes| + the nodes' own err); `threads` workers (0 = hardware).
