@@ -11,26 +11,18 @@
 // (the rescaled estimate's) at r across the horizon-layer range and the rest,
 // and prints the largest miss, (error - rule bound) / E_avg, per pair; BRDFBAKE_AVG_SWEEP=1 runs
 // every r of 32- and 64-entry tables and a 33-entry node grid instead (how the floors were set:
-// ~35 minutes on two cores; BRDFBAKE_AVG_GAFS=0,2 restricts it to those GAF ids).
-//
-// The reference's values at the default r are kept in tests/data/avg_reference.txt: computing them
-// is 96% of this test's time (about 7 minutes of CPU for the four NDFs, the suite's longest part).
-// AvgReferenceFile.RecomputedSampleMatches recomputes a spread sample of them on every run, and the
-// test fails if an entry it needs is missing. BRDFBAKE_AVG_REFERENCE=write recomputes them all and
-// rewrites the file (after a change to host/reference).
+// ~35 minutes on two cores; BRDFBAKE_AVG_GAFS=0,2 restricts it to those GAF ids). The reference's
+// values at the default r come from tests/data/reference_values.txt (tests/reference_cache.h):
+// computing them all was 96% of this test's time, about 7 minutes of CPU for the four NDFs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <map>
-#include <mutex>
 #include <sstream>
 #include <string>
 #include <thread>
-#include <tuple>
 #include <vector>
 
 #include "cl/avg_rule.h"
@@ -39,6 +31,7 @@
 #include "common/models.h"
 #include "reference/reference.h"
 #include "host_avg_rule.h"
+#include "reference_cache.h"
 #include "test_device.h"
 
 namespace brdfbake {
@@ -47,14 +40,14 @@ using brdf64::real;  // for the RC() of albedo_avg.h's constants
 
 using testing_avg::hostRule;
 
-bool sweeping() {
+const bool sweeping = [] {
   const char* e = std::getenv("BRDFBAKE_AVG_SWEEP");
   return e && std::string(e) == "1";
-}
+}();
 
 std::vector<float> sweepR() {
   std::vector<float> rs;
-  if (sweeping()) {
+  if (sweeping) {
     for (int n : {32, 64})
       for (int j = 0; j < n; ++j) rs.push_back((static_cast<float>(j) + 0.5f) / static_cast<float>(n));
     for (int j = 0; j <= 32; ++j) rs.push_back(static_cast<float>(j) / 32.0f);
@@ -66,89 +59,6 @@ std::vector<float> sweepR() {
   for (int j : {1, 5, 7, 8, 21, 63}) rs.push_back(static_cast<float>(j) / 64.0f);
   for (float r : {0.0f, 1.0f}) rs.push_back(r);
   return rs;
-}
-
-bool writingReference() {
-  const char* e = std::getenv("BRDFBAKE_AVG_REFERENCE");
-  return e && std::string(e) == "write";
-}
-
-// tests/data/avg_reference.txt: "ndf gaf r value" per line, names as the CLI spells them, r as a
-// hexadecimal float (the exact float the bake uses), value to 17 digits; '#' lines are comments.
-struct ReferenceKey {
-  std::string ndf, gaf;
-  float r;
-  bool operator<(const ReferenceKey& o) const { return std::tie(ndf, gaf, r) < std::tie(o.ndf, o.gaf, o.r); }
-};
-const std::string kReferenceFile = std::string(BRDFBAKE_SOURCE_DIR) + "/tests/data/avg_reference.txt";
-
-std::map<ReferenceKey, double>& referenceTable() {
-  static std::map<ReferenceKey, double> table = [] {
-    std::map<ReferenceKey, double> t;
-    std::ifstream in(kReferenceFile);
-    for (std::string line; std::getline(in, line);) {
-      if (line.empty() || line[0] == '#') continue;
-      std::istringstream fields(line);
-      std::string ndf, gaf, r;
-      double v;
-      if (fields >> ndf >> gaf >> r >> v) t[{ndf, gaf, std::strtof(r.c_str(), nullptr)}] = v;
-    }
-    return t;
-  }();
-  return table;
-}
-std::mutex referenceLock;
-std::map<ReferenceKey, double> computed;  // with BRDFBAKE_AVG_REFERENCE=write: every value, for the file
-
-// The reference's E_avg: from the file, else computed (*missing counts those, so the default run can
-// insist on none).
-double referenceAvg(int ndf, int gaf, float r, int* missing) {
-  ReferenceKey key{ndfNames()[ndf], gafNames()[gaf], r};
-  if (!writingReference()) {
-    auto it = referenceTable().find(key);
-    if (it != referenceTable().end()) return it->second;
-  }
-  double v = reference::albedoAvg(ndf, gaf, r);
-  std::lock_guard<std::mutex> lock(referenceLock);
-  ++*missing;
-  computed[key] = v;
-  return v;
-}
-
-// With BRDFBAKE_AVG_REFERENCE=write: after the AvgRule tests, every value they computed, as the file.
-struct WriteReferenceFile : ::testing::Environment {
-  void TearDown() override {
-    if (!writingReference() || computed.empty()) return;
-    std::ofstream out(kReferenceFile, std::ios::trunc);
-    out << "# E_avg = 2 int E(mu) mu dmu by host/reference (adaptive Gauss-Kronrod in double, 1e-11 per\n"
-           "# integral), for tests/avg_rule_test.cpp: ndf gaf r (hexadecimal float) E_avg. Written by\n"
-           "# BRDFBAKE_AVG_REFERENCE=write ./build/tests/brdfbake-avg-rule-tests --gtest_filter='MicrofacetNdfs/*'\n"
-           "# (about 7 minutes of CPU); AvgReferenceFile.RecomputedSampleMatches checks a sample on every run.\n";
-    char line[256];
-    for (const auto& [key, v] : computed) {
-      std::snprintf(line, sizeof line, "%s %s %a %.17g\n", key.ndf.c_str(), key.gaf.c_str(), static_cast<double>(key.r), v);
-      out << line;
-    }
-    std::printf("wrote %zu reference values to %s\n", computed.size(), kReferenceFile.c_str());
-  }
-};
-[[maybe_unused]] ::testing::Environment* const kWriteReference =
-    ::testing::AddGlobalTestEnvironment(new WriteReferenceFile);
-
-// The file against the reference itself: every 50th entry (in the file's order: ndf, gaf, r), with
-// its NDF, GAF and r spread, recomputed. The reference is deterministic, so they agree to rounding.
-TEST(AvgReferenceFile, RecomputedSampleMatches) {
-  const std::map<ReferenceKey, double>& table = referenceTable();
-  ASSERT_GE(table.size(), 300u) << kReferenceFile << " is missing or short";
-  size_t k = 0, checked = 0;
-  for (const auto& [key, v] : table) {
-    if (k++ % 50 != 0) continue;
-    const double now = reference::albedoAvg(ndfId(key.ndf), gafId(key.gaf), key.r);
-    EXPECT_NEAR(now, v, 1e-12) << key.ndf << "+" << key.gaf << " r " << key.r;
-    std::printf("%s+%s r %.6f: file %.15f, recomputed %.15f\n", key.ndf.c_str(), key.gaf.c_str(), key.r, v, now);
-    ++checked;
-  }
-  EXPECT_GE(checked, 6u);
 }
 
 class AvgRule : public ::testing::TestWithParam<int> {};
@@ -173,17 +83,15 @@ TEST_P(AvgRule, BoundHoldsWithTheFloorsMeasuredOnTheAverage) {
     std::vector<AvgSum> got = hostRule(ndf, gaf, rs);
     std::vector<double> ref(rs.size());
     std::vector<std::thread> threads;
-    int missing = 0;
     for (size_t t = 0; t < 2; ++t)
       threads.emplace_back([&, t] {
-        for (size_t j = t; j < rs.size(); j += 2) ref[j] = referenceAvg(ndf, gaf, rs[j], &missing);
+        for (size_t j = t; j < rs.size(); j += 2) {
+          auto compute = [&] { return reference::albedoAvg(ndf, gaf, rs[j]); };
+          ref[j] = sweeping ? compute()
+                            : testing_ref::cached1(testing_ref::keyOf("albedoAvg " + ndfNames()[ndf] + " " + gafNames()[gaf], {rs[j]}), compute);
+        }
       });
     for (std::thread& t : threads) t.join();
-    if (!sweeping() && !writingReference()) {
-      EXPECT_EQ(missing, 0) << ndfNames()[ndf] << "+" << gafNames()[gaf] << ": " << missing
-                            << " reference values not in " << kReferenceFile
-                            << " (computed instead; rewrite it with BRDFBAKE_AVG_REFERENCE=write)";
-    }
     const bool tabulated = brdf64::avg_model_error(ndf, gaf) > 0;
     double pairMiss = 0;
     float at = 0;

@@ -21,6 +21,7 @@
 #include "common/models.h"
 #include "exr/table_file.h"
 #include "reference/reference.h"
+#include "reference_cache.h"
 #include "reference/sheen_reference.h"
 #include "host_avg_rule.h"
 #include "test_device.h"
@@ -286,10 +287,13 @@ TEST(Sheen, KernelAlbedoAvgAndKp) {
       // (E is smooth in mu at this r but for charlie-smith's kink at mu = 1/2, where the view's fitted
       // Lambda switches branch: without that split this reference was off by 3e-7;
       // reference::sheenAlbedoAvg's nested adaptive rule takes minutes)
-      double want = 0;
-      for (auto [lo, hi] : {std::pair{0.0, 0.1}, std::pair{0.1, 0.5}, std::pair{0.5, 1.0}})
-        want += boost::math::quadrature::gauss<double, 30>::integrate(
-            [&](double mu) { return 2 * mu * reference::sheenAlbedo(gaf, r, mu); }, lo, hi);
+      double want = testing_ref::cached1(testing_ref::keyOf("sheenAlbedoAvg gl30x3 " + gafNames()[gaf], {r}), [&] {
+        double sum = 0;
+        for (auto [lo, hi] : {std::pair{0.0, 0.1}, std::pair{0.1, 0.5}, std::pair{0.5, 1.0}})
+          sum += boost::math::quadrature::gauss<double, 30>::integrate(
+              [&](double mu) { return 2 * mu * reference::sheenAlbedo(gaf, r, mu); }, lo, hi);
+        return sum;
+      });
       double err = rel(t.planes[0][j], want);
       EXPECT_LE(err, t.err[j] + avgFloatArithmeticError(t.planes[0][j], NDF_CHARLIE, gaf)) << gafNames()[gaf] << " r " << r;
       worst = std::max(worst, err);
@@ -314,12 +318,16 @@ TEST(Sheen, AlbedoAvgMeetsTheGoalAtTheSmallestRoughness) {
   for (int gaf : {GAF_CHARLIE_SMITH, GAF_NEUBELT}) {
     KernelTable t = runner().albedoAvg(NDF_CHARLIE, gaf, n, false);
     for (int j = 0; j < n; ++j) EXPECT_LE(t.err[j], KernelRunner::kAvgGoalSheen) << gafNames()[gaf] << " entry " << j;
-    double r = static_cast<float>(0.5 / n), want[2] = {0, 0};
-    for (int k = 0; k + 1 < 10; ++k) {
-      auto f = [&](double mu) { return 2 * mu * reference::sheenAlbedo(gaf, r, mu); };
-      want[0] += boost::math::quadrature::gauss<double, 20>::integrate(f, edges[k], edges[k + 1]);
-      want[1] += boost::math::quadrature::gauss<double, 30>::integrate(f, edges[k], edges[k + 1]);
-    }
+    double r = static_cast<float>(0.5 / n);
+    std::vector<double> want = testing_ref::cached(testing_ref::keyOf("sheenAlbedoAvg gl20,gl30x9 " + gafNames()[gaf], {r}), [&] {
+      std::vector<double> w = {0, 0};
+      for (int k = 0; k + 1 < 10; ++k) {
+        auto f = [&](double mu) { return 2 * mu * reference::sheenAlbedo(gaf, r, mu); };
+        w[0] += boost::math::quadrature::gauss<double, 20>::integrate(f, edges[k], edges[k + 1]);
+        w[1] += boost::math::quadrature::gauss<double, 30>::integrate(f, edges[k], edges[k + 1]);
+      }
+      return w;
+    });
     ASSERT_LE(rel(want[0], want[1]), 1e-8) << "the reference's two rules disagree";
     double err = rel(t.planes[0][0], want[1]);
     std::printf("%s, r = 1/64: E_avg %.9f, reference %.9f, error %.2e, bound %.2e\n", gafNames()[gaf].c_str(),
