@@ -145,7 +145,7 @@ TEST(Fresnel, AlbedoMatchesReference) {
       refs.push_back(std::async(std::launch::async, [=] {
         const reference::Weight wt = mu == 0 && r == 0 ? reference::Weight{} : w;
         std::vector<double> v = testing_ref::cached(
-            testing_ref::keyOf("albedo ggx smith-correlated", {r, mu, double(wt.kind), double(wt.f.model), wt.f.x, wt.f.y}), [&] {
+            testing_ref::keyOf("albedo " + ndfNames()[ndf] + " " + gafNames()[gaf], {r, mu, double(wt.kind), double(wt.f.model), wt.f.x, wt.f.y}), [&] {
               reference::Moments m = reference::albedo(ndf, gaf, r, mu, wt);
               return std::vector<double>{m.a, m.b};
             });
@@ -247,7 +247,7 @@ TEST(Fresnel, AverageAlbedoMatchesReference) {
     for (int j = 0; j < n; ++j) {
       double r = static_cast<float>((j + 0.5) / n);
       double want = testing_ref::cached1(
-          testing_ref::keyOf("albedoAvg ggx smith-correlated fresnel", {r, double(c.model), c.x, c.y}),
+          testing_ref::keyOf("albedoAvg " + ndfNames()[ndf] + " " + gafNames()[gaf] + " fresnel", {r, double(c.model), c.x, c.y}),
           [&] { return reference::albedoAvg(ndf, gaf, r, w); });
       double e = rel(t.planes[0][j], want);
       EXPECT_LE(e, t.err[j] + avgFloatArithmeticError(t.planes[0][j], ndf, gaf, true))

@@ -229,8 +229,9 @@ std::array<double, 3> hSpaceIntegral(const RusinkiewiczFn& f, double mu, HSpaceR
 // not always with one sign. So one difference, |R_6 - R_4|, was the coarse rule's error, 5 to 9
 // times the fine one's, and at times (3 of 48 texel centres, session 26) below it. The ladder
 // below takes three rules: R_k's estimate is max(|R_k - R_k-1|, |R_k - R_k-2|), which covered
-// every texel measured against the (20, 19) rule (4 materials x 16 texel centres and 3 x 11 nodes,
-// 1.5 to 10 times the error), and climbs while any channel's estimate is above merlTexelTarget.
+// every value measured against the (30, 29) rule (4 materials x 16 texel centres and 3 x 11 nodes:
+// 1.0 to 8.6 times the error, the 1.0 where the reference itself wobbles by 1e-10; docs/merl.md,
+// "Tight claims"), and climbs while any channel's estimate is above merlTexelTarget.
 AlbedoEstimate hSpaceAlbedo(const RusinkiewiczFn& f, double mu) {
   AlbedoEstimate r;
   std::array<double, 3> prev2 = hSpaceIntegral(f, mu, HSpaceRule{kMerlLadder[0], kMerlLadder[0] - 1});
@@ -331,11 +332,13 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
   img.strings["brdf.table"] = tableName(kind);
   img.strings["brdf.material"] = "merl:" + name;
   img.strings["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
+  std::string ladder;
+  for (int n : kMerlLadder) ladder += (ladder.empty() ? "" : ", ") + std::to_string(n);
   const std::string rule =
       "h-space quadrature of the MERL table's trilinear interpolant (sqrt theta_h bins, phi_d period pi, unmeasured "
       "and below-horizon bins left out of the weights): theta_h by Gauss-Legendre n per bin (bins cut where the horizon "
       "turns and where a theta_d or phi_d edge touches the arc), phi_h by Gauss-Legendre n - 1 per piece between the "
-      "theta_d and phi_d bin edges and the horizon; n climbs 4, 5, 6, 7, 8, 10, 12, 15, 20, 25 until the estimate "
+      "theta_d and phi_d bin edges and the horizon; n climbs " + ladder + " until the estimate "
       "max(|R_n - R_prev|, |R_n - R_prev2|) is within max(1e-9, 2^-25 |E|) in every channel (the largest n used: " +
       std::to_string(std::max_element(est.begin(), est.end(), [](const AlbedoEstimate& a, const AlbedoEstimate& b) {
                        return a.nodes < b.nodes;
