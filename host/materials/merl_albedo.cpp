@@ -5,6 +5,7 @@
 //   o in h's frame (Rusinkiewicz's d, up to phi_d + pi, which the table folds away):
 //     d = (sin theta_o cos phi_h cos theta_h - cos theta_o sin theta_h, -sin theta_o sin phi_h, o.h)
 #include "materials/merl_albedo.h"
+#include "materials/merl_quadrature.h"
 
 #include <Imath/half.h>
 
@@ -23,15 +24,16 @@
 
 namespace brdfbake {
 
+using merl_detail::Gauss;
+using merl_detail::gaussCached;
+using merl_detail::parallelFor;
+
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2 * kPi;
 
 // Gauss-Legendre nodes and weights on [0, 1] (Newton on P_n from Chebyshev starting points).
-struct Gauss {
-  std::vector<double> x, w;
-};
 Gauss gaussLegendre(int n) {
   Gauss g;
   for (int i = 0; i < n; ++i) {
@@ -54,14 +56,6 @@ Gauss gaussLegendre(int n) {
   return g;
 }
 
-const Gauss& gaussCached(int n) {
-  static std::mutex m;
-  static std::vector<Gauss> cache(kMerlLadder.back() + 1);
-  std::lock_guard<std::mutex> lock(m);
-  if (cache[n].x.empty()) cache[n] = gaussLegendre(n);
-  return cache[n];
-}
-
 // Bin edges as the quadrature needs them, computed once.
 struct Edges {
   double cosThetaD[kMerlThetaD];               // cos of theta_d edges k = 1..89 (index k)
@@ -81,36 +75,17 @@ double wrap(double t) {
   return t < 0 ? t + kTwoPi : t;
 }
 
-// Runs job(k) for k in [0, n) on `threads` workers; progress lines on stderr after two seconds.
-template <class Job>
-void parallelFor(int n, int threads, const std::string& what, const Job& job) {
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::max(1, std::min(threads, n));
-  std::atomic<int> next{0}, done{0};
-  std::mutex printLock;
-  auto t0 = std::chrono::steady_clock::now();
-  double lastPrint = 0;
-  auto work = [&] {
-    for (int k; (k = next++) < n;) {
-      job(k);
-      int d = ++done;
-      double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (!what.empty() && t > 2) {
-        std::lock_guard<std::mutex> lock(printLock);
-        if (t - lastPrint >= 1 || d == n) {
-          std::fprintf(stderr, "brdfbake: %s: %d/%d (%.0f s)\n", what.c_str(), d, n, t);
-          lastPrint = t;
-        }
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
-}
-
 }  // namespace
+
+namespace merl_detail {
+const Gauss& gaussCached(int n) {
+  static std::mutex m;
+  static std::vector<Gauss> cache(kMerlLadder.back() + 1);
+  std::lock_guard<std::mutex> lock(m);
+  if (cache[n].x.empty()) cache[n] = gaussLegendre(n);
+  return cache[n];
+}
+}  // namespace merl_detail
 
 RusinkiewiczFn merlFunction(const MerlData& d, bool nearestBin) {
   if (nearestBin)
@@ -300,7 +275,7 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
   const std::string what = "merl:" + name + " " + tableName(kind);
   if (kind == TableKind::AlbedoAvg) {
     img.width = img.height = 1;
-    est = {hSpaceAlbedoAvg(f, 0, what)};
+    est = {directAlbedoAvg(f, 0, what)};
   } else {
     img.width = width;
     img.height = 1;
@@ -332,29 +307,41 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
   img.strings["brdf.table"] = tableName(kind);
   img.strings["brdf.material"] = "merl:" + name;
   img.strings["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
-  std::string ladder;
-  for (int n : kMerlLadder) ladder += (ladder.empty() ? "" : ", ") + std::to_string(n);
-  const std::string rule =
-      "h-space quadrature of the MERL table's trilinear interpolant (sqrt theta_h bins, phi_d period pi, unmeasured "
-      "and below-horizon bins left out of the weights): theta_h by Gauss-Legendre n per bin (bins cut where the horizon "
-      "turns and where a theta_d or phi_d edge touches the arc), phi_h by Gauss-Legendre n - 1 per piece between the "
-      "theta_d and phi_d bin edges and the horizon; n climbs " + ladder + " until the estimate "
-      "max(|R_n - R_prev|, |R_n - R_prev2|) is within max(1e-9, 2^-25 |E|) in every channel (the largest n used: " +
+  auto listOf = [](const auto& ladder) {
+    std::string text;
+    for (int n : ladder) text += (text.empty() ? "" : ", ") + std::to_string(n);
+    return text;
+  };
+  const std::string largest =
       std::to_string(std::max_element(est.begin(), est.end(), [](const AlbedoEstimate& a, const AlbedoEstimate& b) {
                        return a.nodes < b.nodes;
-                     })->nodes) +
+                     })->nodes);
+  const std::string interpolant =
+      "the MERL table's trilinear interpolant (sqrt theta_h bins, phi_d period pi, unmeasured and below-horizon bins "
+      "left out of the weights)";
+  const std::string claimText =
+      std::string(" is within ") + (kind == TableKind::AlbedoAvg ? "max(1e-10, 2^-28 |E|)" : "max(1e-9, 2^-25 |E|)") +
+      " in every channel (the largest n used: " + largest +
       "); error: that estimate + the value's storage rounding, the largest over the table, + 1e-11";
   if (kind == TableKind::AlbedoAvg) {
     img.strings["brdf.axes"] = "none";
     img.strings["brdf.channels"] = "R,G,B=E_avg (2 int E(mu) mu dmu of the measured material, per colour channel)";
-    img.strings["brdf.method"] = "E_avg by Gauss-Legendre 8 on the mu panels [0,.05,.2,.5,1] (error |8 - 5 nodes| + node "
-                                 "bounds), E at each node by " + rule;
+    img.strings["brdf.method"] =
+        "E_avg = 16 int f W sin(theta_h) sin(theta_d) cos(theta_d) over (theta_h, theta_d, phi_d) (Rusinkiewicz's change "
+        "of variables, phi_h integrated out; W = cos(theta_i) cos(theta_o) > 0) of " + interpolant +
+        ": Gauss-Legendre n per theta_h bin, per theta_d piece (bin edges, pi/2 - theta_h, and where the horizon's "
+        "phi_d crosses a phi_d edge) and per phi_d piece (bin edges and the horizon); n climbs " + listOf(kMerlAvgLadder) +
+        " until the estimate max(|Q_n - Q_prev|, |Q_n - Q_prev2|)" + claimText;
   } else {
     img.strings["brdf.axes"] = "mu";
     img.strings["brdf.grid"] = nodeGrid ? "node" : "texel-center";
     img.v2f["brdf.mu.range"] = {0.0f, 1.0f};
     img.strings["brdf.channels"] = merlChannels(kind);
-    img.strings["brdf.method"] = rule;
+    img.strings["brdf.method"] =
+        "h-space quadrature of " + interpolant + ": theta_h by Gauss-Legendre n per bin (bins cut where the horizon "
+        "turns and where a theta_d or phi_d edge touches the arc), phi_h by Gauss-Legendre n - 1 per piece between the "
+        "theta_d and phi_d bin edges and the horizon; n climbs " + listOf(kMerlLadder) +
+        " until the estimate max(|R_n - R_prev|, |R_n - R_prev2|)" + claimText;
   }
   img.floats["brdf.merl.unsupported"] = static_cast<float>(lost);
   float stored = static_cast<float>(claim);

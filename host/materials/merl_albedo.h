@@ -54,8 +54,21 @@ std::array<double, 3> hSpaceIntegral(const RusinkiewiczFn& f, double mu, HSpaceR
 // E(mu) by the ladder's rule R_k, err = max(|R_k - R_k-1|, |R_k - R_k-2|) per channel.
 AlbedoEstimate hSpaceAlbedo(const RusinkiewiczFn& f, double mu);
 // E_avg = 2 int_0^1 E(mu) mu dmu: Gauss-Legendre on the mu panels [0, .05, .2, .5, 1], 8 nodes each
-// (err: |8 - 5 nodes| + the nodes' own err); `threads` workers (0 = hardware).
+// (err: |8 - 5 nodes| + the nodes' own err); `threads` workers (0 = hardware). The tables' E_avg
+// until session 26; now a second method for the tests (E(mu) kinks wherever a cut meets a bin edge,
+// so its estimate is honest but up to 57 times its error).
 AlbedoEstimate hSpaceAlbedoAvg(const RusinkiewiczFn& f, int threads = 0, const std::string& progress = "");
+// E_avg over the table's own coordinates (theta_h, theta_d, phi_d), where its kinks are coordinate
+// planes (merl_albedo_avg.cpp): rules of n nodes per bin and piece, n climbing kMerlAvgLadder as
+// hSpaceAlbedo's texels climb theirs; what the albedo-avg table holds.
+inline constexpr std::array<int, 7> kMerlAvgLadder{2, 3, 4, 5, 6, 7, 8};
+// E_avg is one value per channel, so its claim is tight only if its estimate sits well below the
+// storage rounding it is added to (else a value that happens to round almost exactly makes the
+// claim many times its error): an eighth of merlTexelTarget, 1e-10 below that.
+inline double merlAvgTarget(const std::array<double, 3>& e) {
+  return std::max(1e-10, std::ldexp(std::max({std::fabs(e[0]), std::fabs(e[1]), std::fabs(e[2])}), -28));
+}
+AlbedoEstimate directAlbedoAvg(const RusinkiewiczFn& f, int threads = 0, const std::string& progress = "");
 
 // The table of a measured material, RGB, no roughness axis, with its metadata:
 //   albedo, splitsum: E(mu) per channel over `width` mu texels (height 1; mu at texel centres or,
