@@ -228,36 +228,6 @@ AlbedoEstimate hSpaceAlbedo(const RusinkiewiczFn& f, double mu) {
   return r;
 }
 
-AlbedoEstimate hSpaceAlbedoAvg(const RusinkiewiczFn& f, int threads, const std::string& progress) {
-  const double panels[] = {0, 0.05, 0.2, 0.5, 1};
-  struct Node {
-    double mu, wFine, wCoarse;
-  };
-  std::vector<Node> nodes;
-  for (int n : {8, 5}) {
-    const Gauss& g = gaussCached(n);
-    for (int p = 0; p < 4; ++p)
-      for (size_t q = 0; q < g.x.size(); ++q) {
-        double len = panels[p + 1] - panels[p], mu = panels[p] + len * g.x[q];
-        nodes.push_back({mu, n == 8 ? len * g.w[q] : 0, n == 5 ? len * g.w[q] : 0});
-      }
-  }
-  std::vector<AlbedoEstimate> at(nodes.size());
-  parallelFor(static_cast<int>(nodes.size()), threads, progress, [&](int k) { at[k] = hSpaceAlbedo(f, nodes[k].mu); });
-  AlbedoEstimate r;
-  std::array<double, 3> coarse{0, 0, 0};
-  for (size_t k = 0; k < nodes.size(); ++k)
-    for (int c = 0; c < 3; ++c) {
-      r.e[c] += 2 * nodes[k].wFine * nodes[k].mu * at[k].e[c];
-      coarse[c] += 2 * nodes[k].wCoarse * nodes[k].mu * at[k].e[c];
-      r.err[c] += 2 * nodes[k].wFine * nodes[k].mu * at[k].err[c];
-      if (c == 0) r.unsupported += 2 * nodes[k].wFine * nodes[k].mu * at[k].unsupported;
-    }
-  for (const AlbedoEstimate& a : at) r.nodes = std::max(r.nodes, a.nodes);
-  for (int c = 0; c < 3; ++c) r.err[c] += std::fabs(r.e[c] - coarse[c]);
-  return r;
-}
-
 std::string merlChannels(TableKind kind) {
   return kind == TableKind::Albedo
              ? "R,G,B=E (the measured material's directional albedo per colour channel)"

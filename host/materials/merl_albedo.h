@@ -33,9 +33,9 @@ struct HSpaceRule {
 };
 
 struct AlbedoEstimate {
-  std::array<double, 3> e{}, err{};  // per channel: value and its estimate (+ inner bounds for E_avg)
+  std::array<double, 3> e{}, err{};  // per channel: value and its estimate
   double unsupported = 0;            // share of int (n.i) dw_i / pi where f had no value
-  int nodes = 0;                     // theta_h nodes per bin of the rule returned (largest, for E_avg)
+  int nodes = 0;                     // nodes per theta_h bin of the rule returned
 };
 
 // The rules hSpaceAlbedo climbs, (n, n - 1) for n in kMerlLadder, and where it stops: at the first
@@ -53,14 +53,11 @@ inline constexpr double kMerlArithmetic = 1e-11;  // the double sums' rounding, 
 std::array<double, 3> hSpaceIntegral(const RusinkiewiczFn& f, double mu, HSpaceRule rule, double* unsupported = nullptr);
 // E(mu) by the ladder's rule R_k, err = max(|R_k - R_k-1|, |R_k - R_k-2|) per channel.
 AlbedoEstimate hSpaceAlbedo(const RusinkiewiczFn& f, double mu);
-// E_avg = 2 int_0^1 E(mu) mu dmu: Gauss-Legendre on the mu panels [0, .05, .2, .5, 1], 8 nodes each
-// (err: |8 - 5 nodes| + the nodes' own err); `threads` workers (0 = hardware). The tables' E_avg
-// until session 26; now a second method for the tests (E(mu) kinks wherever a cut meets a bin edge,
-// so its estimate is honest but up to 57 times its error).
-AlbedoEstimate hSpaceAlbedoAvg(const RusinkiewiczFn& f, int threads = 0, const std::string& progress = "");
-// E_avg over the table's own coordinates (theta_h, theta_d, phi_d), where its kinks are coordinate
-// planes (merl_albedo_avg.cpp): rules of n nodes per bin and piece, n climbing kMerlAvgLadder as
-// hSpaceAlbedo's texels climb theirs; what the albedo-avg table holds.
+// E_avg = 2 int E(mu) mu dmu over the table's own coordinates (theta_h, theta_d, phi_d), where its
+// kinks are coordinate planes (merl_albedo_avg.cpp): rules of n nodes per bin and piece, n climbing
+// kMerlAvgLadder as hSpaceAlbedo's texels climb theirs; `threads` workers (0 = hardware). Until
+// session 26 E_avg was the mu average of hSpaceAlbedo, whose estimate could not be tight (E(mu)
+// kinks wherever a cut meets a bin edge; docs/merl.md).
 inline constexpr std::array<int, 7> kMerlAvgLadder{2, 3, 4, 5, 6, 7, 8};
 // E_avg is one value per channel, so its claim is tight only if its estimate sits well below the
 // storage rounding it is added to (else a value that happens to round almost exactly makes the
