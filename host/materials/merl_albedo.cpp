@@ -208,24 +208,9 @@ std::array<double, 3> hSpaceIntegral(const RusinkiewiczFn& f, double mu, HSpaceR
 // 1.0 to 8.6 times the error, the 1.0 where the reference itself wobbles by 1e-10; docs/merl.md,
 // "Tight claims"), and climbs while any channel's estimate is above merlTexelTarget.
 AlbedoEstimate hSpaceAlbedo(const RusinkiewiczFn& f, double mu) {
-  AlbedoEstimate r;
-  std::array<double, 3> prev2 = hSpaceIntegral(f, mu, HSpaceRule{kMerlLadder[0], kMerlLadder[0] - 1});
-  std::array<double, 3> prev = hSpaceIntegral(f, mu, HSpaceRule{kMerlLadder[1], kMerlLadder[1] - 1});
-  for (size_t k = 2; k < kMerlLadder.size(); ++k) {
-    const int n = kMerlLadder[k];
-    r.e = hSpaceIntegral(f, mu, HSpaceRule{n, n - 1}, &r.unsupported);
-    r.nodes = n;
-    bool met = true;
-    const double target = merlTexelTarget(r.e);
-    for (int c = 0; c < 3; ++c) {
-      r.err[c] = std::max(std::fabs(r.e[c] - prev[c]), std::fabs(r.e[c] - prev2[c]));
-      met = met && r.err[c] <= target;
-    }
-    if (met) break;
-    prev2 = prev;
-    prev = r.e;
-  }
-  return r;
+  return merl_detail::climbLadder(kMerlLadder, merlTexelTarget, [&](int n, double* unsupported) {
+    return hSpaceIntegral(f, mu, HSpaceRule{n, n - 1}, unsupported);
+  });
 }
 
 std::string merlChannels(TableKind kind) {

@@ -34,7 +34,7 @@ struct HSpaceRule {
 
 struct AlbedoEstimate {
   std::array<double, 3> e{}, err{};  // per channel: value and its estimate
-  double unsupported = 0;            // share of int (n.i) dw_i / pi where f had no value
+  double unsupported = 0;            // share of the integral's weight (of E = 1 for f = 1/pi) where f had no value
   int nodes = 0;                     // nodes per theta_h bin of the rule returned
 };
 

@@ -1,14 +1,18 @@
 // Shared by the MERL albedo rules (merl_albedo.cpp, merl_albedo_avg.cpp): Gauss-Legendre nodes on
-// [0, 1] and a small worker pool with progress lines.
+// [0, 1], a small worker pool with progress lines, and the ladder both climb.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "materials/merl_albedo.h"
 
 namespace brdfbake::merl_detail {
 
@@ -45,6 +49,29 @@ void parallelFor(int n, int threads, const std::string& what, const Job& job) {
   for (int i = 1; i < threads; ++i) pool.emplace_back(work);
   work();
   for (auto& t : pool) t.join();
+}
+
+// Climbs `ladder`: rule(n, &unsupported) is the n-node rule's value per channel; R_n's estimate is
+// max(|R_n - R_prev|, |R_n - R_prev2|), and the climb stops at the first rule from the third on
+// whose estimate is within target(value) in every channel (else at the last).
+template <size_t N, class Rule, class Target>
+AlbedoEstimate climbLadder(const std::array<int, N>& ladder, const Target& target, const Rule& rule) {
+  AlbedoEstimate r;
+  std::array<double, 3> prev2 = rule(ladder[0], nullptr), prev = rule(ladder[1], nullptr);
+  for (size_t k = 2; k < N; ++k) {
+    r.e = rule(ladder[k], &r.unsupported);
+    r.nodes = ladder[k];
+    bool met = true;
+    const double t = target(r.e);
+    for (int c = 0; c < 3; ++c) {
+      r.err[c] = std::max(std::fabs(r.e[c] - prev[c]), std::fabs(r.e[c] - prev2[c]));
+      met = met && r.err[c] <= t;
+    }
+    if (met) break;
+    prev2 = prev;
+    prev = r.e;
+  }
+  return r;
 }
 
 }  // namespace brdfbake::merl_detail
