@@ -80,7 +80,7 @@ double wrap(double t) {
 namespace merl_detail {
 const Gauss& gaussCached(int n) {
   static std::mutex m;
-  static std::vector<Gauss> cache(kMerlLadder.back() + 1);
+  static std::vector<Gauss> cache(32);  // the ladders' rules and the checks' above them, n <= 31
   std::lock_guard<std::mutex> lock(m);
   if (cache[n].x.empty()) cache[n] = gaussLegendre(n);
   return cache[n];

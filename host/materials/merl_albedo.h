@@ -66,6 +66,8 @@ inline double merlAvgTarget(const std::array<double, 3>& e) {
   return std::max(1e-10, std::ldexp(std::max({std::fabs(e[0]), std::fabs(e[1]), std::fabs(e[2])}), -28));
 }
 AlbedoEstimate directAlbedoAvg(const RusinkiewiczFn& f, int threads = 0, const std::string& progress = "");
+// One rule of directAlbedoAvg's, n nodes per bin and piece (n <= 31), for checks above its ladder.
+std::array<double, 3> directAlbedoAvgRule(const RusinkiewiczFn& f, int n, int threads = 0);
 
 // The table of a measured material, RGB, no roughness axis, with its metadata:
 //   albedo, splitsum: E(mu) per channel over `width` mu texels (height 1; mu at texel centres or,

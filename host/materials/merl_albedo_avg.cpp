@@ -100,6 +100,10 @@ std::array<double, 3> directRule(const RusinkiewiczFn& f, int n, int threads, co
 
 }  // namespace
 
+std::array<double, 3> directAlbedoAvgRule(const RusinkiewiczFn& f, int n, int threads) {
+  return directRule(f, n, threads, "", nullptr);
+}
+
 // The rules converge fast here (on four test materials the n = 4 rule is within 1.6e-9 of n = 8;
 // docs/merl.md, "E_avg over the table's coordinates"), but not geometrically everywhere (the horizon still crosses edges), so
 // the estimate is the ladder's, as for the texels: max(|Q_n - Q_n-1|, |Q_n - Q_n-2|) from n = 4,

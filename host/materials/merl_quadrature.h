@@ -19,7 +19,7 @@ namespace brdfbake::merl_detail {
 struct Gauss {
   std::vector<double> x, w;
 };
-// n nodes (n <= kMerlLadder.back()), computed once.
+// n nodes (n <= 31), computed once.
 const Gauss& gaussCached(int n);
 
 // Runs job(k) for k in [0, n) on `threads` workers; progress lines on stderr after two seconds.
