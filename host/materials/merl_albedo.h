@@ -44,9 +44,10 @@ struct AlbedoEstimate {
 // at the bottom of E's binade, so the claim (estimate + rounding) stays within a few times the
 // stored values' error for dark materials too; 1e-9 below that.
 inline constexpr std::array<int, 10> kMerlLadder{4, 5, 6, 7, 8, 10, 12, 15, 20, 25};
-inline double merlTexelTarget(const std::array<double, 3>& e) {
-  return std::max(1e-9, std::ldexp(std::max({std::fabs(e[0]), std::fabs(e[1]), std::fabs(e[2])}), -25));
+inline double merlLargest(const std::array<double, 3>& e) {
+  return std::max({std::fabs(e[0]), std::fabs(e[1]), std::fabs(e[2])});
 }
+inline double merlTexelTarget(const std::array<double, 3>& e) { return std::max(1e-9, std::ldexp(merlLargest(e), -25)); }
 inline constexpr double kMerlArithmetic = 1e-11;  // the double sums' rounding, added to brdf.error
 
 // One rule's E(mu) per channel; *unsupported (optional) as in AlbedoEstimate.
@@ -62,9 +63,7 @@ inline constexpr std::array<int, 7> kMerlAvgLadder{2, 3, 4, 5, 6, 7, 8};
 // E_avg is one value per channel, so its claim is tight only if its estimate sits well below the
 // storage rounding it is added to (else a value that happens to round almost exactly makes the
 // claim many times its error): an eighth of merlTexelTarget, 1e-10 below that.
-inline double merlAvgTarget(const std::array<double, 3>& e) {
-  return std::max(1e-10, std::ldexp(std::max({std::fabs(e[0]), std::fabs(e[1]), std::fabs(e[2])}), -28));
-}
+inline double merlAvgTarget(const std::array<double, 3>& e) { return std::max(1e-10, std::ldexp(merlLargest(e), -28)); }
 AlbedoEstimate directAlbedoAvg(const RusinkiewiczFn& f, int threads = 0, const std::string& progress = "");
 // One rule of directAlbedoAvg's, n nodes per bin and piece (n <= 31), for checks above its ladder.
 std::array<double, 3> directAlbedoAvgRule(const RusinkiewiczFn& f, int n, int threads = 0);

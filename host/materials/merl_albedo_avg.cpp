@@ -64,12 +64,12 @@ std::array<double, 3> directRule(const RusinkiewiczFn& f, int n, int threads, co
         const double c = ch * cd / std::max(sh * sd, 1e-300);
         double lo = 0, hi = kPi;
         if (c < 1) lo = std::acos(c), hi = kPi - lo;
-        bp.assign({lo, hi});
+        bp.assign(1, lo);  // in order: the bin edges inside (lo, hi) lie between its ends
         for (int j = 1; j < kMerlPhiD; ++j) {
           const double p = j * kPi / kMerlPhiD;
           if (p > lo && p < hi) bp.push_back(p);
         }
-        std::sort(bp.begin(), bp.end());
+        bp.push_back(hi);
         const double wd = dl * g.w[r] * 16 * wh * sh * sd * cd;
         for (size_t b = 0; b + 1 < bp.size(); ++b) {
           const double p0 = bp[b], pl = bp[b + 1] - bp[b];
