@@ -267,9 +267,9 @@ TEST(SharedProgram, SameBitsAsEachPairsOwnProgram) {
           << what << ", plane " << c;
     EXPECT_EQ(0, std::memcmp(a.err.data(), b.err.data(), a.err.size() * sizeof(float))) << what << ", bounds";
   };
-  std::vector<KernelRunner::TableNeed> needs;
+  std::vector<KernelNeed> needs;
   for (const auto& [n, g] : pairs)
-    for (TableKind k : {TableKind::SplitSum, TableKind::AlbedoAvg, TableKind::Kp}) needs.push_back({k, ndfId(n), gafId(g)});
+    for (KernelNeed::Kernel k : {KernelNeed::Hemisphere, KernelNeed::Kp}) needs.push_back({k, ndfId(n), gafId(g)});
   own.prepareAll(needs);
   shared.prepareAll(needs);
   for (const auto& [n, g] : pairs) {

@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "bake/bake.h"
+#include "tables/microfacet.h"
 #include "bake/interp_estimate.h"
 #include "cli_run.h"
 #include "common/brdf_host.h"

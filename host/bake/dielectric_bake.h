@@ -7,7 +7,7 @@
 #include "bake/dielectric_avg.h"
 #include "bake/output_set.h"
 #include "exr/table_file.h"
-#include "plan/plan.h"
+#include "tables/job.h"
 
 namespace brdfbake {
 

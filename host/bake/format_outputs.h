@@ -9,7 +9,7 @@
 #include "bake/bake.h"
 #include "bake/output_set.h"
 #include "formats/storage.h"
-#include "plan/plan.h"
+#include "tables/job.h"
 
 namespace brdfbake {
 

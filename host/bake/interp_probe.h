@@ -10,7 +10,7 @@
 
 #include "cl/runner.h"
 #include "formats/table_image.h"
-#include "plan/plan.h"
+#include "tables/job.h"
 
 namespace brdfbake {
 

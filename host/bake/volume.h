@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "bake/output_set.h"
-#include "plan/plan.h"
+#include "tables/job.h"
 
 namespace brdfbake {
 

@@ -131,8 +131,9 @@ int bakeChild(const std::string& device, bool all, int buildThreads) {
   KernelRunner runner(dev.device);
   if (buildThreads > 0) runner.setBuildThreads(buildThreads);
   std::vector<BenchTable> set = bakeSet(all);
-  std::vector<KernelRunner::TableNeed> needs;
-  for (const BenchTable& t : set) needs.push_back({t.kind, t.ndf, t.gaf});
+  std::vector<KernelNeed> needs;
+  for (const BenchTable& t : set)
+    needs.push_back({t.kind == TableKind::Kp ? KernelNeed::Kp : KernelNeed::Hemisphere, t.ndf, t.gaf});
   double tInit = seconds(t0);
   runner.prepareAll(needs);
   double tPrep = seconds(t0) - tInit;
@@ -186,7 +187,7 @@ double timeChild(const std::string& cacheDir, const std::string& device, bool al
 
 // albedo-avg against albedo (ggx + smith-correlated, size 32), best of `repeat`, interleaved.
 void avgVsAlbedo(KernelRunner& runner, int repeat, double* tAvg, double* tAlb) {
-  runner.prepareAll({{TableKind::Albedo, 0, 10}, {TableKind::AlbedoAvg, 0, 10}});
+  runner.prepareAll(std::vector<KernelNeed>{{KernelNeed::Hemisphere, 0, 10}});
   *tAvg = *tAlb = 1e30;
   for (int r = 0; r < repeat; ++r) {
     *tAvg = std::min(*tAvg, best(1, [&] { runner.albedoAvg(0, 10, 32, false); }));

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/bake.h"
+#include "tables/microfacet.h"
 #include "bench/bench_util.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"

@@ -126,7 +126,7 @@ int materialsBench(KernelRunner& runner, int samples, int repeat, int stride) {
       diffuse("oren-nayar E_d, sigma in [0, pi/2]", DIFFUSE_OREN_NAYAR, 0.0, halfPi),
   };
   // builds the program and compiles both kernels: not part of the timing
-  runner.prepare(TableKind::Albedo, kNdf, kGaf);
+  runner.prepare(KernelNeed{KernelNeed::Hemisphere, kNdf, kGaf});
   runner.hemisphere(kNdf, kGaf, 1, 1, false, HemiWeight{HEMI_FRESNEL, FRESNEL_DIELECTRIC, 1.5f, 0});
   runner.diffuseAlbedo(DIFFUSE_BURLEY, 1, 1, 0.0f, 1.0f, false);
 

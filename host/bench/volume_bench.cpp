@@ -14,11 +14,12 @@
 #include <filesystem>
 
 #include "bake/volume.h"
+#include "tables/brdf3d.h"
 #include "bench/bench_util.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
-#include "plan/plan.h"
+#include "tables/job.h"
 
 namespace brdfbake {
 
@@ -80,7 +81,7 @@ int volumeBench(KernelRunner& runner, int repeat, int bigSize) {
   big.spec.grid = Brdf3dGrid::TexelCenter;
   big.spec.nx = big.spec.ny = big.spec.nz = bigSize;
   std::tie(big.cols, big.rows) = atlasGrid(bigSize);
-  big.path = (dir / fileName(big)).string();
+  big.path = (dir / volumeFileName(big)).string();
   double before = peakRssMB();
   double kernelSeconds = 0;
   uint64_t slab = 0;

@@ -248,30 +248,24 @@ void KernelRunner::buildHere(int ndf, int gaf) {
   programs_[{ndf, gaf}].push_back(std::move(fresh));
 }
 
-void KernelRunner::prepare(TableKind kind, int ndf, int gaf) {
-  switch (kind) {
-    case TableKind::SplitSum:
-    case TableKind::Albedo:
+void KernelRunner::prepare(const KernelNeed& need) {
+  const int ndf = need.ndf, gaf = need.gaf;
+  switch (need.kernel) {
+    case KernelNeed::Hemisphere:
       compiled(ndf, gaf, kHemisphere);
       break;
-    case TableKind::AlbedoAvg:
-      compiled(ndf, gaf, kHemisphere);
-      break;
-    case TableKind::Kp:
+    case KernelNeed::Kp:
       if (Compiled* c = kpProgram(ndf)) compileKernel(*c, kKp);
       else compiled(ndf, GAF_NONE, kKp);
       break;
-    case TableKind::Brdf3d:
+    case KernelNeed::Brdf3d:
       compiled(ndf, gaf + kVolumeProgram, kBrdf3d);
       break;
-    case TableKind::Dielectric:
+    case KernelNeed::Dielectric:
       compiled(ndf, gaf + kDielectricProgram, kDielectric);
       break;
-    case TableKind::DielectricAvg:
+    case KernelNeed::DielectricNodes:
       compiled(ndf, gaf + kDielectricProgram, kDielectricNodes);
-      break;
-    case TableKind::FresnelAvg:  // computed on the host
-    case TableKind::AshikhminShirley:
       break;
   }
 }
@@ -279,7 +273,7 @@ void KernelRunner::prepare(TableKind kind, int ndf, int gaf) {
 // The programs and kernels the tables need, in the tables' order; k_p goes to a program of its
 // NDF that is built anyway, else to the NDF + none one. When the tables name kSharedFrom pairs or
 // more (counting those built already), one shared program serves all of their integrators.
-std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<TableNeed>& tables) const {
+std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<KernelNeed>& tables) const {
   std::vector<Work> work;
   auto add = [&](int ndf, int gaf, const char* kernel) {
     auto it = std::find_if(work.begin(), work.end(), [&](const Work& w) { return w.ndf == ndf && w.gaf == gaf; });
@@ -289,15 +283,13 @@ std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<TableNeed>&
     }
     if (std::find(it->kernels.begin(), it->kernels.end(), kernel) == it->kernels.end()) it->kernels.push_back(kernel);
   };
-  auto integrator = [](TableKind k) {
-    return k == TableKind::SplitSum || k == TableKind::Albedo || k == TableKind::AlbedoAvg || k == TableKind::Kp;
-  };
+  auto integrator = [](KernelNeed::Kernel k) { return k == KernelNeed::Hemisphere || k == KernelNeed::Kp; };
   // the pairs (k_p: its NDF) without a program of their own yet
   std::vector<std::pair<int, int>> fresh;
-  for (const TableNeed& t : tables) {
-    if (!integrator(t.kind)) continue;
-    std::pair<int, int> key = t.kind == TableKind::Kp ? std::make_pair(t.ndf, -1) : std::make_pair(t.ndf, t.gaf);
-    bool built = t.kind == TableKind::Kp ? std::any_of(programs_.begin(), programs_.end(),
+  for (const KernelNeed& t : tables) {
+    if (!integrator(t.kernel)) continue;
+    std::pair<int, int> key = t.kernel == KernelNeed::Kp ? std::make_pair(t.ndf, -1) : std::make_pair(t.ndf, t.gaf);
+    bool built = t.kernel == KernelNeed::Kp ? std::any_of(programs_.begin(), programs_.end(),
                                                        [&](const auto& p) { return p.first.first == t.ndf && p.first.second < kVolumeProgram; })
                                          : programs_.count(key) > 0;
     if (!built && std::find(fresh.begin(), fresh.end(), key) == fresh.end()) fresh.push_back(key);
@@ -311,17 +303,17 @@ std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<TableNeed>&
                              }),
               fresh.end());
   bool shared = !fresh.empty() && shareFor(static_cast<int>(fresh.size()));
-  for (const TableNeed& t : tables) {
-    if (t.kind == TableKind::SplitSum || t.kind == TableKind::Albedo || t.kind == TableKind::AlbedoAvg) {
+  for (const KernelNeed& t : tables) {
+    if (t.kernel == KernelNeed::Hemisphere) {
       if (shared && !programs_.count({t.ndf, t.gaf})) add(kSharedProgram, kSharedProgram, kHemisphere);
       else add(t.ndf, t.gaf, kHemisphere);
     }
-    if (t.kind == TableKind::Brdf3d) add(t.ndf, t.gaf + kVolumeProgram, kBrdf3d);
-    if (t.kind == TableKind::Dielectric || t.kind == TableKind::DielectricAvg)
-      add(t.ndf, t.gaf + kDielectricProgram, t.kind == TableKind::Dielectric ? kDielectric : kDielectricNodes);
+    if (t.kernel == KernelNeed::Brdf3d) add(t.ndf, t.gaf + kVolumeProgram, kBrdf3d);
+    if (t.kernel == KernelNeed::Dielectric) add(t.ndf, t.gaf + kDielectricProgram, kDielectric);
+    if (t.kernel == KernelNeed::DielectricNodes) add(t.ndf, t.gaf + kDielectricProgram, kDielectricNodes);
   }
-  for (const TableNeed& t : tables) {
-    if (t.kind != TableKind::Kp) continue;
+  for (const KernelNeed& t : tables) {
+    if (t.kernel != KernelNeed::Kp) continue;
     // the lowest GAF of this NDF among programs already built or about to be
     int gaf = -1;
     for (const auto& p : programs_)
@@ -336,7 +328,7 @@ std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<TableNeed>&
   return work;
 }
 
-void KernelRunner::prepareAll(const std::vector<TableNeed>& tables) {
+void KernelRunner::prepareAll(const std::vector<KernelNeed>& tables) {
   planned_ = true;
   std::vector<Work> work = plan(tables);
   // drop what is compiled already
@@ -396,9 +388,9 @@ void KernelRunner::prepareAll(const std::vector<TableNeed>& tables) {
 }
 
 void KernelRunner::prepareAll(const std::vector<std::pair<int, int>>& pairs) {
-  std::vector<TableNeed> tables;
+  std::vector<KernelNeed> tables;
   for (auto [ndf, gaf] : pairs)
-    for (TableKind k : {TableKind::SplitSum, TableKind::AlbedoAvg, TableKind::Kp}) tables.push_back({k, ndf, gaf});
+    for (KernelNeed::Kernel k : {KernelNeed::Hemisphere, KernelNeed::Kp}) tables.push_back({k, ndf, gaf});
   prepareAll(tables);
 }
 

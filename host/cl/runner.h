@@ -26,6 +26,12 @@ namespace brdfbake {
 
 struct Brdf3dSpec;  // common/brdf3d_grid.h
 
+// A kernel a table needs compiled, for an NDF/GAF pair (kp: the NDF alone, gaf ignored).
+struct KernelNeed {
+  enum Kernel { Hemisphere, Kp, Brdf3d, Dielectric, DielectricNodes } kernel;
+  int ndf, gaf;
+};
+
 // The full device source for one NDF/GAF pair: a #define prelude, then the embedded files.
 std::string kernelSource(int ndf, int gaf);
 
@@ -48,20 +54,14 @@ class KernelRunner {
   explicit KernelRunner(const cl::Device& device);
   ~KernelRunner();
 
-  // What one table needs compiled (kp: gaf is ignored).
-  struct TableNeed {
-    TableKind kind;
-    int ndf, gaf;
-  };
-
   // Builds the pair's program now (its kernels compile at their first use), unless prepareAll()
   // has run: then it does nothing (what the plan did not name is built at its first use).
   void prepare(int ndf, int gaf);
-  // Compiles what one table needs (for kp: a program of that NDF, the pair's if none is built).
-  void prepare(TableKind kind, int ndf, int gaf);
-  // Builds and compiles what all the given tables need, concurrently (see above). Call it once,
-  // before the first table; later prepare() calls for the same tables are no-ops.
-  void prepareAll(const std::vector<TableNeed>& tables);
+  // Compiles one kernel (for kp: in a program of that NDF, the pair's if none is built).
+  void prepare(const KernelNeed& need);
+  // Builds and compiles all the given kernels, concurrently (see above). Call it once, before the
+  // first table; later prepare() calls for the same kernels are no-ops.
+  void prepareAll(const std::vector<KernelNeed>& needs);
   // Every table of each pair (and k_p of each pair's NDF).
   void prepareAll(const std::vector<std::pair<int, int>>& pairs);
 
@@ -144,7 +144,7 @@ class KernelRunner {
   void build(Slot& slot, int slotIndex, const Work& w, Compiled* done);
   void buildHere(int ndf, int gaf);
   void compileKernel(Compiled& c, const std::string& kernel);
-  std::vector<Work> plan(const std::vector<TableNeed>& tables) const;
+  std::vector<Work> plan(const std::vector<KernelNeed>& needs) const;
   int pairPrograms() const;
   bool shareFor(int newPairs) const;
   void run(Compiled& c, cl::Kernel& k, size_t gx, size_t gy);

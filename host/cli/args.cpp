@@ -14,19 +14,6 @@
 
 namespace brdfbake {
 
-int defaultSize(TableKind kind) {
-  if (kind == TableKind::AshikhminShirley) return 128;
-  return kind == TableKind::SplitSum || kind == TableKind::FresnelAvg ? 128 : 32;
-}
-
-BakeRequest defaultRequest() {
-  BakeRequest r;
-  r.ndfs = {ndfId("ggx")};
-  r.gafs = {gafId("smith-correlated")};
-  r.tables = {TableKind::SplitSum, TableKind::Albedo, TableKind::AlbedoAvg, TableKind::Kp};
-  return r;
-}
-
 namespace {
 
 std::vector<std::string> splitCommas(const std::string& s) {

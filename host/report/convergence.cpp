@@ -138,7 +138,7 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
 
   DeviceEntry dev = selectDevice(req.device);
   KernelRunner kr(dev.device);
-  kr.prepare(TableKind::Albedo, ndf, gaf);
+  kr.prepare(KernelNeed{KernelNeed::Hemisphere, ndf, gaf});
   kr.hemisphere(ndf, gaf, n, n, false, hw);  // warm: the kernel's compile is not timed
   for (int L : req.levels) {
     std::fprintf(stderr, "convergence: quadrature level %d\n", L);

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/args.h"
+#include "brdfbake/request.h"
 
 namespace brdfbake {
 

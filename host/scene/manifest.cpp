@@ -10,7 +10,7 @@
 #include <set>
 #include <sstream>
 
-#include "cli/args.h"
+#include "brdfbake/request.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"

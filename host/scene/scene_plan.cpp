@@ -10,6 +10,7 @@
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"
+#include "tables/family.h"
 #include "version.h"
 
 namespace brdfbake {
@@ -41,60 +42,6 @@ uint64_t bakerHash() {
   return h;
 }
 
-std::string vec(const std::vector<double>& v) {
-  std::string s;
-  for (double x : v) s += (s.empty() ? "" : ",") + fmtG9(x);
-  return s;
-}
-
-// Everything a table's values and header depend on, as text.
-std::string jobKey(const TableJob& j) {
-  return "table=" + tableName(j.kind) + ";ndf=" + std::to_string(j.ndf) + ";gaf=" + std::to_string(j.gaf) +
-         ";size=" + std::to_string(j.width) + "x" + std::to_string(j.height) + ";grid=" + (j.nodeGrid ? "node" : "texel") +
-         ";half=" + (j.half ? "1" : "0") + ";fresnel=" + j.fresnel.describe() + ";diffuse=" + std::to_string(j.diffuse) +
-         ";texture=" + std::to_string(j.texture);
-}
-std::string dielectricKey(const DielectricJob& d) {
-  return std::string("table=") + (d.avg ? "dielectric-avg" : "dielectric") + ";ndf=" + std::to_string(d.ndf) +
-         ";gaf=" + std::to_string(d.gaf) + ";size=" + std::to_string(d.nx) + "x" + std::to_string(d.ny) + "x" +
-         std::to_string(d.nz) + ";eta=" + fmtG9(d.etaLo) + "," + fmtG9(d.etaHi) + ";grid=" + (d.nodeGrid ? "node" : "texel") +
-         ";half=" + (d.half ? "1" : "0");
-}
-std::string volumeKey(const VolumeJob& v) {
-  const Brdf3dSpec& s = v.spec;
-  return "table=brdf3d;ndf=" + std::to_string(s.ndf) + ";gaf=" + std::to_string(s.gaf) + ";r=" + fmtG9(s.roughness) +
-         ";fresnel=" + s.fresnel.describe() + ";diffuse=" + std::to_string(s.diffuse) + ";dparam=" + fmtG9(s.diffuseParam) +
-         ";rho=" + vec(s.rho) + ";param=" + std::to_string(s.kernelParam()) + ";grid=" + std::to_string(s.kernelGrid()) +
-         ";cos=" + (s.timesCos ? "1" : "0") + ";size=" + std::to_string(s.nx) + "x" + std::to_string(s.ny) + "x" +
-         std::to_string(s.nz) + ";atlas=" + std::to_string(v.cols) + "x" + std::to_string(v.rows) + ";half=" +
-         (v.half ? "1" : "0") + ";merl=" + (v.merl ? "1" : "0");
-}
-
-// Estimated seconds (PoCL, 2 cores; measured on ggx and beckmann tables of 64^2: a guide for the
-// plan's cost column and for balancing shards, not a promise).
-double estimate(const TableJob& j) {
-  double perTexel = j.ndf == NDF_GGX ? 4e-6 : 1.5e-5;
-  double texels = static_cast<double>(j.width) * j.height;
-  switch (j.kind) {
-    case TableKind::AlbedoAvg: return texels * 31 * perTexel * 0.5;
-    case TableKind::Kp: return texels * 1e-6;
-    case TableKind::SplitSum:
-    case TableKind::Albedo: return texels * perTexel * (j.fresnel.channels() == 3 ? 3 : 1);
-    default: return texels * 1e-6;
-  }
-}
-
-std::string modelsOf(const TableJob& j) {
-  std::string m = j.ndf >= 0 ? ndfNames()[j.ndf] + (j.kind == TableKind::Kp ? "" : " + " + gafNames()[j.gaf]) : "";
-  if (j.diffuse >= 0) m += (m.empty() ? "" : ", ") + diffuseNames()[j.diffuse];
-  if (j.kind == TableKind::SplitSum)
-    m += j.fresnel.model == FRESNEL_F82_TINT ? ", F82-tint split (F0 A + B - b C: no F0 or tint in the table)"
-                                             : ", Schlick split (F0 A + B: no F0 in the table)";
-  else if (!j.fresnel.isOne() && j.kind != TableKind::Kp)
-    m += ", " + j.fresnel.describe();
-  return m;
-}
-
 // Adds the tables of `req` (one material's lighting path) to `sp`, sharing files with the same key.
 void addTables(ScenePlan& sp, const BakeRequest& req, const SceneMaterial& m, const std::string& why) {
   Plan p;
@@ -105,62 +52,38 @@ void addTables(ScenePlan& sp, const BakeRequest& req, const SceneMaterial& m, co
                                   e.what());
   }
   std::string reason = m.name + ": " + why;
-  auto place = [&](const std::string& key, std::string path, bool volume, auto addJob) {
+  for (Job j : p.jobs) {
+    const std::string key = j.family->key(j);
+    const std::string hash = hex16(fnv1a(key, bakerHash()));
     // the same key: the same file; the same name for a different table: a suffix from the key
-    for (auto& t : sp.tables) {
-      if (t.hash == hex16(fnv1a(key, bakerHash()))) {
-        if (std::find(t.reasons.begin(), t.reasons.end(), reason) == t.reasons.end()) t.reasons.push_back(reason);
-        return;
-      }
+    auto same = std::find_if(sp.tables.begin(), sp.tables.end(), [&](const PlannedTable& t) { return t.hash == hash; });
+    if (same != sp.tables.end()) {
+      if (std::find(same->reasons.begin(), same->reasons.end(), reason) == same->reasons.end())
+        same->reasons.push_back(reason);
+      continue;
     }
+    std::string path = j.path;
     for (const auto& t : sp.tables)
       if (t.path == path) {
         size_t dot = path.find_last_of('.');
         path = path.substr(0, dot) + "_" + hex16(fnv1a(key)).substr(0, 8) + path.substr(dot);
         break;
       }
+    j.path = path;
+    JobSummary sum = j.family->summary(j);
     PlannedTable t;
-    t.volume = volume;
     t.path = path;
-    t.hash = hex16(fnv1a(key, bakerHash()));
+    t.hash = hash;
     t.reasons.push_back(reason);
-    addJob(t, path);
+    t.index = sp.plan.jobs.size();
+    t.table = sum.table;
+    t.models = sum.models;
+    t.size = sum.size;
+    t.texels = sum.texels;
+    t.cost = sum.cost;
+    sp.plan.jobs.push_back(j);
     sp.tables.push_back(t);
-  };
-  for (TableJob j : p.jobs)
-    place(jobKey(j), j.path, false, [&](PlannedTable& t, const std::string& path) {
-      j.path = path;
-      t.index = sp.plan.jobs.size();
-      t.table = tableName(j.kind);
-      t.models = modelsOf(j);
-      t.size = std::to_string(j.width) + "x" + std::to_string(j.height);
-      t.texels = static_cast<double>(j.width) * j.height;
-      t.cost = estimate(j);
-      sp.plan.jobs.push_back(j);
-    });
-  for (DielectricJob d : p.dielectric)
-    place(dielectricKey(d), d.path, false, [&](PlannedTable& t, const std::string& path) {
-      d.path = path;
-      t.dielectric = true;
-      t.index = sp.plan.dielectric.size();
-      t.table = d.avg ? "dielectric-avg" : "dielectric";
-      t.models = ndfNames()[d.ndf] + " + " + gafNames()[d.gaf] + ", eta " + fmtG(d.etaLo) + ".." + fmtG(d.etaHi);
-      t.size = std::to_string(d.nx) + "x" + std::to_string(d.ny) + (d.avg ? "" : "x" + std::to_string(d.nz));
-      t.texels = static_cast<double>(d.nx) * d.ny * d.nz;
-      t.cost = t.texels * (d.avg ? 0.05 : 5e-3);  // measured: 4.8 ms per texel of E; the averages ~50 ms per entry
-      sp.plan.dielectric.push_back(d);
-    });
-  for (VolumeJob v : p.volumes)
-    place(volumeKey(v), v.path, true, [&](PlannedTable& t, const std::string& path) {
-      v.path = path;
-      t.index = sp.plan.volumes.size();
-      t.table = "brdf3d";
-      t.models = ndfNames()[v.spec.ndf] + " + " + gafNames()[v.spec.gaf] + ", r " + fmtG(v.spec.roughness);
-      t.size = std::to_string(v.spec.nx) + "x" + std::to_string(v.spec.ny) + "x" + std::to_string(v.spec.nz);
-      t.texels = static_cast<double>(v.spec.nx) * v.spec.ny * v.spec.nz;
-      t.cost = t.texels * 1.5e-7;
-      sp.plan.volumes.push_back(v);
-    });
+  }
 }
 
 }  // namespace
@@ -307,16 +230,8 @@ ScenePlan shardOf(const ScenePlan& whole, int part, int parts) {
   for (size_t k = 0; k < whole.tables.size(); ++k) {
     if (owner[k] != part - 1) continue;
     PlannedTable t = whole.tables[k];
-    if (t.volume) {
-      t.index = sp.plan.volumes.size();
-      sp.plan.volumes.push_back(whole.plan.volumes[whole.tables[k].index]);
-    } else if (t.dielectric) {
-      t.index = sp.plan.dielectric.size();
-      sp.plan.dielectric.push_back(whole.plan.dielectric[whole.tables[k].index]);
-    } else {
-      t.index = sp.plan.jobs.size();
-      sp.plan.jobs.push_back(whole.plan.jobs[whole.tables[k].index]);
-    }
+    t.index = sp.plan.jobs.size();
+    sp.plan.jobs.push_back(whole.plan.jobs[whole.tables[k].index]);
     sp.tables.push_back(t);
   }
   return sp;

@@ -12,9 +12,7 @@
 namespace brdfbake {
 
 struct PlannedTable {
-  bool volume = false;      // plan.volumes[index]
-  bool dielectric = false;  // plan.dielectric[index]; neither: plan.jobs[index]
-  size_t index = 0;
+  size_t index = 0;         // plan.jobs[index]
   std::string path;
   std::string table;     // table kind name
   std::string models;    // "ggx + smith-correlated, schlick"
@@ -28,7 +26,7 @@ struct PlannedTable {
 struct ScenePlan {
   std::string scene;                 // the scene's name (recorded in each file as brdf.scene)
   Plan plan;                         // the tables, in plan order
-  std::vector<PlannedTable> tables;  // one per output, jobs first, then volumes
+  std::vector<PlannedTable> tables;  // one per output, in plan order
   std::vector<std::string> leftOut;  // table kinds not planned, and why
   std::vector<std::string> notes;    // materials that add nothing, mappings from glTF
 };

@@ -140,14 +140,12 @@ int runSceneBake(const SceneOptions& o) {
       ++upToDate;
       continue;
     }
-    if (t.volume) todo.volumes.push_back(p.plan.volumes[t.index]);
-    else if (t.dielectric) todo.dielectric.push_back(p.plan.dielectric[t.index]);
-    else todo.jobs.push_back(p.plan.jobs[t.index]);
+    todo.jobs.push_back(p.plan.jobs[t.index]);
     todo.extraStrings[t.path] = {{"brdf.hash", t.hash}, {"brdf.scene", p.scene}};
   }
   std::string label = "scene " + p.scene + (o.shards > 1 ? " (shard " + std::to_string(o.shard) + "/" +
                                                                std::to_string(o.shards) + ")" : "");
-  if (todo.jobs.empty() && todo.volumes.empty() && todo.dielectric.empty()) {
+  if (todo.jobs.empty()) {
     std::cout << label << ": all " << upToDate << " table(s) up to date in " << p.plan.outDir << "/; nothing written\n";
   } else {
     std::vector<TableReport> reports = runPlan(todo);

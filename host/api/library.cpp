@@ -1,0 +1,107 @@
+// The library's entry points (brdfbake/brdfbake.h): a request -> the plan -> each job's family
+// computes it in memory; write() hands the tables back to their families for their files.
+#include "brdfbake/brdfbake.h"
+
+#include <cstdio>
+
+#include "bake/bake.h"
+#include "bake/output_set.h"
+#include "common/format.h"
+#include "formats/readers/table_reader.h"
+#include "plan/plan.h"
+#include "tables/registry.h"
+
+namespace brdfbake {
+
+namespace {
+
+struct Internal {
+  Job job;
+  BakedTable baked;
+};
+
+Table toTable(const Job& job, BakedTable baked) {
+  Table t;
+  t.path = job.path;
+  t.kind = tableName(job.kind);
+  const TableImage& img = baked.image;
+  t.width = img.width;
+  t.height = img.height;
+  t.depth = baked.depth;
+  t.channels = img.channels;
+  t.planes = baked.volume.empty() ? img.planes : baked.volume;
+  if (!baked.volume.empty()) {
+    // a 3D table's header is its atlas's; the table itself is nx x ny x nz
+    t.channels = {"R", "G", "B"};
+  }
+  t.texelBounds = baked.texelBounds;
+  for (const auto& [k, v] : img.strings) t.metadata[k] = v;
+  for (const auto& [k, v] : img.floats) t.metadata[k] = fmtG9(v);
+  for (const auto& [k, v] : img.v2f) t.metadata[k] = fmtG9(v.first) + "," + fmtG9(v.second);
+  if (img.floats.count("brdf.error")) t.errorBound = img.floats.at("brdf.error");
+  t.internal = std::make_shared<Internal>(Internal{job, std::move(baked)});
+  return t;
+}
+
+}  // namespace
+
+std::vector<Table> bake(const BakeRequest& req) {
+  Plan plan = makePlan(req);
+  BakeContext ctx(plan.device);
+  std::map<const TableFamily*, std::vector<const Job*>> byFamily;
+  for (const Job& j : plan.jobs) byFamily[j.family].push_back(&j);
+  for (const TableFamily* f : families())
+    if (byFamily.count(f)) f->preflight(ctx, "", byFamily[f]);
+  std::vector<KernelNeed> needs;
+  for (const Job& j : plan.jobs)
+    for (const KernelNeed& k : j.family->kernels(j)) needs.push_back(k);
+  if (!needs.empty()) ctx.runner().prepareAll(needs);
+  std::vector<Table> out;
+  for (const Job& j : plan.jobs) {
+    out.push_back(toTable(j, j.family->compute(ctx, j)));
+  }
+  return out;
+}
+
+void write(const std::vector<Table>& tables, const std::string& dir) {
+  FileSet set;
+  std::string outDir = dir;
+  for (const Table& t : tables) {
+    if (!t.internal)
+      throw Error(kExitUsage, "write: " + t.path + " was not made by bake() (read tables are already files)");
+    auto in = std::static_pointer_cast<const Internal>(t.internal);
+    Job job = in->job;
+    if (!dir.empty()) {
+      size_t slash = job.path.find_last_of('/');
+      job.path = dir + "/" + (slash == std::string::npos ? job.path : job.path.substr(slash + 1));
+    } else if (outDir.empty()) {
+      size_t slash = job.path.find_last_of('/');
+      outDir = slash == std::string::npos ? "." : job.path.substr(0, slash);
+    }
+    job.family->addBakedFiles(job, set.baked.emplace_back(in->baked), set);
+  }
+  if (outDir.empty()) outDir = ".";
+  checkOutputDir(outDir);
+  commitOutputs(outDir, set.files);
+}
+
+std::vector<std::string> bakeToDirectory(const BakeRequest& req) {
+  std::vector<std::string> paths;
+  for (const TableReport& r : runPlan(makePlan(req))) paths.push_back(r.path);
+  return paths;
+}
+
+Table readTable(const std::string& path) {
+  TableFile f = readTableFile(path);
+  BakedTable b;
+  b.image = f.table;
+  Job job;
+  job.path = path;
+  b.depth = f.depth;
+  Table t = toTable(job, std::move(b));
+  t.kind = f.table.strings.count("brdf.table") ? f.table.strings.at("brdf.table") : "";
+  t.internal.reset();
+  return t;
+}
+
+}  // namespace brdfbake

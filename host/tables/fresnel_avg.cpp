@@ -1,0 +1,83 @@
+// The fresnel-avg family: F_avg(eta) = 2 int F(mu) mu dmu of the dielectric Fresnel or Schlick's
+// with total internal reflection, over eta on both sides of an interface, in double on the host.
+#include <algorithm>
+#include <chrono>
+
+#include "common/brdf_host.h"
+#include "common/errors.h"
+#include "common/material.h"
+#include "tables/family.h"
+#include "tables/table2d.h"
+
+namespace brdfbake {
+
+namespace {
+
+// The eta axis: both sides of an interface, glass (1.5) and its inverse.
+constexpr double kEtaLo = 0.25, kEtaHi = 4.0;
+
+class FresnelAvg final : public TableFamily {
+ public:
+  std::string name() const override { return "fresnel-avg"; }
+  std::vector<TableKind> kinds() const override { return {TableKind::FresnelAvg}; }
+  int defaultSize(TableKind) const override { return 128; }
+
+  std::vector<Job> plan(const BakeRequest& req) const override {
+    if (!req.merl.empty() || !req.preset.empty()) return {};
+    if (std::find(req.tables.begin(), req.tables.end(), TableKind::FresnelAvg) == req.tables.end()) return {};
+    if (req.fresnel.model != FRESNEL_DIELECTRIC && req.fresnel.model != FRESNEL_SCHLICK_TIR)
+      throw Error(kExitUsage, "--table fresnel-avg runs over eta: it takes --fresnel dielectric or schlick-tir (for "
+                              "other models brdfbake energy prints F_avg, and every Fresnel table records it as "
+                              "brdf.fresnel.avg)");
+    int n = req.size ? *req.size : defaultSize(TableKind::FresnelAvg);
+    if (n < 2) throw Error(kExitUsage, "--size must be at least 2 for fresnel-avg, got " + std::to_string(n));
+    TableJob job{TableKind::FresnelAvg, -1, -1, n, 1, req.nodeGrid, req.half, "", req.fresnel, -1};
+    job.path = req.outDir + "/fresnel-avg_" + fresnelNames()[job.fresnel.model] + ".exr";
+    applyFormats(req, job);
+    return {makeJob(this, job.kind, job)};
+  }
+
+  // F_avg(eta) in double (1D, cheap): fresnelAverage, closed form or GK31; each entry's claim its
+  // estimate plus the rounding to float.
+  BakedTable compute(BakeContext&, const Job& j) const override {
+    const TableJob job = j.get<TableJob>();
+    const FresnelChoice& fc = job.fresnel;
+    auto t0 = std::chrono::steady_clock::now();
+    KernelTable kt;
+    kt.planes = {std::vector<float>(job.width)};
+    kt.err.assign(job.width, 0.0f);
+    for (int i = 0; i < job.width; ++i) {
+      double t = job.nodeGrid ? i / (job.width - 1.0) : (i + 0.5) / job.width;
+      double eta = kEtaLo + (kEtaHi - kEtaLo) * t, e = 0;
+      kt.planes[0][i] = static_cast<float>(fresnelAverage(fc.model, eta, 0, &e));
+      kt.err[i] = static_cast<float>(e);
+    }
+    Table2d t;
+    t.axes = "eta";
+    addClaims(t.claim, kt, Arith::HostDouble, job.ndf, job.gaf);
+    t.img.planes = {kt.planes[0]};
+    t.img.strings["brdf.channels"] = "R=G=B=F_avg (2 int F(mu) mu dmu)";
+    t.img.strings["brdf.fresnel"] = fresnelNames()[fc.model];
+    t.img.v2f["brdf.eta.range"] = {static_cast<float>(kEtaLo), static_cast<float>(kEtaHi)};
+    t.img.strings["brdf.method"] = fc.model == FRESNEL_SCHLICK_TIR
+                                       ? "closed form: (20 F0 + 1)/21, and (1 - eta^2) + eta^2 (20 F0 + 1)/21 for eta < 1"
+                                       : "adaptive Gauss-Kronrod 31 in double on [sqrt(1-eta^2) or 0, 1], F = 1 below "
+                                         "the critical angle; error: its estimate + storage rounding";
+    BakedTable out;
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out.image = finishTable2d(nullptr, job, std::move(t), &out.texelBounds);
+    return out;
+  }
+
+  std::string key(const Job& job) const override { return tableJobKey(job.get<TableJob>()); }
+  JobSummary summary(const Job& job) const override { return tableJobSummary(job.get<TableJob>()); }
+};
+
+}  // namespace
+
+const TableFamily& fresnelAvgFamily() {
+  static const FresnelAvg family;
+  return family;
+}
+
+}  // namespace brdfbake

@@ -1,0 +1,84 @@
+// A planned table: which family bakes it, where it lands, and the family's own description of it.
+// The plan (plan/plan.h) is a list of these; only the family that made a job reads its spec.
+#pragma once
+#include <any>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/brdf3d_grid.h"
+#include "common/material.h"
+#include "common/models.h"
+#include "formats/layout.h"
+#include "formats/storage.h"
+
+namespace brdfbake {
+
+class TableFamily;  // tables/family.h
+
+// A 2D (or 1D) table over (mu, r), r, or eta: the microfacet family, fresnel-avg, the
+// Ashikhmin-Shirley textures and a measured material's tables.
+struct TableJob {
+  TableKind kind;
+  int ndf;
+  int gaf;           // GAF_NONE for kp, which depends on the NDF only
+  int width, height; // x = mu (2D tables) or r (1D), y = r (2D) or 1
+  bool nodeGrid;
+  bool half;
+  std::string path;  // output file
+  FresnelChoice fresnel;  // albedo, albedo-avg: the model in B (one: F = 1); splitsum: schlick or f82-tint
+  int diffuse = -1;       // albedo: a diffuse model's albedo (ndf, gaf unused); splitsum: burley in B
+  int texture = -1;       // ashikhmin-shirley: Tex0, Tex1 or Tex2 (one file each)
+  // the files written (path's extension replaced per format) and the precision of their channels;
+  // half == (precision == float16), what the EXR file stores
+  std::vector<FileFormat> formats = {FileFormat::Exr};
+  Precision precision = Precision::Float32;
+  TableLayout layout = {};  // splitsum: axis order, flips, channels (formats/layout.h)
+  bool muSqrt = false;      // splitsum, albedo: x holds u = sqrt(mu), texel i at mu = u_i^2 (--mu-axis sqrt)
+  std::string merl = {};    // a measured material's MERL file (tables/measured.cpp), or ""
+};
+
+// A 3D table (--table brdf3d): one per NDF/GAF pair, baked and written slab by slab.
+struct VolumeJob {
+  Brdf3dSpec spec;
+  std::string path;
+  bool half = false;
+  bool merl = false;      // MERL's binary layout instead of an EXR atlas
+  int cols = 1, rows = 1; // the EXR atlas: slices left to right, then top to bottom
+  std::vector<FileFormat> formats = {FileFormat::Exr};  // ktx2, dds: 3D textures; header; exr: the atlas
+  Precision precision = Precision::Float32;
+};
+
+// A rough-dielectric table (--table dielectric: 3D over (mu, r, eta coordinate), an EXR atlas of
+// eta slices; dielectric-avg: 2D over (r, eta coordinate)). bake/dielectric_bake.h.
+struct DielectricJob {
+  int ndf = 0, gaf = 0;
+  bool avg = false;          // dielectric-avg
+  int nx = 32, ny = 32, nz = 32;  // mu, r, eta (avg: nx = r, ny = eta, nz = 1)
+  bool nodeGrid = false, half = false;
+  double etaLo = 0.4, etaHi = 2.5;
+  int cols = 1, rows = 1;    // the atlas (3D)
+  std::string path;
+};
+
+struct Job {
+  const TableFamily* family = nullptr;
+  TableKind kind = TableKind::SplitSum;
+  std::string path;  // the output file (its extension replaced per format); scenes may rename it
+  std::any spec;     // the family's own: TableJob, VolumeJob, DielectricJob or its own type
+
+  // The spec, with the job's path in it (the families' helpers read the path from their spec).
+  template <class T>
+  T get() const {
+    T s = std::any_cast<const T&>(spec);
+    s.path = path;
+    return s;
+  }
+};
+
+template <class T>
+Job makeJob(const TableFamily* family, TableKind kind, const T& spec) {
+  return Job{family, kind, spec.path, spec};
+}
+
+}  // namespace brdfbake
