@@ -51,6 +51,11 @@ const char* const kChannels[kAsTextures] = {
 
 }  // namespace
 
+double ashikhminExact(int t, int c, double u, double y) {
+  double v = t == 2 ? kAsTex2Scale * (y - kAsTex2Offset) : y;
+  return static_cast<double>(exactValue(t, c, u, v));
+}
+
 bool ashikhminNodeGrid(int texture) { return texture != 1; }
 double ashikhminCoord(int texture, int i, int n) { return texture != 1 ? i / (n - 1.0) : (i + 1.0) / n; }
 

@@ -27,6 +27,10 @@ double ashikhminCoord(int texture, int i, int n);  // the value of texel i's axi
 // "as_tex0.exr", "as_tex1.exr", "as_tex2.exr".
 std::string ashikhminFileName(int texture);
 
+// The exact value of texture `t`'s channel `c` at its coordinates (u, y), from the formulas as
+// printed in long double (Tex2's y is t, its argument v = scale (t - offset)): the reference.
+double ashikhminExact(int t, int c, double u, double y);
+
 // Throws Error(kExitUsage) naming the flag and the accepted range when the textures cannot be
 // baked as asked: size below 2, HALF with size above 255 (Tex1 = F/(u v) reaches n^2 at the
 // corner texel, above half's 65504), --grid node (the textures' grids are fixed, see below).

@@ -256,7 +256,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       if (v.size() != 1 || v[0] < 0 || v[0] > 1.5707963267948966)
         throw Error(kExitUsage, "--sigma must be one angle in [0, 1.5708] (radians, 0..pi/2)");
       req.sigma = v[0];
-    } else if (opt == "--eta-range" && cmd.kind == Command::Kind::Bake) {
+    } else if (opt == "--eta-range" && (cmd.kind == Command::Kind::Bake || cmd.kind == Command::Kind::Convergence)) {
       once(opt, opt);
       const std::string text = value();
       std::vector<double> v;
@@ -329,12 +329,15 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   const bool modelsGiven = !req.ndfs.empty() || !req.gafs.empty() || req.diffuse >= 0;
   if (!req.merl.empty()) {
     // a measured material: the data is the whole material, and only the 2D tables' kinds have a form
-    if (cmd.kind != Command::Kind::Bake) throw Error(kExitUsage, "--brdf: only bake takes a measured material");
+    if (cmd.kind != Command::Kind::Bake && cmd.kind != Command::Kind::Convergence)
+      throw Error(kExitUsage, "--brdf: only bake and convergence take a measured material");
     if (modelsGiven || req.fresnelGiven || !req.fresnel.f0.empty() || !req.fresnel.eta.empty() ||
         !req.fresnel.k.empty() || !req.fresnel.f82.empty())
       throw Error(kExitUsage, "--brdf merl:" + req.merl + ": the measured data is the whole material; --ndf, --gaf, "
                               "--fresnel, --diffuse and their parameters do not apply");
-    if (req.tables.empty()) req.tables = {TableKind::Albedo, TableKind::AlbedoAvg};
+    if (req.tables.empty())
+      req.tables = cmd.kind == Command::Kind::Convergence ? std::vector<TableKind>{TableKind::Albedo}
+                                                          : std::vector<TableKind>{TableKind::Albedo, TableKind::AlbedoAvg};
     for (TableKind t : req.tables)
       if (t != TableKind::Albedo && t != TableKind::AlbedoAvg && t != TableKind::SplitSum)
         throw Error(kExitUsage, "--brdf merl:" + req.merl + ": --table " + tableName(t) +
@@ -384,12 +387,16 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       throw Error(kExitUsage, "--ndf/--gaf/--diffuse: not stress options (stress sweeps fixed stiff cases: -o, --device)");
   }
   if (cmd.kind == Command::Kind::Convergence) {
-    for (const char* o : {"--table", "--grid", "--mu-axis", "--half", "--precision", "--format"})
-      if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()))
-        throw Error(kExitUsage, std::string(o) + ": not a convergence option (it measures the albedo table of one "
-                                                 "--ndf/--gaf/--fresnel; --size, -o)");
+    for (const char* o : {"--grid", "--mu-axis", "--half", "--precision", "--format"})
+      if (std::find(seen.begin(), seen.end(), o) != seen.end())
+        throw Error(kExitUsage, std::string(o) + ": not a convergence option (it measures one --table of one "
+                                                 "--ndf/--gaf/--fresnel; --size, --levels, --samples, -o)");
     if (req.diffuse >= 0)
       throw Error(kExitUsage, "--diffuse: convergence measures the specular estimators (the diffuse albedo has one budget)");
+    if (req.tables.size() > 1)
+      throw Error(kExitUsage, "--table: convergence measures one table kind at a time, got " +
+                                  std::to_string(req.tables.size()));
+    if (req.tables.empty()) req.tables = {TableKind::Albedo};
   }
   if (cmd.kind == Command::Kind::Verify) {
     // verify checks model pairs: it writes a report page (under -o), no tables

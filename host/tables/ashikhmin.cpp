@@ -1,12 +1,16 @@
 // The Ashikhmin-Shirley family (--table ashikhmin-shirley): the three factorised textures of the
 // anisotropic Ashikhmin-Shirley BRDF, closed forms on the host (bake/ashikhmin_textures.h), one file
 // each.
+#include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 
 #include "bake/ashikhmin_textures.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "tables/family.h"
+#include "tables/ladder.h"
 
 namespace brdfbake {
 
@@ -48,6 +52,56 @@ class Ashikhmin final : public TableFamily {
     t.image = ashikhminTexture(j.texture, j.width, j.half);
     t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return t;
+  }
+
+  // Resolution: the three textures at N = 16 2^L texels per axis (levels L), each looked up
+  // bilinearly at 1024 points of the (2, 3) Halton sequence against the formulas as printed (long
+  // double), relative to max(1, |v|). Points in [1/16, 1]^2, where every grid of the ladder has
+  // texels (Tex1's upper-node grid starts at 1/N).
+  Ladder convergence(BakeContext&, const BakeRequest& req, TableKind) const override {
+    if (!req.ndfs.empty() && req.ndfs.size() != 1) throw Error(kExitUsage, "--ndf: ashikhmin-shirley has its own model");
+    const int points = 1024;
+    auto radical = [](int i, int b) {
+      double f = 1, r = 0;
+      for (; i > 0; i /= b) f /= b, r += f * (i % b);
+      return r;
+    };
+    std::vector<std::array<double, 2>> pts;
+    for (int k = 1; k <= points; ++k) pts.push_back({0.0625 + 0.9375 * radical(k, 2), 0.0625 + 0.9375 * radical(k, 3)});
+    std::vector<double> ref;
+    for (int t = 0; t < kAsTextures; ++t)
+      for (int c = 0; c < (t == 1 ? 3 : 1); ++c)
+        for (const auto& p : pts) ref.push_back(ashikhminExact(t, c, p[0], p[1]));
+    Ladder L;
+    L.table = "ashikhmin-shirley Tex0, Tex1 (R, G, B), Tex2: bilinear lookups at " + std::to_string(points) +
+              " points of [1/16, 1]^2";
+    std::vector<double> prev;
+    for (int level : req.levels) {
+      const int n = 16 << level;
+      std::vector<double> v;
+      double secs = ladder::now();
+      for (int t = 0; t < kAsTextures; ++t) {
+        TableImage img = ashikhminTexture(t, n, false);
+        for (int c = 0; c < (t == 1 ? 3 : 1); ++c)
+          for (const auto& p : pts) {
+            // grid coordinate: nodes i/(n-1), or Tex1's (i+1)/n
+            double gx = ashikhminNodeGrid(t) ? p[0] * (n - 1) : p[0] * n - 1;
+            double gy = ashikhminNodeGrid(t) ? p[1] * (n - 1) : p[1] * n - 1;
+            int x0 = std::clamp(static_cast<int>(std::floor(gx)), 0, n - 2), y0 = std::clamp(static_cast<int>(std::floor(gy)), 0, n - 2);
+            double fx = gx - x0, fy = gy - y0;
+            auto at = [&](int x, int y) { return static_cast<double>(img.planes[c][static_cast<size_t>(y) * n + x]); };
+            v.push_back((1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1)));
+          }
+      }
+      secs = ladder::now() - secs;
+      std::vector<double> e(v.size());
+      for (size_t k = 0; k < v.size(); ++k) e[k] = prev.empty() ? 0 : ladder::rel(v[k], prev[k]);
+      prev = v;
+      L.rungs.push_back(ladder::rung("bilinear lookup (float texels)", std::to_string(n) + " texels per axis", secs, v, e, ref));
+    }
+    L.note = "The reference: the seed's formulas as printed, in long double (bake/ashikhmin_textures.cpp); a rung's "
+             "estimate is its change from the previous rung\n";
+    return L;
   }
 
   std::string key(const Job& job) const override { return tableJobKey(job.get<TableJob>()); }

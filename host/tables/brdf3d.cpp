@@ -15,6 +15,7 @@
 #include "common/format.h"
 #include "tables/brdf3d.h"
 #include "tables/family.h"
+#include "tables/ladder.h"
 
 namespace brdfbake {
 
@@ -217,6 +218,59 @@ class Brdf3d final : public TableFamily {
     set.afterCommit.push_back([&set, secs, first, last] {
       for (size_t k = first; k < last; ++k) set.reports[k].seconds = *secs;
     });
+  }
+
+  // Resolution: the table at N = 8 2^L texels per axis (levels L) baked on the device, looked up
+  // trilinearly at 2048 points of the (7, 11, 13) Halton sequence over the axes' ranges against f
+  // evaluated in double on the host (the BRDF itself: nothing is integrated), relative to
+  // max(1, |f|); the estimate is what the file claims (brdf.interp-error + brdf.error).
+  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind) const override {
+    if (req.ndfs.size() != 1 || req.gafs.size() != 1)
+      throw Error(kExitUsage, "convergence measures one pair: give one --ndf and one --gaf");
+    auto radical = [](int i, int b) {
+      double f = 1, r = 0;
+      for (; i > 0; i /= b) f /= b, r += f * (i % b);
+      return r;
+    };
+    Ladder L;
+    std::vector<double> prev;
+    for (int level : req.levels) {
+      BakeRequest r = req;
+      r.size = 8 << level;
+      r.volume.size.reset();
+      r.volume.atlas.reset();
+      r.volume.merl = false;
+      const VolumeJob v = planVolumes(this, r).front().get<VolumeJob>();
+      const Brdf3dSpec& s = v.spec;
+      if (L.table.empty())
+        L.table = "brdf3d of " + ndfNames()[s.ndf] + "+" + gafNames()[s.gaf] + ", r " + fmtG(s.roughness) + ", " +
+                  (s.param == Brdf3dParam::Angles ? "angles" : "rusinkiewicz") + ": trilinear lookups at 2048 points";
+      KernelRunner& kr = ctx.runner();
+      kr.prepare(KernelNeed{KernelNeed::Brdf3d, s.ndf, s.gaf});
+      std::vector<std::vector<float>> planes;
+      double secs = ladder::best3([&] { planes = kr.brdf3dSlab(s, 0, s.nz); });
+      const auto ax = s.axes();
+      std::vector<double> val, ref, est;
+      const TableImage header = volumeHeader(v);
+      const double claim = header.floats.at("brdf.interp-error") + header.floats.at("brdf.error");
+      for (int k = 1; k <= 2048; ++k) {
+        double t[3] = {radical(k, 7), radical(k, 11), radical(k, 13)};
+        glm::dvec3 ang, idx;
+        for (int a = 0; a < 3; ++a) {
+          ang[a] = ax[a].hi * (a == 0 && s.param == Brdf3dParam::Rusinkiewicz && s.thetaHSqrt ? t[a] * t[a] : t[a]);
+          idx[a] = texelIndex(s, a, ang[a]);
+        }
+        Directions d = s.param == Brdf3dParam::Angles ? fromAngles(ang.x, ang.y, ang.z) : fromRusinkiewicz(ang.x, ang.y, ang.z);
+        val.push_back(trilinear(s, planes[0], idx));
+        ref.push_back(hostBrdf(s, d, 0));
+        est.push_back(claim);
+      }
+      L.rungs.push_back(ladder::rung("trilinear lookup (device table)", std::to_string(s.nx) + " texels per axis", secs, val,
+                                     est, ref));
+    }
+    L.note = "The reference: f itself, evaluated in double on the host (common/brdf3d_grid.h hostBrdf); a rung's "
+             "estimate is the file's claim, brdf.interp-error (measured at 4096 other points) + brdf.error\n";
+    return L;
   }
 
   std::string key(const Job& job) const override {

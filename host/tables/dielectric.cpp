@@ -10,6 +10,10 @@
 #include "common/format.h"
 #include "tables/brdf3d.h"
 #include "tables/family.h"
+#include "tables/ladder.h"
+#include "reference/dielectric_reference.h"
+#include <cmath>
+#include <cstdio>
 
 namespace brdfbake {
 
@@ -64,6 +68,135 @@ std::vector<Job> planDielectric(const TableFamily* family, const BakeRequest& re
   return jobs;
 }
 
+// The etas the ladders measure at: inside glass (TIR), water, glass; or --eta-range's ends.
+std::vector<double> ladderEtas(const BakeRequest& req) {
+  if (req.etaRange) {
+    if (req.etaRange->first == 1 || req.etaRange->second == 1)
+      throw Error(kExitUsage, "--eta-range: convergence measures at its ends, and at eta = 1 the transmitted lobe is a "
+                              "delta (no integral to converge); give ends other than 1");
+    return {req.etaRange->first, req.etaRange->second};
+  }
+  return {1 / 1.5, 1.33, 1.5};
+}
+std::string etaText(const std::vector<double>& etas) {
+  std::string s;
+  for (double e : etas) s += (s.empty() ? "" : ", ") + fmtG(e, 3);
+  return s;
+}
+
+// dielectric over n x n texel centres in (mu, r) at three etas: the device's quadrature at
+// per-texel targets 1e-4 10^-L (levels L) and at the bake's, against the o-space reference.
+Ladder cubeLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
+  const int n = ladder::pointsPerAxis(req, 3, 1, 16, "dielectric");
+  const std::vector<double> etas = ladderEtas(req);
+  Ladder L;
+  L.table = "dielectric (E_R and E_T) of " + ndfNames()[ndf] + "+" + gafNames()[gaf] + ", " + std::to_string(n) + "x" +
+            std::to_string(n) + " texel centres in (mu, r) at eta " + etaText(etas);
+  const size_t texels = static_cast<size_t>(n) * n * etas.size();
+  std::fprintf(stderr, "convergence: reference at %zu points\n", texels);
+  std::vector<double> ref(texels * 2);
+  double t0 = ladder::now();
+  ladder::onTwoThreads(texels, [&](size_t k) {
+    size_t x = k % n, y = (k / n) % n, z = k / (static_cast<size_t>(n) * n);
+    reference::DielectricAlbedo a = reference::dielectricAlbedo(ndf, gaf, ladder::centre(static_cast<int>(x), n),
+                                                                ladder::centre(static_cast<int>(y), n), etas[z]);
+    ref[2 * k] = a.r;
+    ref[2 * k + 1] = a.t;
+  });
+  const double refSeconds = ladder::now() - t0;
+  KernelRunner& kr = ctx.runner();
+  kr.prepare(KernelNeed{KernelNeed::Dielectric, ndf, gaf});
+  std::vector<float> targets;
+  for (int level : req.levels) targets.push_back(static_cast<float>(1e-4 * std::pow(10.0, -level)));
+  targets.push_back(kDielectricTarget);
+  kr.dielectricSlab(ndf, gaf, n, n, etas, false, targets.front());  // warm
+  for (size_t i = 0; i < targets.size(); ++i) {
+    std::vector<std::vector<float>> p;
+    double secs = ladder::best3([&] { p = kr.dielectricSlab(ndf, gaf, n, n, etas, false, targets[i]); });
+    std::vector<double> v(texels * 2), e(texels);
+    for (size_t k = 0; k < texels; ++k) {
+      v[2 * k] = p[0][k];
+      v[2 * k + 1] = p[1][k];
+      // + what the bake adds to each texel's bound (bake/dielectric_bake.cpp): E_R and E_T rounded to
+      // float, 2^-25 each below 1 (the sum's third rounding is not measured here), and the fp64 program's 1e-9
+      e[k] = p[2][k] + 2 * std::ldexp(1.0, -25) + 1e-9;
+    }
+    L.rungs.push_back(ladder::rung("quadrature (device)", (i + 1 == targets.size() ? "the bake's target " : "target ") +
+                                                              fmt3(targets[i]), secs, v, e, ref));
+  }
+  L.note = "The reference (Walter et al.'s BSDF integrated over the scattered direction by nested adaptive Gauss-Kronrod "
+           "in double, host/reference/dielectric_reference.cpp) took " + fmt3(refSeconds) + " s for " +
+           std::to_string(texels) + " points\n";
+  return L;
+}
+
+// dielectric-avg over n texel centres in r at three etas: the bake's averages rule (panels over mu
+// with E on the device) at entry targets 1e-4 10^-L (levels L) and at the bake's, against
+// 2 int E mu dmu of the o-space reference's E by adaptive Gauss-Kronrod, split at the critical mu.
+Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
+  const int n = ladder::pointsPerAxis(req, 2, 1, 16, "dielectric-avg");
+  Ladder L;
+  L.table = "dielectric-avg (E_R,avg and E_T,avg) of " + ndfNames()[ndf] + "+" + gafNames()[gaf] + ", " +
+            std::to_string(n) + " texel centres in r at eta " + etaText(ladderEtas(req));
+  std::vector<double> rs, etas;
+  for (double eta : ladderEtas(req))
+    for (int j = 0; j < n; ++j) rs.push_back(ladder::centre(j, n)), etas.push_back(eta);
+  const size_t entries = rs.size();
+  std::fprintf(stderr, "convergence: reference at %zu entries\n", entries);
+  std::vector<double> ref(entries * 2);
+  double t0 = ladder::now();
+  ladder::onTwoThreads(entries, [&](size_t k) {
+    // E(mu) has a square-root end at the critical cosine (eta < 1) and changes on the scale of
+    // alpha next to mu = 0: 8-point Gauss-Legendre on panels graded geometrically (ratio 1/2, 9
+    // levels) towards both ends of each piece, so that both endpoint features converge.
+    const double muc = dielectricCriticalMu(etas[k]);
+    std::vector<double> edges = {0.0};
+    auto piece = [&](double a, double b) {
+      for (int g = 9; g >= 1; --g) edges.push_back(a + (b - a) * std::ldexp(1.0, -g));
+      for (int g = 2; g <= 9; ++g) edges.push_back(b - (b - a) * std::ldexp(1.0, -g));
+      edges.push_back(b);
+    };
+    if (muc > 0) piece(0, muc), piece(muc, 1);
+    else piece(0, 1);
+    double sum[2] = {0, 0};
+    for (size_t e = 0; e + 1 < edges.size(); ++e)
+      for (const ladder::Node& x : ladder::gaussLegendreNodes(edges[e], edges[e + 1], 1)) {
+        reference::DielectricAlbedo a = reference::dielectricAlbedo(ndf, gaf, x.x, rs[k], etas[k]);
+        sum[0] += x.w * 2 * x.x * a.r;
+        sum[1] += x.w * 2 * x.x * a.t;
+      }
+    ref[2 * k] = sum[0];
+    ref[2 * k + 1] = sum[1];
+  });
+  const double refSeconds = ladder::now() - t0;
+  KernelRunner& kr = ctx.runner();
+  kr.prepare(KernelNeed{KernelNeed::DielectricNodes, ndf, gaf});
+  std::vector<std::pair<double, float>> targets;  // entry target, node target
+  for (int level : req.levels) {
+    double t = 1e-4 * std::pow(10.0, -level);
+    targets.push_back({t, static_cast<float>(std::max(t, 1e-7))});
+  }
+  targets.push_back({kDielectricAvgTarget, kDielectricAvgNodeTarget});
+  for (size_t i = 0; i < targets.size(); ++i) {
+    DielectricAverages a;
+    double secs = ladder::now();
+    a = dielectricAverages(dielectricDeviceEval(kr, ndf, gaf, targets[i].second), rs, etas, targets[i].first);
+    secs = ladder::now() - secs;
+    std::vector<double> v(entries * 2), e(entries);
+    for (size_t k = 0; k < entries; ++k) {
+      v[2 * k] = a.er[k];
+      v[2 * k + 1] = a.et[k];
+      e[k] = std::max(a.br[k], a.bt[k]);
+    }
+    L.rungs.push_back(ladder::rung("the averages' rule (device E)", (i + 1 == targets.size() ? "the bake's target " : "target ") +
+                                                                      fmt3(targets[i].first), secs, v, e, ref));
+  }
+  L.note = "The reference (2 int E mu dmu by 8-point Gauss-Legendre on panels graded towards 0, the critical mu and 1, "
+           "of the o-space reference's E, host/reference/dielectric_reference.cpp) took " + fmt3(refSeconds) + " s for " +
+           std::to_string(entries) + " entries\n";
+  return L;
+}
+
 class Dielectric final : public TableFamily {
  public:
   std::string name() const override { return "dielectric"; }
@@ -115,6 +248,16 @@ class Dielectric final : public TableFamily {
     if (write) f.write = [write, table](const std::string& tmp) { write(tmp); };
     else f.image = &set.keep.emplace_back(table->image);
     set.files.push_back(std::move(f));
+  }
+
+  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind) const override {
+    if (req.ndfs.size() != 1 || req.gafs.size() != 1)
+      throw Error(kExitUsage, "convergence measures one pair: give one --ndf and one --gaf");
+    BakeRequest r = req;
+    r.tables = {kind};
+    planDielectric(this, r);  // the same model checks as a bake
+    const int ndf = req.ndfs[0], gaf = req.gafs[0];
+    return kind == TableKind::Dielectric ? cubeLadder(ctx, req, ndf, gaf) : avgLadder(ctx, req, ndf, gaf);
   }
 
   std::string key(const Job& job) const override {

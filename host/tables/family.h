@@ -66,6 +66,22 @@ struct FileSet {
   std::map<std::string, std::map<std::string, std::string>> extraStrings;  // per path (scenes)
 };
 
+// One rung of a convergence ladder: a method at one budget, its wall time, its own error estimate
+// and its true error against the independent reference, each the largest over the points measured
+// (relative to max(1, |v|)).
+struct Rung {
+  std::string method;  // "quadrature (device, float)", ...
+  std::string budget;  // "level 0", "1024 samples", "32 texels per axis"
+  double seconds = 0, estimate = 0, error = 0;
+};
+
+// A table kind's error against run time (brdfbake convergence --table KIND).
+struct Ladder {
+  std::string table;  // what was measured: the table, models, points
+  std::vector<Rung> rungs;
+  std::string note;   // the reference: what it is, its time, how it agrees with the finest rung
+};
+
 // A scene plan's line for a job.
 struct JobSummary {
   std::string table;   // "splitsum"
@@ -102,6 +118,13 @@ class TableFamily {
   // The files of a table compute() made, which `set` keeps (its baked deque) until they land.
   // Default: a TableJob's 2D formats.
   virtual void addBakedFiles(const Job& job, BakedTable& table, FileSet& set) const;
+  // Whether the family bakes a request's `kind`: a measured material (--brdf merl:) goes to the
+  // measured family, every other request to the family that lists the kind.
+  virtual bool takes(const BakeRequest& req) const { return req.merl.empty(); }
+  // The convergence ladder of `kind` for a request of one pair (req.levels, req.samples, req.size):
+  // each method the baker or common practice offers, at rising budgets, against the independent
+  // reference. Throws Error(kExitUsage) for requests it cannot measure.
+  virtual Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind) const = 0;
   // Scenes: everything the job's values and header depend on, as text (content hashes).
   virtual std::string key(const Job& job) const = 0;
   virtual JobSummary summary(const Job& job) const = 0;

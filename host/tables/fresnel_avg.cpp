@@ -5,8 +5,12 @@
 
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "bake/error_model.h"
 #include "common/material.h"
 #include "tables/family.h"
+#include "common/format.h"
+#include "reference/reference.h"
+#include "tables/ladder.h"
 #include "tables/table2d.h"
 
 namespace brdfbake {
@@ -67,6 +71,48 @@ class FresnelAvg final : public TableFamily {
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.image = finishTable2d(nullptr, job, std::move(t), &out.texelBounds);
     return out;
+  }
+
+  // Over n texel centres in eta: the bake's rule (closed form, or adaptive GK31 split at the critical
+  // angle) and composite Gauss-Legendre of 2 mu F(mu) over [0, 1] without the split (levels L: 4^L
+  // panels of 8 nodes), against the reference (complex Fresnel amplitudes, adaptive GK in double).
+  Ladder convergence(BakeContext&, const BakeRequest& req, TableKind) const override {
+    const int model = req.fresnel.model;
+    if (model != FRESNEL_DIELECTRIC && model != FRESNEL_SCHLICK_TIR)
+      throw Error(kExitUsage, "--table fresnel-avg runs over eta: it takes --fresnel dielectric or schlick-tir");
+    const int n = ladder::pointsPerAxis(req, 8, 1, 256, "fresnel-avg");
+    std::vector<double> eta(n), ref(n);
+    for (int i = 0; i < n; ++i) eta[i] = kEtaLo + (kEtaHi - kEtaLo) * (i + 0.5) / n;
+    Ladder L;
+    L.table = "fresnel-avg of " + fresnelNames()[model] + ", " + std::to_string(n) + " texel centres in eta " +
+              fmtG(kEtaLo) + ".." + fmtG(kEtaHi);
+    double t0 = ladder::now();
+    for (int i = 0; i < n; ++i) ref[i] = reference::fresnelAvg(reference::FresnelSpec{model, eta[i], 0});
+    const double refSeconds = ladder::now() - t0;
+    {
+      std::vector<double> v(n), e(n);
+      double secs = ladder::best3([&] {
+        for (int i = 0; i < n; ++i) v[i] = fresnelAverage(model, eta[i], 0, &e[i]);
+      });
+      for (int i = 0; i < n; ++i) e[i] += floatArithmeticError(std::fabs(v[i]), kRoundToFloat);
+      L.rungs.push_back(ladder::rung("the bake's rule (host, double)", "adaptive", secs, v, e, ref));
+    }
+    std::vector<double> prev;
+    for (int level : req.levels) {
+      const int panels = 1 << (2 * level);
+      std::vector<double> v(n), e(n);
+      double secs = ladder::best3([&] {
+        for (int i = 0; i < n; ++i)
+          v[i] = ladder::gaussLegendre([&](double mu) { return 2 * mu * brdf64::fresnel_F(model, eta[i], 0, mu); }, 0, 1, panels);
+      });
+      for (int i = 0; i < n; ++i) e[i] = prev.empty() ? 0 : ladder::rel(v[i], prev[i]);
+      prev = v;
+      L.rungs.push_back(ladder::rung("Gauss-Legendre in mu (host, double)", std::to_string(panels) + " x 8 nodes", secs, v, e, ref));
+    }
+    L.note = "The reference (F from complex amplitudes, 2 int F mu dmu by adaptive Gauss-Kronrod in double, host/reference) "
+             "took " + fmt3(refSeconds) + " s for " + std::to_string(n) + " values; a Gauss-Legendre rung's estimate is its "
+             "change from the previous rung\n";
+    return L;
   }
 
   std::string key(const Job& job) const override { return tableJobKey(job.get<TableJob>()); }

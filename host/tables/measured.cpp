@@ -9,6 +9,8 @@
 #include "formats/merl.h"
 #include "materials/merl_albedo.h"
 #include "tables/family.h"
+#include "common/format.h"
+#include "tables/ladder.h"
 #include "tables/registry.h"
 
 namespace brdfbake {
@@ -19,6 +21,8 @@ class Measured final : public TableFamily {
  public:
   std::string name() const override { return "measured"; }
   std::vector<TableKind> kinds() const override { return {TableKind::Albedo, TableKind::AlbedoAvg, TableKind::SplitSum}; }
+
+  bool takes(const BakeRequest& req) const override { return !req.merl.empty(); }
 
   std::vector<Job> plan(const BakeRequest& req) const override {
     if (req.merl.empty()) return {};
@@ -63,6 +67,73 @@ class Measured final : public TableFamily {
     }
     t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return t;
+  }
+
+  // albedo (and splitsum, the same values) over n texel centres in mu: the h-space rules (k, k - 1)
+  // for k in kMerlLadder (levels L take its L-th rule) and the bake's adaptive climb, against the
+  // (30, 29) rule: a MERL file's interpolant has no closed form, and the rules converge to it
+  // (docs/merl.md, brdfbake-bench --merl). albedo-avg: the direct rule's n nodes per bin and piece.
+  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind) const override {
+    const MerlData& d = data(ctx, req.merl);
+    const RusinkiewiczFn f = merlFunction(d);
+    Ladder L;
+    if (kind == TableKind::AlbedoAvg) {
+      L.table = "albedo-avg of merl:" + merlMaterialName(req.merl) + " (R, G, B)";
+      double t0 = ladder::now();
+      std::array<double, 3> truth = directAlbedoAvgRule(f, 10, 2);
+      const double refSeconds = ladder::now() - t0;
+      std::vector<double> ref(truth.begin(), truth.end()), prev;
+      for (int level : req.levels) {
+        const int nodes = kMerlAvgLadder[std::min<size_t>(static_cast<size_t>(level), kMerlAvgLadder.size() - 1)];
+        double secs = ladder::now();
+        std::array<double, 3> v = directAlbedoAvgRule(f, nodes, 2);
+        secs = ladder::now() - secs;
+        std::vector<double> vals(v.begin(), v.end()), e(3);
+        for (int c = 0; c < 3; ++c) e[c] = prev.empty() ? 0 : ladder::rel(vals[c], prev[c]);
+        prev = vals;
+        L.rungs.push_back(ladder::rung("direct rule (host, double)", std::to_string(nodes) + " nodes per piece", secs, vals, e, ref));
+      }
+      L.note = "The reference: the same coordinates' rule at 10 nodes per bin and piece, above the ladder (" + fmt3(refSeconds) +
+               " s)\n";
+      return L;
+    }
+    const int n = ladder::pointsPerAxis(req, 6, 1, 64, "a measured albedo");
+    L.table = tableName(kind) + " of merl:" + merlMaterialName(req.merl) + " (R, G, B), " + std::to_string(n) +
+              " texel centres in mu";
+    std::vector<double> ref(static_cast<size_t>(n) * 3);
+    double t0 = ladder::now();
+    ladder::onTwoThreads(static_cast<size_t>(n), [&](size_t i) {
+      std::array<double, 3> e = hSpaceIntegral(f, ladder::centre(static_cast<int>(i), n), HSpaceRule{30, 29});
+      for (int c = 0; c < 3; ++c) ref[3 * i + c] = e[c];
+    });
+    const double refSeconds = ladder::now() - t0;
+    std::vector<double> prev;
+    for (int level : req.levels) {
+      const int k = kMerlLadder[std::min<size_t>(static_cast<size_t>(level) * 2, kMerlLadder.size() - 1)];
+      std::vector<double> v(ref.size()), e(ref.size());
+      double secs = ladder::now();
+      ladder::onTwoThreads(static_cast<size_t>(n), [&](size_t i) {
+        std::array<double, 3> x = hSpaceIntegral(f, ladder::centre(static_cast<int>(i), n), HSpaceRule{k, k - 1});
+        for (int c = 0; c < 3; ++c) v[3 * i + c] = x[c];
+      });
+      secs = ladder::now() - secs;
+      for (size_t j = 0; j < v.size(); ++j) e[j] = prev.empty() ? 0 : ladder::rel(v[j], prev[j]);
+      prev = v;
+      L.rungs.push_back(ladder::rung("h-space rule (host, double)", "(" + std::to_string(k) + ", " + std::to_string(k - 1) + ")",
+                                     secs, v, e, ref));
+    }
+    {
+      std::vector<double> v(ref.size()), e(ref.size());
+      double secs = ladder::now();
+      ladder::onTwoThreads(static_cast<size_t>(n), [&](size_t i) {
+        AlbedoEstimate a = hSpaceAlbedo(f, ladder::centre(static_cast<int>(i), n));
+        for (int c = 0; c < 3; ++c) v[3 * i + c] = a.e[c], e[3 * i + c] = a.err[c];
+      });
+      L.rungs.push_back(ladder::rung("the bake's climb (host, double)", "adaptive", ladder::now() - secs, v, e, ref));
+    }
+    L.note = "The reference: the (30, 29) rule, above the ladder (" + fmt3(refSeconds) + " s); a fixed rule's estimate is "
+             "its change from the previous rung\n";
+    return L;
   }
 
   std::string key(const Job& job) const override { return tableJobKey(job.get<TableJob>()); }

@@ -248,6 +248,10 @@ class Microfacet final : public TableFamily {
     return t;
   }
 
+  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind) const override {
+    return microfacetLadder(ctx, req, kind);
+  }
+
   std::string key(const Job& job) const override { return tableJobKey(job.get<TableJob>()); }
 
   JobSummary summary(const Job& job) const override {

@@ -16,6 +16,12 @@ namespace brdfbake {
 TableImage computeTable(KernelRunner& runner, const TableJob& job, double* seconds,
                         std::vector<double>* texelBounds = nullptr);
 
+// The convergence ladders of splitsum, albedo, albedo-avg and kp (tables/microfacet_ladder.cpp).
+struct Ladder;
+struct BakeRequest;
+class BakeContext;
+Ladder microfacetLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind);
+
 // The table's file name: <table>_<ndf>_<gaf>[_<fresnel>|_<diffuse>].exr, kp_<ndf>.exr, albedo_<diffuse>.exr.
 std::string microfacetFileName(const TableJob& job);
 

@@ -34,6 +34,15 @@ const TableFamily& familyOf(TableKind kind) {
   throw Error(kExitSoftware, "internal: no table family bakes " + tableName(kind));
 }
 
+const TableFamily& familyFor(const BakeRequest& req, TableKind kind) {
+  for (const TableFamily* f : families()) {
+    std::vector<TableKind> k = f->kinds();
+    if (f->takes(req) && std::find(k.begin(), k.end(), kind) != k.end()) return *f;
+  }
+  throw Error(kExitUsage, "--table " + tableName(kind) + ": no table family bakes it for this request" +
+                              (req.merl.empty() ? "" : " (a measured material bakes albedo, albedo-avg or splitsum)"));
+}
+
 int defaultSize(TableKind kind) { return familyOf(kind).defaultSize(kind); }
 
 }  // namespace brdfbake

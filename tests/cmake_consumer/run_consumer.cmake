@@ -48,6 +48,16 @@ run("${WORK}/build/library_consumer" "${WORK}/cli/splitsum_ggx_smith-correlated.
 if(NOT last_output MATCHES "768 values equal")
   message(FATAL_ERROR "the library's split sum did not match the command line's:\n${last_output}")
 endif()
+# the README's library example builds against the installed package and runs
+if(MODE STREQUAL "installed")
+  run(${CMAKE_COMMAND} -S "${SRC}/examples/library" -B "${WORK}/example" -DCMAKE_BUILD_TYPE=${BUILD_TYPE} ${configure})
+  run(${CMAKE_COMMAND} --build "${WORK}/example" -j2)
+  execute_process(COMMAND "${WORK}/example/bake_lut" WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                  ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/lut/splitsum_ggx_smith-correlated.ktx2" OR NOT out MATCHES "64x64")
+    message(FATAL_ERROR "examples/library failed (${rc}):\n${out}\n${err}")
+  endif()
+endif()
 set(stamp "${WORK}/build/consumer_tables.brdfbake-stamp")
 file(TIMESTAMP "${stamp}" t1 "%s%f" UTC)
 run(${CMAKE_COMMAND} --build "${WORK}/build" -j2)
