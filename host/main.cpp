@@ -8,13 +8,13 @@
 #include <iostream>
 
 #include "bake/bake.h"
-#include "bake/output_set.h"
-#include "bake/volume.h"
+#include "formats/output_set.h"
+#include "tables/volume.h"
 #include "shader/shader_gen.h"
 #include "cl/device.h"
 #include "cli/args.h"
 #include "common/errors.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "formats/readers/table_reader.h"
 #include "plan/plan.h"
 #include "report/convergence.h"

@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "cl/device.h"
-#include "bake/error_model.h"
+#include "tables/error_model.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/models.h"

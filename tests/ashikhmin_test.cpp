@@ -15,9 +15,9 @@
 #include <string>
 
 #include "cli_run.h"
-#include "bake/ashikhmin_textures.h"
+#include "tables/ashikhmin_textures.h"
 #include "common/brdf_host.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "materials/multiscatter.h"
 
 namespace {

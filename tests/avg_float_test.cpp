@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/error_model.h"
+#include "tables/error_model.h"
 #include "cl/avg_rule.h"
 #include "common/brdf_host.h"
 #include "common/models.h"

@@ -17,12 +17,12 @@
 #include <glm/geometric.hpp>
 
 #include "cli_run.h"
-#include "bake/volume.h"
+#include "tables/volume.h"
 #include "common/brdf3d_grid.h"
 #include "common/brdf_host.h"
 #include "common/models.h"
 #include "common/errors.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "formats/merl.h"
 #include "tables/brdf3d.h"
 #include "test_device.h"

@@ -19,7 +19,7 @@
 
 #include "cli_run.h"
 #include "common/brdf_host.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "reference/reference.h"
 
 namespace fs = std::filesystem;

@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "cli_run.h"
-#include "bake/dielectric_avg.h"
-#include "bake/dielectric_bake.h"
+#include "tables/dielectric_avg.h"
+#include "tables/dielectric_bake.h"
 #include "common/brdf_host.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "reference/dielectric_reference.h"
 #include "test_device.h"
 

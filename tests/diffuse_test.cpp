@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "bake/error_model.h"
+#include "tables/error_model.h"
 #include "cl/device.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"

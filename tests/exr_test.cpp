@@ -1,5 +1,5 @@
 // Tests for host/exr/table_file: round trips, determinism, validation and errors.
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 
 #include <gtest/gtest.h>
 #include <dirent.h>

@@ -16,9 +16,9 @@
 #include <sstream>
 #include <string>
 
-#include "bake/volume.h"
+#include "tables/volume.h"
 #include "dds_reader.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "formats/storage.h"
 #include "formats/writers.h"
 #include "ktx2_reader.h"

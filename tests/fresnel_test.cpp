@@ -12,7 +12,7 @@
 
 #include "cl/device.h"
 #include "cl/runner.h"
-#include "bake/error_model.h"
+#include "tables/error_model.h"
 #include "common/brdf_host.h"
 #include "common/material.h"
 #include "common/models.h"

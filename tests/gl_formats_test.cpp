@@ -23,7 +23,7 @@
 
 #include "common/models.h"
 #include "dds_reader.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "formats/storage.h"
 #include "gl_harness.h"
 #include "ktx2_reader.h"

@@ -22,7 +22,7 @@
 
 #include "common/models.h"
 #include "dds_reader.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "gl_harness.h"
 #include "ktx2_reader.h"
 #include "reference/reference.h"

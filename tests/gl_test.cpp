@@ -18,9 +18,9 @@
 #include <random>
 
 #include "common/brdf3d_grid.h"
-#include "bake/volume.h"
+#include "tables/volume.h"
 #include "common/models.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "reference/reference.h"
 #include "gl_harness.h"
 #include "shader/shader_gen.h"

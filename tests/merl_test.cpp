@@ -21,7 +21,7 @@
 #include "cli_run.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "formats/merl.h"
 #include "materials/merl_albedo.h"
 #include "reference/reference.h"

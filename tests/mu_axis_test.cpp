@@ -12,11 +12,11 @@
 #include <filesystem>
 
 #include "tables/microfacet.h"
-#include "bake/interp_estimate.h"
+#include "tables/interp_estimate.h"
 #include "cli_run.h"
 #include "common/brdf_host.h"
 #include "common/models.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "formats/readers/table_reader.h"
 #include "reference/reference.h"
 #include "test_device.h"

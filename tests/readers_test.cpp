@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <string>
 
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 
 namespace fs = std::filesystem;
 namespace {

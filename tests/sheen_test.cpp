@@ -15,11 +15,11 @@
 #include <vector>
 #include <unistd.h>
 
-#include "bake/error_model.h"
+#include "tables/error_model.h"
 #include "cli_run.h"
 #include "common/brdf_host.h"
 #include "common/models.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "reference/reference.h"
 #include "reference_cache.h"
 #include "reference/sheen_reference.h"

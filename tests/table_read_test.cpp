@@ -13,7 +13,7 @@
 #include "cli_run.h"
 #include "common/errors.h"
 #include "dds_reader.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "formats/readers/table_reader.h"
 #include "ktx2_reader.h"
 

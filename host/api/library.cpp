@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "bake/bake.h"
-#include "bake/output_set.h"
+#include "formats/output_set.h"
 #include "common/format.h"
 #include "formats/readers/table_reader.h"
 #include "plan/plan.h"

@@ -2,7 +2,7 @@
 
 #include <map>
 
-#include "bake/output_set.h"
+#include "formats/output_set.h"
 #include "tables/registry.h"
 
 namespace brdfbake {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "plan/plan.h"
 #include "tables/family.h"
 

@@ -58,7 +58,7 @@
 #include <thread>
 #include <vector>
 
-#include "bake/error_model.h"
+#include "tables/error_model.h"
 #include "bench/bench_util.h"
 #include "bench/karis_mc.h"
 #include "cl/device.h"

@@ -11,10 +11,10 @@
 #include <cstdio>
 #include <vector>
 
-#include "bake/dielectric_avg.h"
-#include "bake/dielectric_bake.h"
+#include "tables/dielectric_avg.h"
+#include "tables/dielectric_bake.h"
 #include "bench/bench_util.h"
-#include "bench/mc_common.h"
+#include "tables/mc_common.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/models.h"

@@ -11,7 +11,7 @@
 #include <cstddef>
 #include <stdexcept>
 
-#include "bench/mc_common.h"
+#include "tables/mc_common.h"
 
 namespace brdfbake {
 namespace {

@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "bench/mc_common.h"
+#include "tables/mc_common.h"
 #include "common/brdf_host.h"
 
 namespace brdfbake {

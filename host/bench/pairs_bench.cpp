@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "bake/error_model.h"
+#include "tables/error_model.h"
 #include "bench/bench_util.h"
 #include "cl/runner.h"
 #include "common/models.h"

@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "bake/volume.h"
+#include "tables/volume.h"
 #include "tables/brdf3d.h"
 #include "bench/bench_util.h"
 #include "cl/runner.h"

@@ -12,7 +12,7 @@
 #include <cstring>
 
 #include "common/errors.h"
-#include "exr/table_file.h"  // temporaryPathFor
+#include "formats/exr/table_file.h"  // temporaryPathFor
 #include "formats/storage.h"  // TempFileWriter
 
 namespace brdfbake {

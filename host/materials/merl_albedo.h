@@ -16,7 +16,7 @@
 #include <functional>
 #include <string>
 
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "formats/merl.h"
 #include "common/models.h"
 

@@ -14,7 +14,7 @@
 #include "reference/reference.h"
 #include "reference/sheen_reference.h"
 #include "report/report_page.h"
-#include "bake/error_model.h"
+#include "tables/error_model.h"
 
 namespace brdfbake {
 

@@ -1,4 +1,4 @@
-#include "bake/error_model.h"
+#include "tables/error_model.h"
 #include "report/verify.h"
 
 #include <algorithm>

@@ -11,9 +11,9 @@
 #include <iostream>
 
 #include "bake/bake.h"
-#include "bake/output_set.h"
+#include "formats/output_set.h"
 #include "common/errors.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "scene/scene_plan.h"
 
 namespace brdfbake {

@@ -6,7 +6,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "bake/ashikhmin_textures.h"
+#include "tables/ashikhmin_textures.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "tables/family.h"

@@ -8,8 +8,8 @@
 #include <memory>
 #include <tuple>
 
-#include "bake/format_outputs.h"
-#include "bake/volume.h"
+#include "formats/format_outputs.h"
+#include "tables/volume.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"

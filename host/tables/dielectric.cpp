@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <tuple>
 
-#include "bake/dielectric_bake.h"
+#include "tables/dielectric_bake.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"

@@ -1,7 +1,7 @@
 // What the families share: the bake context, the 2D tables' files and report lines, their scene keys.
 #include "tables/family.h"
 
-#include "bake/format_outputs.h"
+#include "formats/format_outputs.h"
 #include "cl/device.h"
 
 namespace brdfbake {
@@ -34,7 +34,12 @@ void TableFamily::addBakedFiles(const Job& job, BakedTable& t, FileSet& set) con
     for (const auto& [k, v] : it->second) t.image.strings[k] = v;
   TableReport r = reportOf(tj);
   r.seconds = t.seconds;
-  addTableFiles(tj, t.image, r, set.keep, set.files, set.reports);
+  for (PlannedFile& pf : tableOutputs(FileSpec{tj.path, tj.formats, tj.precision, tj.half, tj.layout}, t.image, set.keep)) {
+    r.path = pf.file.path;
+    r.errorBound = pf.errorBound;
+    set.reports.push_back(r);
+    set.files.push_back(std::move(pf.file));
+  }
 }
 
 void applyFormats(const BakeRequest& req, TableJob& job) {

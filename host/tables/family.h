@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "bake/output_set.h"
+#include "formats/output_set.h"
 #include "cl/runner.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "tables/job.h"
 #include "brdfbake/request.h"
 

@@ -5,7 +5,7 @@
 
 #include "common/brdf_host.h"
 #include "common/errors.h"
-#include "bake/error_model.h"
+#include "tables/error_model.h"
 #include "common/material.h"
 #include "tables/family.h"
 #include "common/format.h"

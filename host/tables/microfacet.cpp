@@ -6,8 +6,8 @@
 #include <cmath>
 #include <tuple>
 
-#include "bake/error_model.h"
-#include "bake/method_text.h"
+#include "tables/error_model.h"
+#include "tables/method_text.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"

@@ -3,8 +3,8 @@
 // in double in the plain angles, sharing only D with the kernels).
 #include <cstdio>
 
-#include "bake/error_model.h"
-#include "bench/mc_common.h"
+#include "tables/error_model.h"
+#include "tables/mc_common.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"

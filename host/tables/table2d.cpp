@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "bake/error_model.h"
-#include "bake/interp_estimate.h"
-#include "bake/interp_probe.h"
+#include "tables/error_model.h"
+#include "tables/interp_estimate.h"
+#include "tables/interp_probe.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "formats/storage.h"

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "common/format.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "formats/readers/table_reader.h"
 
 namespace brdfbake {

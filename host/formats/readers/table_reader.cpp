@@ -9,7 +9,7 @@
 
 #include "common/errors.h"
 #include "common/format.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "formats/readers/reader_internal.h"
 
 namespace brdfbake {

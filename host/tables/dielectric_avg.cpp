@@ -1,4 +1,4 @@
-#include "bake/dielectric_avg.h"
+#include "tables/dielectric_avg.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "bake/dielectric_bake.h"
+#include "tables/dielectric_bake.h"
 
 #include <Imath/half.h>
 
@@ -6,8 +6,8 @@
 #include <chrono>
 #include <cmath>
 
-#include "bake/dielectric_avg.h"
-#include "bake/volume.h"
+#include "tables/dielectric_avg.h"
+#include "tables/volume.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"

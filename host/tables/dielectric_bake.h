@@ -4,9 +4,9 @@
 #pragma once
 #include <vector>
 
-#include "bake/dielectric_avg.h"
-#include "bake/output_set.h"
-#include "exr/table_file.h"
+#include "tables/dielectric_avg.h"
+#include "formats/output_set.h"
+#include "formats/exr/table_file.h"
 #include "tables/job.h"
 
 namespace brdfbake {

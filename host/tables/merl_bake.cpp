@@ -1,4 +1,4 @@
-#include "bake/merl_bake.h"
+#include "tables/merl_bake.h"
 
 
 namespace brdfbake {

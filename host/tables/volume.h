@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "bake/output_set.h"
+#include "formats/format_outputs.h"
+#include "formats/output_set.h"
 #include "tables/job.h"
 
 namespace brdfbake {
@@ -51,5 +52,11 @@ std::vector<std::vector<float>> volumeFromAtlas(const TableImage& img, const Brd
 // `brdfbake sample FILE --at A,B,C` (degrees): the trilinear lookup of each channel next to the
 // exact value, as text.
 std::string sampleReport(const std::string& path, const std::array<double, 3>& atDegrees);
+
+// The files of a 3D table in the non-EXR formats of `job` (KTX2, DDS: 3D textures; header): each
+// bakes the table slab by slab on `runner` while it writes (never whole in memory). `atlasHeader`
+// is volumeHeader(job). *seconds accumulates kernel time.
+std::vector<PlannedFile> volumeFormatOutputs(KernelRunner& runner, const VolumeJob& job, const TableImage& atlasHeader,
+                                             double* seconds);
 
 }  // namespace brdfbake

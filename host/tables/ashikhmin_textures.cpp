@@ -1,4 +1,4 @@
-#include "bake/ashikhmin_textures.h"
+#include "tables/ashikhmin_textures.h"
 
 #include <Imath/half.h>
 

@@ -1,4 +1,4 @@
-#include "bake/interp_estimate.h"
+#include "tables/interp_estimate.h"
 
 #include <algorithm>
 #include <cmath>

@@ -15,8 +15,8 @@
 #include <cstdint>
 
 #include "common/errors.h"
-#include "exr/exr_internal.h"
-#include "exr/table_file.h"
+#include "formats/exr/exr_internal.h"
+#include "formats/exr/table_file.h"
 
 namespace brdfbake {
 namespace {

@@ -1,4 +1,4 @@
-#include "bake/output_set.h"
+#include "formats/output_set.h"
 
 #include <fcntl.h>
 #include <signal.h>

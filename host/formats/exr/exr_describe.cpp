@@ -18,8 +18,8 @@
 #include <sstream>
 
 #include "common/format.h"
-#include "exr/exr_internal.h"
-#include "exr/table_file.h"
+#include "formats/exr/exr_internal.h"
+#include "formats/exr/table_file.h"
 
 namespace brdfbake {
 namespace {

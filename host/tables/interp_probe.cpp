@@ -1,4 +1,4 @@
-#include "bake/interp_probe.h"
+#include "tables/interp_probe.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 
 namespace brdfbake {
 

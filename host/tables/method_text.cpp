@@ -1,10 +1,10 @@
 // brdf.method: how a table was computed, generated from the constants the estimators use
 // (kernels/integrate/*.h and bake/error_model.h), so that it describes the code that ran.
-#include "bake/method_text.h"
+#include "tables/method_text.h"
 
 #include <string>
 
-#include "bake/error_model.h"
+#include "tables/error_model.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/format.h"

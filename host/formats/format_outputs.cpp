@@ -1,12 +1,10 @@
 // One table, every requested format: see format_outputs.h.
-#include "bake/format_outputs.h"
+#include "formats/format_outputs.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
-#include "bake/volume.h"
-#include "cl/runner.h"
 #include "common/errors.h"
 #include "common/format.h"
 #include "formats/layout.h"
@@ -42,7 +40,9 @@ int binaryChannels(int channels) { return channels == 3 ? 4 : channels; }
 
 // The metadata of the file of `f`: the table's own, plus the format and precision, with
 // brdf.error = the table's error without storage + `storage`.
-TableImage fileMeta(const TableImage& src, FileFormat f, Precision p, double computeError, double storage, int channels) {
+}  // namespace
+
+TableImage formatMetadata(const TableImage& src, FileFormat f, Precision p, double computeError, double storage, int channels) {
   TableImage m;
   m.width = src.width;
   m.height = src.height;
@@ -63,7 +63,7 @@ TableImage fileMeta(const TableImage& src, FileFormat f, Precision p, double com
   return m;
 }
 
-OutputFile writerFile(const std::string& path, FileFormat f, Precision p, const TableImage& meta,
+OutputFile formatWriter(const std::string& path, FileFormat f, Precision p, const TableImage& meta,
                       const SliceSource& src, const std::string& stem, bool js) {
   OutputFile o;
   o.path = path;
@@ -77,9 +77,8 @@ OutputFile writerFile(const std::string& path, FileFormat f, Precision p, const 
   return o;
 }
 
-}  // namespace
 
-std::vector<PlannedFile> tableOutputs(const TableJob& job, const TableImage& baked, std::deque<TableImage>& keep) {
+std::vector<PlannedFile> tableOutputs(const FileSpec& job, const TableImage& baked, std::deque<TableImage>& keep) {
   // the engine's layout (formats/layout.h): every file of the set holds the same arrangement
   const TableImage& img = job.layout.identity() ? baked : keep.emplace_back(applyLayout(baked, job.layout));
   const std::string stem = pathStem(job.path);
@@ -126,7 +125,7 @@ std::vector<PlannedFile> tableOutputs(const TableJob& job, const TableImage& bak
           storage = std::max(storage, std::fabs(back - v) / std::max(1.0, std::fabs(static_cast<double>(v))));
         }
       storage += std::ldexp(1.0, -24);
-      TableImage& m = keep.emplace_back(fileMeta(img, f, p, computeError, storage, nchan));
+      TableImage& m = keep.emplace_back(formatMetadata(img, f, p, computeError, storage, nchan));
       m.planes = img.planes;
       m.strings["brdf.mapping"] = "value = png / 65535 * scale + offset (scale = brdf.mapping.scale, offset = "
                                   "brdf.mapping.offset; png the 16-bit sample)";
@@ -141,62 +140,10 @@ std::vector<PlannedFile> tableOutputs(const TableJob& job, const TableImage& bak
     }
     double storage = 0;
     for (const auto& plane : img.planes) storage = std::max(storage, storageError(plane, p));
-    const TableImage& m = keep.emplace_back(fileMeta(img, f, p, computeError, storage, nchan));
+    const TableImage& m = keep.emplace_back(formatMetadata(img, f, p, computeError, storage, nchan));
     const std::vector<std::string> paths = formatPaths(stem, f);
     for (size_t k = 0; k < paths.size(); ++k)
-      files.push_back({writerFile(paths[k], f, p, m, src, stem, k == 1), m.floats.at("brdf.error")});
-  }
-  return files;
-}
-
-void addTableFiles(const TableJob& job, const TableImage& img, const TableReport& base, std::deque<TableImage>& keep,
-                   std::vector<OutputFile>& files, std::vector<TableReport>& reports) {
-  for (PlannedFile& pf : tableOutputs(job, img, keep)) {
-    TableReport r = base;
-    r.path = pf.file.path;
-    r.errorBound = pf.errorBound;
-    reports.push_back(r);
-    files.push_back(std::move(pf.file));
-  }
-}
-
-std::vector<PlannedFile> volumeFormatOutputs(KernelRunner& runner, const VolumeJob& job, const TableImage& atlasHeader,
-                                             double* seconds) {
-  std::vector<PlannedFile> files;
-  const Brdf3dSpec s = job.spec;
-  const std::string stem = pathStem(job.path);
-  TableImage base = atlasHeader;
-  base.width = s.nx;
-  base.height = s.ny;
-  base.strings.erase("brdf.atlas");
-  base.strings.erase("brdf.atlas.order");
-  const double exrStorage = job.half ? std::ldexp(1.0, -11) : std::ldexp(1.0, -24);
-  const double computeError = std::max(0.0, atlasHeader.floats.at("brdf.error") - exrStorage);
-  SliceSource src;
-  src.width = s.nx;
-  src.height = s.ny;
-  src.depth = s.nz;
-  src.channels = 3;
-  src.slicesPerBlock = std::max(1, job.cols);  // one atlas row's slices: the EXR path's slab
-  src.fill = [&runner, s, seconds](int z0, int zn, std::vector<std::vector<float>>& planes) {
-    auto t0 = std::chrono::steady_clock::now();
-    planes = runner.brdf3dSlab(s, z0, zn);
-    if (seconds) *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (planes.size() == 1) planes = {planes[0], planes[0], planes[0]};  // R=G=B tables
-  };
-  for (FileFormat f : job.formats) {
-    if (f == FileFormat::Exr) continue;  // the atlas, volumeOutput
-    if (f == FileFormat::Png16)
-      throw Error(kExitUsage, "--format png16: a 3D table has no PNG form (PNG is 2D); use ktx2 or dds (3D "
-                              "textures), exr (an atlas) or header");
-    const Precision p = job.precision;
-    TableImage meta = fileMeta(base, f, p, computeError, storageErrorBound(p), 3);
-    meta.strings["brdf.error.storage"] = fmtG(storageErrorBound(p), 3) + " (" + precisionName(p) +
-                                         " rounding, a priori: the values are streamed; relative to max(1, |v|))";
-    meta.strings["brdf.layout"] = "3D texture: x = first axis, y = second, z = third (slices z-major)";
-    const std::vector<std::string> paths = formatPaths(stem, f);
-    for (size_t k = 0; k < paths.size(); ++k)
-      files.push_back({writerFile(paths[k], f, p, meta, src, stem, k == 1), meta.floats.at("brdf.error")});
+      files.push_back({formatWriter(paths[k], f, p, m, src, stem, k == 1), m.floats.at("brdf.error")});
   }
   return files;
 }

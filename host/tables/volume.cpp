@@ -1,4 +1,8 @@
-#include "bake/volume.h"
+#include "tables/volume.h"
+
+#include <chrono>
+
+#include "formats/format_outputs.h"
 
 #include <sys/statvfs.h>
 
@@ -12,7 +16,7 @@
 #include "common/errors.h"
 #include "common/format.h"
 #include "common/models.h"
-#include "exr/table_file.h"
+#include "formats/exr/table_file.h"
 #include "formats/merl.h"
 #include "version.h"
 
@@ -292,6 +296,47 @@ std::string sampleReport(const std::string& path, const std::array<double, 3>& a
            " (brdf.interp-error), " + fmtG(img.floats.count("brdf.interp-error.interior") ? img.floats.at("brdf.interp-error.interior") : 0.0f) +
            " with both directions within 80 deg of the normal (brdf.interp-error.interior)\n";
   return out;
+}
+
+std::vector<PlannedFile> volumeFormatOutputs(KernelRunner& runner, const VolumeJob& job, const TableImage& atlasHeader,
+                                             double* seconds) {
+  std::vector<PlannedFile> files;
+  const Brdf3dSpec s = job.spec;
+  const std::string stem = pathStem(job.path);
+  TableImage base = atlasHeader;
+  base.width = s.nx;
+  base.height = s.ny;
+  base.strings.erase("brdf.atlas");
+  base.strings.erase("brdf.atlas.order");
+  const double exrStorage = job.half ? std::ldexp(1.0, -11) : std::ldexp(1.0, -24);
+  const double computeError = std::max(0.0, atlasHeader.floats.at("brdf.error") - exrStorage);
+  SliceSource src;
+  src.width = s.nx;
+  src.height = s.ny;
+  src.depth = s.nz;
+  src.channels = 3;
+  src.slicesPerBlock = std::max(1, job.cols);  // one atlas row's slices: the EXR path's slab
+  src.fill = [&runner, s, seconds](int z0, int zn, std::vector<std::vector<float>>& planes) {
+    auto t0 = std::chrono::steady_clock::now();
+    planes = runner.brdf3dSlab(s, z0, zn);
+    if (seconds) *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (planes.size() == 1) planes = {planes[0], planes[0], planes[0]};  // R=G=B tables
+  };
+  for (FileFormat f : job.formats) {
+    if (f == FileFormat::Exr) continue;  // the atlas, volumeOutput
+    if (f == FileFormat::Png16)
+      throw Error(kExitUsage, "--format png16: a 3D table has no PNG form (PNG is 2D); use ktx2 or dds (3D "
+                              "textures), exr (an atlas) or header");
+    const Precision p = job.precision;
+    TableImage meta = formatMetadata(base, f, p, computeError, storageErrorBound(p), 3);
+    meta.strings["brdf.error.storage"] = fmtG(storageErrorBound(p), 3) + " (" + precisionName(p) +
+                                         " rounding, a priori: the values are streamed; relative to max(1, |v|))";
+    meta.strings["brdf.layout"] = "3D texture: x = first axis, y = second, z = third (slices z-major)";
+    const std::vector<std::string> paths = formatPaths(stem, f);
+    for (size_t k = 0; k < paths.size(); ++k)
+      files.push_back({formatWriter(paths[k], f, p, meta, src, stem, k == 1), meta.floats.at("brdf.error")});
+  }
+  return files;
 }
 
 }  // namespace brdfbake
