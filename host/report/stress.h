@@ -8,17 +8,10 @@
 #include <vector>
 
 #include "brdfbake/request.h"
+#include "tables/family.h"
 
 namespace brdfbake {
 
-struct StressPoint {
-  std::string sweep, label;  // "alpha -> 0, ggx+smith-correlated albedo", "r=0.01 mu=0.5"
-  double value = 0, reference = 0, error = 0, bound = 0;
-  bool finite = true, withinBound = true;
-  std::string limit;  // the expected limit, "" when none
-  bool limitMet = true;
-  bool pass() const { return finite && withinBound && limitMet; }
-};
 
 std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine);
 std::string formatStress(const std::vector<StressPoint>& pts);

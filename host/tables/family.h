@@ -82,6 +82,17 @@ struct Ladder {
   std::string note;   // the reference: what it is, its time, how it agrees with the finest rung
 };
 
+// One point of `brdfbake stress`: a table's value at a stiff or extreme case against the independent
+// reference, its claimed bound, and the expected limit.
+struct StressPoint {
+  std::string sweep, label;  // "alpha -> 0, ggx+smith-correlated albedo", "r=0.01 mu=0.5"
+  double value = 0, reference = 0, error = 0, bound = 0;
+  bool finite = true, withinBound = true;
+  std::string limit;  // the expected limit, "" when none
+  bool limitMet = true;
+  bool pass() const { return finite && withinBound && limitMet; }
+};
+
 // A scene plan's line for a job.
 struct JobSummary {
   std::string table;   // "splitsum"
@@ -125,6 +136,8 @@ class TableFamily {
   // each method the baker or common practice offers, at rising budgets, against the independent
   // reference. Throws Error(kExitUsage) for requests it cannot measure.
   virtual Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind) const = 0;
+  // Its tables' values at the stiff and extreme cases (brdfbake stress), appended to `out`.
+  virtual void stress(BakeContext& /*ctx*/, std::vector<StressPoint>& /*out*/) const {}
   // Scenes: everything the job's values and header depend on, as text (content hashes).
   virtual std::string key(const Job& job) const = 0;
   virtual JobSummary summary(const Job& job) const = 0;

@@ -252,6 +252,8 @@ class Microfacet final : public TableFamily {
     return microfacetLadder(ctx, req, kind);
   }
 
+  void stress(BakeContext& ctx, std::vector<StressPoint>& out) const override { microfacetStress(ctx.runner(), out); }
+
   std::string key(const Job& job) const override { return tableJobKey(job.get<TableJob>()); }
 
   JobSummary summary(const Job& job) const override {

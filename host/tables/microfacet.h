@@ -22,6 +22,10 @@ struct BakeRequest;
 class BakeContext;
 Ladder microfacetLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind);
 
+// Its stress points (tables/microfacet_stress.cpp).
+struct StressPoint;
+void microfacetStress(KernelRunner& kr, std::vector<StressPoint>& out);
+
 // The table's file name: <table>_<ndf>_<gaf>[_<fresnel>|_<diffuse>].exr, kp_<ndf>.exr, albedo_<diffuse>.exr.
 std::string microfacetFileName(const TableJob& job);
 
