@@ -251,7 +251,7 @@ int albedoAvgCheck(KernelRunner& runner, int stride, int repeat) {
         double r, value, bound;
       };
       std::vector<Point> pts;
-      // each value's claim as the bake makes it (bake/error_model.h)
+      // each value's claim as the bake makes it (tables/error_model.h)
       auto claim = [&](const KernelTable& k, int j) { return k.err[j] + avgFloatArithmeticError(k.planes[0][j], ndf, gaf); };
       for (int j : rows) pts.push_back({(j + 0.5) / n, t.planes[0][j], claim(t, j)});
       for (int j = 0; j < 3; ++j) pts.push_back({j / 2.0, tn.planes[0][j], claim(tn, j)});

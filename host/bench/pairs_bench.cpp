@@ -41,7 +41,7 @@ int allPairs(KernelRunner& runner, int n, int stride, const std::vector<std::pai
       int bad = 0;
       for (size_t k = 0; k < texels.size(); ++k) {
         size_t x = static_cast<size_t>(texels[k].second) * n + texels[k].first;
-        // the claim as the bake makes it: the estimate + the float model (bake/error_model.h)
+        // the claim as the bake makes it: the estimate + the float model (tables/error_model.h)
         double scale = std::max({std::fabs(t.planes[0][x]), std::fabs(t.planes[1][x]), std::fabs(t.planes[2][x])});
         double b = t.err[x] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf));
         worst = std::max(worst, err[k]);

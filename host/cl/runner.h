@@ -102,7 +102,7 @@ class KernelRunner {
   std::vector<std::vector<float>> dielectricSlab(int ndf, int gaf, int nx, int ny, const std::vector<double>& etas,
                                                  bool nodeGrid, float target);
   // E_R, E_T and their bounds (absolute, each lobe's) at points (mus[k], rs[k], etas[k]): the nodes
-  // of the averages' rule (bake/dielectric_avg.h), one plane each, in the program's precision (double
+  // of the averages' rule (tables/dielectric_avg.h), one plane each, in the program's precision (double
   // where the device has fp64: unrounded, so that only the averages' stored entries round).
   std::vector<std::vector<double>> dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
                                                     const std::vector<double>& rs, const std::vector<double>& etas,

@@ -32,7 +32,7 @@
 // quadrature claim (1e-7 of 1.7e-7; the float model and the stored rounding are the rest).
 // The entry's claim here is the quadrature's, plus the one rounding of the double sum to float,
 // known exactly (|float(sum) - sum|, at most half an ulp); the float arithmetic of the nodes is
-// bake/error_model.h's avgFloatArithmeticError.
+// tables/error_model.h's avgFloatArithmeticError.
 #include <algorithm>
 #include <cmath>
 

@@ -41,7 +41,7 @@ int bytesPerChannel(Precision p);  // 4, 2, 2, 1
 double storedValue(float v, Precision p);
 // The largest storage rounding of the values, relative to max(1, |v|): what brdf.error adds for
 // storage (0 for float32, which holds the computed floats exactly; the rounding of a computation
-// to float is in the computation's own claim, bake/error_model.h).
+// to float is in the computation's own claim, tables/error_model.h).
 double storageError(const std::vector<float>& values, Precision p);
 // The a priori bound of the same, for values streamed before they are known (3D tables):
 // 2^-24, 2^-11 (float16's half ulp relative), 1/(2*65535) and 1/(2*255) plus 2^-24 for unorm.

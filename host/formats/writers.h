@@ -1,6 +1,6 @@
 // The table writers besides OpenEXR (exr/table_file.h): KTX2, DDS, 16-bit PNG and a C/C++ header
 // with a JavaScript module. Each writes a temporary (the output set renames it with the others,
-// bake/output_set.h), syncs it, and is deterministic: the same table gives the same bytes.
+// formats/output_set.h), syncs it, and is deterministic: the same table gives the same bytes.
 // Values are validated as they are packed (formats/storage.h, packTexels); an Error leaves no file.
 #pragma once
 #include <cstdint>

@@ -17,8 +17,8 @@ namespace brdfbake {
 
 namespace {
 
-// The diffuse and dielectric kernels' float arithmetic, as in the bake (host/bake/bake.cpp): once per
-// lobe; the specular lobe's is modelled per texel (bake/error_model.h).
+// The diffuse and dielectric kernels' float arithmetic, as in the bake (host/tables/table2d.cpp, host/tables/dielectric_bake.cpp): once per
+// lobe; the specular lobe's is modelled per texel (tables/error_model.h).
 constexpr double kAllowance = 1e-6;
 constexpr size_t kWorstShown = 5;
 

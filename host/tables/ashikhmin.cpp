@@ -1,5 +1,5 @@
 // The Ashikhmin-Shirley family (--table ashikhmin-shirley): the three factorised textures of the
-// anisotropic Ashikhmin-Shirley BRDF, closed forms on the host (bake/ashikhmin_textures.h), one file
+// anisotropic Ashikhmin-Shirley BRDF, closed forms on the host (tables/ashikhmin_textures.h), one file
 // each.
 #include <algorithm>
 #include <array>
@@ -99,7 +99,7 @@ class Ashikhmin final : public TableFamily {
       prev = v;
       L.rungs.push_back(ladder::rung("bilinear lookup (float texels)", std::to_string(n) + " texels per axis", secs, v, e, ref));
     }
-    L.note = "The reference: the seed's formulas as printed, in long double (bake/ashikhmin_textures.cpp); a rung's "
+    L.note = "The reference: the seed's formulas as printed, in long double (tables/ashikhmin_textures.cpp); a rung's "
              "estimate is its change from the previous rung\n";
     return L;
   }

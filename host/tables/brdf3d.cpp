@@ -1,7 +1,7 @@
 // The brdf3d family (--table brdf3d): f of one material over three angles, (theta_i, theta_o,
 // phi) or Rusinkiewicz's (theta_h, theta_d, phi_d), as an EXR atlas of z-slices, 3D KTX2/DDS
 // textures, a header, or MERL's binary layout. Baked slab by slab while the files are written, so
-// a table is never whole in memory (bake/volume.h).
+// a table is never whole in memory (tables/volume.h).
 #include <algorithm>
 #include <chrono>
 #include <cmath>

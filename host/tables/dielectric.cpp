@@ -1,6 +1,6 @@
 // The rough-dielectric family (--table dielectric, dielectric-avg; Walter et al. 2007): E_R and E_T
 // of rough glass over (mu, r, eta) as an EXR atlas of eta slices, and their averages over mu over
-// (r, eta). The computation lives in bake/dielectric_bake.h and bake/dielectric_avg.h.
+// (r, eta). The computation lives in tables/dielectric_bake.h and tables/dielectric_avg.h.
 #include <algorithm>
 #include <tuple>
 
@@ -117,7 +117,7 @@ Ladder cubeLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
     for (size_t k = 0; k < texels; ++k) {
       v[2 * k] = p[0][k];
       v[2 * k + 1] = p[1][k];
-      // + what the bake adds to each texel's bound (bake/dielectric_bake.cpp): E_R and E_T rounded to
+      // + what the bake adds to each texel's bound (tables/dielectric_bake.cpp): E_R and E_T rounded to
       // float, 2^-25 each below 1 (the sum's third rounding is not measured here), and the fp64 program's 1e-9
       e[k] = p[2][k] + 2 * std::ldexp(1.0, -25) + 1e-9;
     }
@@ -291,7 +291,7 @@ class Dielectric final : public TableFamily {
         s.reference = lobe ? a.t : a.r;
         s.finite = std::isfinite(s.value) && std::isfinite(p[2 + lobe][k]);
         s.error = std::fabs(s.value - s.reference) / std::max(1.0, std::fabs(s.reference));
-        // the node's bound (absolute, E <= 1), the fp64 program's 1e-9 (bake/dielectric_bake.cpp), and
+        // the node's bound (absolute, E <= 1), the fp64 program's 1e-9 (tables/dielectric_bake.cpp), and
         // the reference's own accuracy near its limits (1e-8, as the averages' tests allow it)
         s.bound = p[2 + lobe][k] + 1e-9;
         s.withinBound = s.finite && s.error <= s.bound + 1e-8;

@@ -44,7 +44,7 @@ std::string methodText(bool avg) {
       "axis refined adaptively; bound per texel: |K15 - G7| rescaled as QUADPACK's qk15 does, panels and inner panels, "
       "plus a floor of 1e-9 of the value, E_R's and E_T's summed";
   if (avg)
-    m += "; averages 2 int E mu dmu by an adaptive rule in mu (host/bake/dielectric_avg.cpp): panels split at the "
+    m += "; averages 2 int E mu dmu by an adaptive rule in mu (host/tables/dielectric_avg.cpp): panels split at the "
          "critical cosine sqrt(1 - eta^2), at mu = eta and at 16 alpha, smoothstep-mapped GK15, halved where the "
          "estimate is largest, nodes per (r, eta), each to 1e-7 per lobe; bound: the panels' rescaled |K15 - G7| "
          "(|K15 - G7| on panels starting within 16 alpha above 0 or above the critical cosine) + weighted node "
@@ -83,7 +83,7 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
   // per texel or entry: the quadrature's bound, and the claim (with storage rounding) it makes
   std::vector<double> quadrature, claims;
   if (job.avg) {
-    // the averages' rule (bake/dielectric_avg.h) on (r, eta) = (x, y), its nodes on the device
+    // the averages' rule (tables/dielectric_avg.h) on (r, eta) = (x, y), its nodes on the device
     std::vector<double> etas = dielectricEtas(job, 0, job.ny), rs, es;
     for (int y = 0; y < job.ny; ++y)
       for (int x = 0; x < job.nx; ++x) {

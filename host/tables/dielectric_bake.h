@@ -43,7 +43,7 @@ struct DielectricTable {
 // every value is finite (Error(kExitSoftware) otherwise: nothing is written). *seconds: kernel time.
 DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job, double* seconds);
 
-// The OutputFile that writes a computed table (the 3D one through the atlas writer of bake/volume.h).
+// The OutputFile that writes a computed table (the 3D one through the atlas writer of tables/volume.h).
 OutputFile dielectricOutput(const DielectricJob& job, const DielectricTable& table);
 
 }  // namespace brdfbake

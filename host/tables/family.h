@@ -123,7 +123,7 @@ class TableFamily {
   // The job's table in memory.
   virtual BakedTable compute(BakeContext& ctx, const Job& job) const = 0;
   // The job's files, one per format, and their report lines. Default: compute(), then the 2D
-  // formats of a TableJob (bake/format_outputs.h). Families whose tables are too large to hold
+  // formats of a TableJob (formats/format_outputs.h). Families whose tables are too large to hold
   // bake while the set writes.
   virtual void addFiles(BakeContext& ctx, const Job& job, FileSet& set) const;
   // The files of a table compute() made, which `set` keeps (its baked deque) until they land.

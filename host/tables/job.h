@@ -50,7 +50,7 @@ struct VolumeJob {
 };
 
 // A rough-dielectric table (--table dielectric: 3D over (mu, r, eta coordinate), an EXR atlas of
-// eta slices; dielectric-avg: 2D over (r, eta coordinate)). bake/dielectric_bake.h.
+// eta slices; dielectric-avg: 2D over (r, eta coordinate)). tables/dielectric_bake.h.
 struct DielectricJob {
   int ndf = 0, gaf = 0;
   bool avg = false;          // dielectric-avg

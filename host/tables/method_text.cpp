@@ -1,5 +1,5 @@
 // brdf.method: how a table was computed, generated from the constants the estimators use
-// (kernels/integrate/*.h and bake/error_model.h), so that it describes the code that ran.
+// (kernels/integrate/*.h and tables/error_model.h), so that it describes the code that ran.
 #include "tables/method_text.h"
 
 #include <string>

@@ -115,7 +115,7 @@ Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
       auto x = split ? std::array<double, 2>{t.planes[0][k], t.planes[1][k]}
                      : std::array<double, 2>{weighted ? t.planes[1][k] : t.planes[2][k], 0};
       for (size_t c = 0; c < nv; ++c) v[k * nv + c] = x[c];
-      // + the float arithmetic's share, as the bake claims it (bake/error_model.h)
+      // + the float arithmetic's share, as the bake claims it (tables/error_model.h)
       double scale = std::max({std::fabs(t.planes[0][k]), std::fabs(t.planes[1][k]), std::fabs(t.planes[2][k])});
       e[k] = t.err[k] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf, weighted));
     }

@@ -18,8 +18,8 @@ namespace brdfbake {
 
 namespace {
 
-// The diffuse kernel's float arithmetic, as the bake allows it (host/bake/bake.cpp); the hemisphere
-// estimators' and k_p's are modelled per value (bake/error_model.h).
+// The diffuse kernel's float arithmetic, as the bake allows it (host/tables/table2d.cpp); the hemisphere
+// estimators' and k_p's are modelled per value (tables/error_model.h).
 constexpr double kDiffuseAllowance = 1e-6;
 
 // The largest magnitude among a one-texel kernel result's planes: the float model's scale.

@@ -41,7 +41,7 @@ namespace brdfbake {
 // OpenEXR is called with numThreads = 0 (the global thread count is not touched).
 void writeTableExr(const std::string& path, const TableImage& img, bool half);
 
-// The first half of writeTableExr, for sets of files that land together (bake/output_set.h):
+// The first half of writeTableExr, for sets of files that land together (formats/output_set.h):
 // validates, writes `tmp` (the temporary for `path`, named in messages) and fsyncs it; no rename.
 // On failure `tmp` is removed and Error is thrown as above.
 void writeTableExrTemporary(const std::string& tmp, const std::string& path, const TableImage& img, bool half);
