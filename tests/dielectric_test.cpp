@@ -206,7 +206,7 @@ TEST(Dielectric, EnergyAndFinitenessOverStressRanges) {
   }
 }
 
-// The averages over mu (dielectric-avg's rule, bake/dielectric_avg.h) with their nodes on the device,
+// The averages over mu (dielectric-avg's rule, tables/dielectric_avg.h) with their nodes on the device,
 // against the same rule run on the host in double, nodes to 1e-9 and entries to 1.5e-9 (up to 48 panels):
 // stiff entries (the TIR kink near r = 0, mu^Lambda at mu = 0 for smith-correlated, eta near 1),
 // and for ggx two where the layer above the critical cosine made the rescaled estimates 32 and 24

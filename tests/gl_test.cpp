@@ -145,7 +145,7 @@ TEST(GlPipeline, GeneratedGlslSamples2dTablesWithinTheirPredictedError) {
     // sqrt/ (texel centres in u = sqrt(mu)): its corner texel lies at mu = alpha, on the dip of E
     // towards the corner (0.892 where the corner's limit is 1), and the lookup clamps (0, 0) onto it:
     // 0.108 off, which an estimate from the texels cannot see; the bake's probes between texels do
-    // (host/bake/interp_probe.h), and brdf.interp-error covers it on every grid.
+    // (host/tables/interp_probe.h), and brdf.interp-error covers it on every grid.
     EXPECT_LE(f.reference, predicted) << file;
   }
 }

@@ -188,7 +188,7 @@ TEST(MuAxis, EstimateTakesTheTablesOwnSpacing) {
 // < 0.2 and r >= 0.2; mu >= 0.1. Near the corner E dips where mu ~ alpha = r^2 (to 0.892 at mu =
 // alpha, the reference agrees) between edges that hold 1: a wedge narrower than a texel there,
 // which no grid resolves and the estimate from the texels does not see; the bake's probes between
-// texels measure it (host/bake/interp_probe.h), so brdf.interp-error holds in every region. The sqrt
+// texels measure it (host/tables/interp_probe.h), so brdf.interp-error holds in every region. The sqrt
 // axis spaces u = sqrt(mu) like r, so the wedge mu ~ r^2 (u ~ r) is resolved from r ~ 0.05 on; on a
 // linear axis only from r ~ 0.2.
 TEST(MuAxis, InterpolationEstimateHoldsOnBothAxes) {
@@ -234,7 +234,7 @@ TEST(MuAxis, InterpolationEstimateHoldsOnBothAxes) {
                   node ? "node" : "texel-center", worst[0], worst[1], worst[2], worst[3], est, interior);
       const std::string which = std::string(sq ? "sqrt" : "linear") + (node ? " node" : " texel-center");
       // the whole claim holds everywhere, the corner's wedge included (the bake probes it between
-      // texels: host/bake/interp_probe.h); away from grazing the estimate from the texels is the
+      // texels: host/tables/interp_probe.h); away from grazing the estimate from the texels is the
       // whole story, and the probe's figure is what the lookups near the corner really miss
       for (int reg = 0; reg < 4; ++reg) EXPECT_LE(worst[reg], err + est) << which << ", region " << reg;
       EXPECT_LE(worst[3], err + interior) << which << ": away from grazing the interior term is the whole story";
