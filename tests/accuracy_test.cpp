@@ -31,7 +31,7 @@ std::string pairName(int ndf, int gaf) { return ndfNames()[ndf] + "+" + gafNames
 
 class PairTest : public ::testing::TestWithParam<std::pair<int, int>> {};
 
-// The largest float error seen, as a fraction of the model's bound (bake/error_model.h keeps a
+// The largest float error seen, as a fraction of the model's bound (tables/error_model.h keeps a
 // margin: printed).
 double gWorstFloat = 0;
 // The rules' largest miss (true error minus the rule's own estimate, before the floor), relative to

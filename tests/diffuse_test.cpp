@@ -20,7 +20,7 @@ namespace {
 using namespace brdfbake;
 using reference::diffuseName;
 constexpr double kPi = 3.14159265358979323846;
-// float arithmetic, as the bake claims it (bake/error_model.h diffuseFloatModel)
+// float arithmetic, as the bake claims it (tables/error_model.h diffuseFloatModel)
 double allowance(int model, double value) { return floatArithmeticError(std::fabs(value), diffuseFloatModel(model)); }
 constexpr double kClaim = 1e-5;      // the largest bound the estimator may claim where E is finite
 

@@ -140,7 +140,7 @@ TEST(Sheen, LimitsClosedForms) {
 
 // The device's E against the reference, every sheen pair: an 8x8 texel-centre grid and the edge
 // texels of a 128x128 table (mu, r = 1/256 where alpha = 1.5e-5 and E reaches 22); each texel
-// within its claim as the bake makes it (the estimate + the charlie float model, bake/error_model.h)
+// within its claim as the bake makes it (the estimate + the charlie float model, tables/error_model.h)
 // and within 1e-5. The split-sum table for charlie holds E in R, G, B.
 TEST(Sheen, KernelAlbedoMatchesTheReference) {
   double worst = 0, worstBound = 0, worstRatio = 0;
@@ -230,7 +230,7 @@ TEST(Sheen, CharlieSmithKinkWhereNiIsOneHalf) {
   }
 }
 
-// The float models of charlie's tables (bake/error_model.h): the device against the same rule in
+// The float models of charlie's tables (tables/error_model.h): the device against the same rule in
 // double, every texel of a 32x32 table of each sheen pair (the budget the device's value came
 // from: the closer of the two), and every entry of the average albedo against the bake's rule over
 // mu with E in double at the same nodes.
