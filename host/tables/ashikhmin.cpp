@@ -9,6 +9,7 @@
 #include "tables/ashikhmin_textures.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "common/format.h"
 #include "tables/family.h"
 #include "tables/ladder.h"
 
@@ -102,6 +103,40 @@ class Ashikhmin final : public TableFamily {
     L.note = "The reference: the seed's formulas as printed, in long double (tables/ashikhmin_textures.cpp); a rung's "
              "estimate is its change from the previous rung\n";
     return L;
+  }
+
+  // The textures' edges, where the formulas are stiffest: Tex1's corner texel (1/(u v) = n^2), Tex2
+  // at u = 1 (its limit exp(-v^2/2)) and at the v axis' ends, Tex0 at the origin; the stored float
+  // against the formulas as printed in long double.
+  void stress(BakeContext&, std::vector<StressPoint>& out) const override {
+    const int n = 128;
+    struct Case {
+      int t, c, i, j;
+      const char* limit;
+    };
+    const Case cases[] = {{0, 0, 0, 0, "Tex0(0, 0) = 0"}, {1, 2, 0, 0, "Tex1 B(1/n, 1/n) = n^2"}, {1, 0, 0, n - 1, ""},
+                          {2, 0, n - 1, 0, "Tex2(1, v) = exp(-v^2/2)"}, {2, 0, n - 1, n / 2, "Tex2(1, 0) = 1"},
+                          {2, 0, n - 2, n - 1, ""}};
+    for (const Case& k : cases) {
+      TableImage img = ashikhminTexture(k.t, n, false);
+      const double u = ashikhminCoord(k.t, k.i, n), y = ashikhminCoord(k.t, k.j, n);
+      StressPoint p;
+      p.sweep = "ashikhmin-shirley Tex" + std::to_string(k.t) + " edges";
+      p.label = "u=" + fmt4(u) + " y=" + fmt4(y) + " channel " + std::string(1, "RGB"[k.c]);
+      p.value = img.planes[k.c][static_cast<size_t>(k.j) * n + k.i];
+      p.reference = ashikhminExact(k.t, k.c, u, y);
+      p.finite = std::isfinite(p.value);
+      p.error = ladder::rel(p.value, p.reference);
+      p.bound = img.floats.at("brdf.error");
+      p.withinBound = p.finite && p.error <= p.bound;
+      if (*k.limit) {
+        const double v = k.t == 2 ? kAsTex2Scale * (y - kAsTex2Offset) : y;
+        const double want = k.t == 0 ? 0.0 : k.t == 1 ? 1.0 / (u * y) : std::exp(-v * v / 2);
+        p.limit = k.limit;
+        p.limitMet = p.finite && ladder::rel(p.value, want) <= 1e-6;
+      }
+      out.push_back(p);
+    }
   }
 
   std::string key(const Job& job) const override { return tableJobKey(job.get<TableJob>()); }

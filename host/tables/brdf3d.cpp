@@ -273,6 +273,41 @@ class Brdf3d final : public TableFamily {
     return L;
   }
 
+  // Grazing and nearly smooth: a node grid of 3 per axis (theta 0, 45 and 90 degrees, phi 0, 90
+  // and 180) at r 0.01 and 1, the device's f at the texels where a direction grazes against f in
+  // double on the host, and reciprocity f(i, o) = f(o, i) as the limit.
+  void stress(BakeContext& ctx, std::vector<StressPoint>& out) const override {
+    for (double rough : {kMinVolumeRoughness, 1.0}) {
+      BakeRequest r = defaultRequest();
+      r.tables = {TableKind::Brdf3d};
+      r.size = 3;
+      r.nodeGrid = true;
+      r.volume.roughness = rough;
+      const VolumeJob v = planVolumes(this, r).front().get<VolumeJob>();
+      const Brdf3dSpec& s = v.spec;
+      KernelRunner& kr = ctx.runner();
+      kr.prepare(KernelNeed{KernelNeed::Brdf3d, s.ndf, s.gaf});
+      const std::vector<float> f = kr.brdf3dSlab(s, 0, s.nz).front();
+      auto at = [&](int x, int y, int z) { return static_cast<double>(f[(static_cast<size_t>(z) * s.ny + y) * s.nx + x]); };
+      const int texels[][3] = {{2, 1, 0}, {1, 2, 1}, {2, 2, 0}, {2, 2, 2}, {0, 2, 1}};
+      for (const auto& t : texels) {
+        StressPoint p;
+        p.sweep = "brdf3d grazing, r " + fmtG(rough);
+        glm::dvec3 ang = texelAngles(s, t[0], t[1], t[2]);
+        p.label = "theta_i=" + fmt4(ang.x * 180 / M_PI) + " theta_o=" + fmt4(ang.y * 180 / M_PI) + " phi=" + fmt4(ang.z * 180 / M_PI);
+        p.value = at(t[0], t[1], t[2]);
+        p.reference = hostBrdf(s, texelDirections(s, t[0], t[1], t[2]), 0);
+        p.finite = std::isfinite(p.value);
+        p.error = ladder::rel(p.value, p.reference);
+        p.bound = volumeHeader(v).floats.at("brdf.error");
+        p.withinBound = p.finite && p.error <= p.bound;
+        p.limit = "f(i, o) = f(o, i)";
+        p.limitMet = p.finite && ladder::rel(p.value, at(t[1], t[0], t[2])) <= 1e-6;
+        out.push_back(p);
+      }
+    }
+  }
+
   std::string key(const Job& job) const override {
     const VolumeJob v = job.get<VolumeJob>();
     const Brdf3dSpec& s = v.spec;
