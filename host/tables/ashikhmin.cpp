@@ -120,15 +120,10 @@ class Ashikhmin final : public TableFamily {
     for (const Case& k : cases) {
       TableImage img = ashikhminTexture(k.t, n, false);
       const double u = ashikhminCoord(k.t, k.i, n), y = ashikhminCoord(k.t, k.j, n);
-      StressPoint p;
-      p.sweep = "ashikhmin-shirley Tex" + std::to_string(k.t) + " edges";
-      p.label = "u=" + fmt4(u) + " y=" + fmt4(y) + " channel " + std::string(1, "RGB"[k.c]);
-      p.value = img.planes[k.c][static_cast<size_t>(k.j) * n + k.i];
-      p.reference = ashikhminExact(k.t, k.c, u, y);
-      p.finite = std::isfinite(p.value);
-      p.error = ladder::rel(p.value, p.reference);
-      p.bound = img.floats.at("brdf.error");
-      p.withinBound = p.finite && p.error <= p.bound;
+      StressPoint p = stressPoint("ashikhmin-shirley Tex" + std::to_string(k.t) + " edges",
+                                  "u=" + fmt4(u) + " y=" + fmt4(y) + " channel " + std::string(1, "RGB"[k.c]),
+                                  img.planes[k.c][static_cast<size_t>(k.j) * n + k.i], ashikhminExact(k.t, k.c, u, y),
+                                  img.floats.at("brdf.error"));
       if (*k.limit) {
         const double v = k.t == 2 ? kAsTex2Scale * (y - kAsTex2Offset) : y;
         const double want = k.t == 0 ? 0.0 : k.t == 1 ? 1.0 / (u * y) : std::exp(-v * v / 2);

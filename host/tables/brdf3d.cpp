@@ -291,16 +291,12 @@ class Brdf3d final : public TableFamily {
       auto at = [&](int x, int y, int z) { return static_cast<double>(f[(static_cast<size_t>(z) * s.ny + y) * s.nx + x]); };
       const int texels[][3] = {{2, 1, 0}, {1, 2, 1}, {2, 2, 0}, {2, 2, 2}, {0, 2, 1}};
       for (const auto& t : texels) {
-        StressPoint p;
-        p.sweep = "brdf3d grazing, r " + fmtG(rough);
         glm::dvec3 ang = texelAngles(s, t[0], t[1], t[2]);
-        p.label = "theta_i=" + fmt4(ang.x * 180 / M_PI) + " theta_o=" + fmt4(ang.y * 180 / M_PI) + " phi=" + fmt4(ang.z * 180 / M_PI);
-        p.value = at(t[0], t[1], t[2]);
-        p.reference = hostBrdf(s, texelDirections(s, t[0], t[1], t[2]), 0);
-        p.finite = std::isfinite(p.value);
-        p.error = ladder::rel(p.value, p.reference);
-        p.bound = volumeHeader(v).floats.at("brdf.error");
-        p.withinBound = p.finite && p.error <= p.bound;
+        StressPoint p = stressPoint("brdf3d grazing, r " + fmtG(rough),
+                                    "theta_i=" + fmt4(ang.x * 180 / M_PI) + " theta_o=" + fmt4(ang.y * 180 / M_PI) +
+                                        " phi=" + fmt4(ang.z * 180 / M_PI),
+                                    at(t[0], t[1], t[2]), hostBrdf(s, texelDirections(s, t[0], t[1], t[2]), 0),
+                                    volumeHeader(v).floats.at("brdf.error"));
         p.limit = "f(i, o) = f(o, i)";
         p.limitMet = p.finite && ladder::rel(p.value, at(t[1], t[0], t[2])) <= 1e-6;
         out.push_back(p);

@@ -284,17 +284,12 @@ class Dielectric final : public TableFamily {
       const bool nearOne = std::fabs(etas[k] - 1) < 1e-3;
       const reference::DielectricAlbedo eta1 = reference::dielectricAlbedoEta1(ndf, gaf, mus[k], rs[k]);
       for (int lobe = 0; lobe < 2; ++lobe) {
-        StressPoint s;
-        s.sweep = cases[k].sweep;
-        s.label = std::string(lobe ? "E_T" : "E_R") + " mu=" + fmt4(mus[k]) + " r=" + fmt4(rs[k]) + " eta=" + fmtG(etas[k]);
-        s.value = lobe ? p[1][k] : p[0][k];
-        s.reference = lobe ? a.t : a.r;
-        s.finite = std::isfinite(s.value) && std::isfinite(p[2 + lobe][k]);
-        s.error = std::fabs(s.value - s.reference) / std::max(1.0, std::fabs(s.reference));
         // the node's bound (absolute, E <= 1), the fp64 program's 1e-9 (tables/dielectric_bake.cpp), and
         // the reference's own accuracy near its limits (1e-8, as the averages' tests allow it)
-        s.bound = p[2 + lobe][k] + 1e-9;
-        s.withinBound = s.finite && s.error <= s.bound + 1e-8;
+        StressPoint s = stressPoint(cases[k].sweep,
+                                    std::string(lobe ? "E_T" : "E_R") + " mu=" + fmt4(mus[k]) + " r=" + fmt4(rs[k]) +
+                                        " eta=" + fmtG(etas[k]),
+                                    lobe ? p[1][k] : p[0][k], lobe ? a.t : a.r, p[2 + lobe][k] + 1e-9, 1e-8);
         if (nearOne) {
           s.limit = lobe ? "E_T -> (1 + L) G_T(L, L) as eta -> 1" : "E_R -> 0 as eta -> 1";
           s.limitMet = s.finite && std::fabs(s.value - (lobe ? eta1.t : 0.0)) <= 1e-3;

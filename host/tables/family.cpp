@@ -1,6 +1,9 @@
 // What the families share: the bake context, the 2D tables' files and report lines, their scene keys.
 #include "tables/family.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "formats/format_outputs.h"
 #include "cl/device.h"
 
@@ -11,6 +14,20 @@ BakeContext::~BakeContext() = default;
 KernelRunner& BakeContext::runner() {
   if (!runner_) runner_ = std::make_unique<KernelRunner>(selectDevice(device_).device);
   return *runner_;
+}
+
+StressPoint stressPoint(const std::string& sweep, const std::string& label, double value, double reference,
+                        double bound, double slack) {
+  StressPoint p;
+  p.sweep = sweep;
+  p.label = label;
+  p.value = value;
+  p.reference = reference;
+  p.bound = bound;
+  p.finite = std::isfinite(value) && std::isfinite(bound);
+  p.error = std::fabs(value - reference) / std::max(1.0, std::fabs(reference));
+  p.withinBound = p.finite && p.error <= bound + slack;
+  return p;
 }
 
 TableReport reportOf(const TableJob& job) {

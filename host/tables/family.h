@@ -93,6 +93,11 @@ struct StressPoint {
   bool pass() const { return finite && withinBound && limitMet; }
 };
 
+// A stress point from a value and its reference: finite, its error relative to max(1, |reference|),
+// within `bound` (+ `slack`, the reference's own accuracy). The caller adds the limit, if any.
+StressPoint stressPoint(const std::string& sweep, const std::string& label, double value, double reference,
+                        double bound, double slack = 0);
+
 // A scene plan's line for a job.
 struct JobSummary {
   std::string table;   // "splitsum"

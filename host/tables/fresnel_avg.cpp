@@ -121,16 +121,11 @@ class FresnelAvg final : public TableFamily {
     // (eta just below 1 is left out: the reference needs minutes there, 245 s at 0.9999, its
     // critical cosine at 0.014)
     for (double eta : {1.0001, 1.0, 0.2, 0.01, 100.0}) {
-      StressPoint s;
-      s.sweep = "fresnel-avg dielectric";
-      s.label = "eta=" + fmtG(eta);
       double e = 0;
-      s.value = static_cast<float>(fresnelAverage(FRESNEL_DIELECTRIC, eta, 0, &e));
-      s.reference = reference::fresnelAvg(reference::FresnelSpec{FRESNEL_DIELECTRIC, eta, 0});
-      s.finite = std::isfinite(s.value);
-      s.error = ladder::rel(s.value, s.reference);
-      s.bound = e + floatArithmeticError(std::fabs(s.value), kRoundToFloat);
-      s.withinBound = s.finite && s.error <= s.bound + 1e-12;
+      const double v = static_cast<float>(fresnelAverage(FRESNEL_DIELECTRIC, eta, 0, &e));
+      StressPoint s = stressPoint("fresnel-avg dielectric", "eta=" + fmtG(eta), v,
+                                  reference::fresnelAvg(reference::FresnelSpec{FRESNEL_DIELECTRIC, eta, 0}),
+                                  e + floatArithmeticError(std::fabs(v), kRoundToFloat), 1e-12);
       if (std::fabs(eta - 1) < 1e-3) {
         s.limit = "F_avg -> 0 as eta -> 1";
         // F_avg grows like |eta - 1| next to 1 (3.3e-5 at 1.0001), and is 0 at 1 but for rounding
