@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "bake/bake.h"
+#include "brdfbake/brdfbake.h"
 #include "formats/output_set.h"
 #include "tables/volume.h"
 #include "shader/shader_gen.h"
@@ -96,8 +97,7 @@ int main(int argc, char** argv) {
       case Command::Kind::Bake: {
         // before the first OpenCL call: PoCL reads its cache location when the platform starts
         if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);
-        Plan plan = makePlan(cmd.bake);
-        std::cout << formatReport(runPlan(plan));
+        std::cout << formatReport(bakeToDirectory(cmd.bake));
         return kExitOk;
       }
     }

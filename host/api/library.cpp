@@ -85,11 +85,7 @@ void write(const std::vector<Table>& tables, const std::string& dir) {
   commitOutputs(outDir, set.files);
 }
 
-std::vector<std::string> bakeToDirectory(const BakeRequest& req) {
-  std::vector<std::string> paths;
-  for (const TableReport& r : runPlan(makePlan(req))) paths.push_back(r.path);
-  return paths;
-}
+std::vector<TableReport> bakeToDirectory(const BakeRequest& req) { return runPlan(makePlan(req)); }
 
 Table readTable(const std::string& path) {
   TableFile f = readTableFile(path);

@@ -18,18 +18,11 @@
 #include "cl/runner.h"
 #include "formats/exr/table_file.h"
 #include "tables/job.h"
+#include "brdfbake/report.h"
 #include "brdfbake/request.h"
 
 namespace brdfbake {
 
-// One line of the bake's report: a file written, its table, size and claimed error.
-struct TableReport {
-  std::string path;
-  std::string table, ndf, gaf;
-  int width = 0, height = 0, depth = 1;
-  double errorBound = 0;  // brdf.error
-  double seconds = 0;     // kernel time for this table
-};
 
 // A table computed in memory.
 struct BakedTable {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "brdfbake/error.h"
+#include "brdfbake/report.h"
 #include "brdfbake/request.h"
 
 namespace brdfbake {
@@ -49,8 +50,8 @@ std::vector<Table> bake(const BakeRequest& req);
 void write(const std::vector<Table>& tables, const std::string& dir = "");
 
 // bake() and write() in one step, as `brdfbake bake` does: 3D tables are baked slab by slab while
-// they are written, never whole in memory. Returns the files written.
-std::vector<std::string> bakeToDirectory(const BakeRequest& req);
+// they are written, never whole in memory. Returns one report per file written.
+std::vector<TableReport> bakeToDirectory(const BakeRequest& req);
 
 // Reads a table file brdfbake wrote (.exr, .ktx2, .dds, .png, .h, .mjs).
 Table readTable(const std::string& path);
