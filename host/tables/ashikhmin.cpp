@@ -95,8 +95,7 @@ class Ashikhmin final : public TableFamily {
           }
       }
       secs = ladder::now() - secs;
-      std::vector<double> e(v.size());
-      for (size_t k = 0; k < v.size(); ++k) e[k] = prev.empty() ? 0 : ladder::rel(v[k], prev[k]);
+      const std::vector<double> e = ladder::changeFrom(prev, v);
       prev = v;
       L.rungs.push_back(ladder::rung("bilinear lookup (float texels)", std::to_string(n) + " texels per axis", secs, v, e, ref));
     }

@@ -100,12 +100,12 @@ class FresnelAvg final : public TableFamily {
     std::vector<double> prev;
     for (int level : req.levels) {
       const int panels = 1 << (2 * level);
-      std::vector<double> v(n), e(n);
+      std::vector<double> v(n);
       double secs = ladder::best3([&] {
         for (int i = 0; i < n; ++i)
           v[i] = ladder::gaussLegendre([&](double mu) { return 2 * mu * brdf64::fresnel_F(model, eta[i], 0, mu); }, 0, 1, panels);
       });
-      for (int i = 0; i < n; ++i) e[i] = prev.empty() ? 0 : ladder::rel(v[i], prev[i]);
+      const std::vector<double> e = ladder::changeFrom(prev, v);
       prev = v;
       L.rungs.push_back(ladder::rung("Gauss-Legendre in mu (host, double)", std::to_string(panels) + " x 8 nodes", secs, v, e, ref));
     }

@@ -46,6 +46,13 @@ Rung rung(const std::string& method, const std::string& budget, double seconds, 
   return r;
 }
 
+std::vector<double> changeFrom(const std::vector<double>& prev, const std::vector<double>& v) {
+  std::vector<double> e(v.size(), 0.0);
+  if (prev.size() == v.size())
+    for (size_t k = 0; k < v.size(); ++k) e[k] = rel(v[k], prev[k]);
+  return e;
+}
+
 int pointsPerAxis(const BakeRequest& req, int dflt, int lo, int hi, const std::string& what) {
   int n = req.size ? *req.size : dflt;
   if (n < lo || n > hi)

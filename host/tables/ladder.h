@@ -45,6 +45,10 @@ Rung rung(const std::string& method, const std::string& budget, double seconds, 
 // The texel-centre coordinate of i < n on [0, 1], as a float (what the device sees).
 inline double centre(int i, int n) { return static_cast<float>((i + 0.5) / n); }
 
+// A fixed rule's own estimate: its change from the previous rung, relative to max(1, |v|), per
+// value (0 on the first rung, which has none).
+std::vector<double> changeFrom(const std::vector<double>& prev, const std::vector<double>& v);
+
 // The points' count, --size or `dflt`, checked against [lo, hi] (Error(kExitUsage) naming --size).
 int pointsPerAxis(const BakeRequest& req, int dflt, int lo, int hi, const std::string& what);
 

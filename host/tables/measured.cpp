@@ -88,8 +88,8 @@ class Measured final : public TableFamily {
         double secs = ladder::now();
         std::array<double, 3> v = directAlbedoAvgRule(f, nodes, 2);
         secs = ladder::now() - secs;
-        std::vector<double> vals(v.begin(), v.end()), e(3);
-        for (int c = 0; c < 3; ++c) e[c] = prev.empty() ? 0 : ladder::rel(vals[c], prev[c]);
+        std::vector<double> vals(v.begin(), v.end());
+        const std::vector<double> e = ladder::changeFrom(prev, vals);
         prev = vals;
         L.rungs.push_back(ladder::rung("direct rule (host, double)", std::to_string(nodes) + " nodes per piece", secs, vals, e, ref));
       }
@@ -110,14 +110,14 @@ class Measured final : public TableFamily {
     std::vector<double> prev;
     for (int level : req.levels) {
       const int k = kMerlLadder[std::min<size_t>(static_cast<size_t>(level) * 2, kMerlLadder.size() - 1)];
-      std::vector<double> v(ref.size()), e(ref.size());
+      std::vector<double> v(ref.size());
       double secs = ladder::now();
       ladder::onTwoThreads(static_cast<size_t>(n), [&](size_t i) {
         std::array<double, 3> x = hSpaceIntegral(f, ladder::centre(static_cast<int>(i), n), HSpaceRule{k, k - 1});
         for (int c = 0; c < 3; ++c) v[3 * i + c] = x[c];
       });
       secs = ladder::now() - secs;
-      for (size_t j = 0; j < v.size(); ++j) e[j] = prev.empty() ? 0 : ladder::rel(v[j], prev[j]);
+      const std::vector<double> e = ladder::changeFrom(prev, v);
       prev = v;
       L.rungs.push_back(ladder::rung("h-space rule (host, double)", "(" + std::to_string(k) + ", " + std::to_string(k - 1) + ")",
                                      secs, v, e, ref));

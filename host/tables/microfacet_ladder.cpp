@@ -248,7 +248,7 @@ Ladder kpLadder(BakeContext& ctx, const BakeRequest& req, int ndf) {
   std::vector<double> prev;
   for (int level : req.levels) {
     const int panels = 1 << (2 * level);
-    std::vector<double> v(n), e(n);
+    std::vector<double> v(n);
     double secs = best3([&] {
       for (int j = 0; j < n; ++j) {
         brdf64::BrdfParams p{};
@@ -262,7 +262,7 @@ Ladder kpLadder(BakeContext& ctx, const BakeRequest& req, int ndf) {
             0, M_PI / 2, panels);
       }
     });
-    for (int j = 0; j < n; ++j) e[j] = prev.empty() ? 0 : ladder::rel(v[j], prev[j]);
+    const std::vector<double> e = ladder::changeFrom(prev, v);
     prev = v;
     L.rungs.push_back(ladder::rung("Gauss-Legendre in theta (host, double)", std::to_string(panels) + " x 8 nodes", secs, v,
                                    e, ref));
