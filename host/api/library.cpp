@@ -48,14 +48,8 @@ Table toTable(const Job& job, BakedTable baked) {
 std::vector<Table> bake(const BakeRequest& req) {
   Plan plan = makePlan(req);
   BakeContext ctx(plan.device);
-  std::map<const TableFamily*, std::vector<const Job*>> byFamily;
-  for (const Job& j : plan.jobs) byFamily[j.family].push_back(&j);
-  for (const TableFamily* f : families())
-    if (byFamily.count(f)) f->preflight(ctx, "", byFamily[f]);
-  std::vector<KernelNeed> needs;
-  for (const Job& j : plan.jobs)
-    for (const KernelNeed& k : j.family->kernels(j)) needs.push_back(k);
-  if (!needs.empty()) ctx.runner().prepareAll(needs);
+  preflight(ctx, plan, "");
+  buildKernels(ctx, plan);
   std::vector<Table> out;
   for (const Job& j : plan.jobs) {
     out.push_back(toTable(j, j.family->compute(ctx, j)));

@@ -7,27 +7,36 @@
 
 namespace brdfbake {
 
+void preflight(BakeContext& ctx, const Plan& plan, const std::string& outDir) {
+  std::map<const TableFamily*, std::vector<const Job*>> byFamily;
+  for (const Job& j : plan.jobs) byFamily[j.family].push_back(&j);
+  for (const TableFamily* f : families())
+    if (byFamily.count(f)) f->preflight(ctx, outDir, byFamily[f]);
+}
+
+bool usesDevice(const Plan& plan) {
+  for (const Job& j : plan.jobs)
+    if (j.family->usesDevice(j)) return true;
+  return false;
+}
+
+void buildKernels(BakeContext& ctx, const Plan& plan) {
+  std::vector<KernelNeed> needs;
+  for (const Job& j : plan.jobs)
+    for (const KernelNeed& k : j.family->kernels(j)) needs.push_back(k);
+  if (!needs.empty()) ctx.runner().prepareAll(needs);  // on parallel contexts (cl/runner.h)
+}
+
 std::vector<TableReport> runPlan(const Plan& plan) {
   // Nothing is created before every table is computed and checked: a bad -o, a missing device
   // or an interrupt leaves the file system as it was.
   checkOutputDir(plan.outDir);
   BakeContext ctx(plan.device);
-  // each family's checks over its jobs (free space, inputs read once), in registry order
-  std::map<const TableFamily*, std::vector<const Job*>> byFamily;
-  for (const Job& j : plan.jobs) byFamily[j.family].push_back(&j);
-  for (const TableFamily* f : families())
-    if (byFamily.count(f)) f->preflight(ctx, plan.outDir, byFamily[f]);
-  // every kernel the plan needs, built at once on parallel contexts (on the device only when a
-  // job runs there)
-  std::vector<KernelNeed> needs;
-  bool device = false;
-  for (const Job& j : plan.jobs) {
-    device = device || j.family->usesDevice(j);
-    for (const KernelNeed& k : j.family->kernels(j)) needs.push_back(k);
-  }
-  if (device) ctx.runner();
+  preflight(ctx, plan, plan.outDir);
+  const bool device = usesDevice(plan);
+  if (device) ctx.runner();  // a missing device is reported before the interrupt guard
   guardInterrupts("abandoned " + std::to_string(plan.jobs.size()) + " table(s) for " + plan.outDir + "/");
-  if (device) ctx.runner().prepareAll(needs);
+  if (device) buildKernels(ctx, plan);
   FileSet set;
   set.extraStrings = plan.extraStrings;
   for (const Job& j : plan.jobs) j.family->addFiles(ctx, j, set);

@@ -10,6 +10,13 @@
 
 namespace brdfbake {
 
+// Before the first table: each family's checks over its jobs (free space, inputs read once), in
+// registry order, with `outDir` where the files will land ("" when none are written).
+void preflight(BakeContext& ctx, const Plan& plan, const std::string& outDir);
+// Whether any job runs on the device, and every kernel the jobs need, built together.
+bool usesDevice(const Plan& plan);
+void buildKernels(BakeContext& ctx, const Plan& plan);
+
 // Runs the plan and writes the files. Returns one report per file.
 std::vector<TableReport> runPlan(const Plan& plan);
 
