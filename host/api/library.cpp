@@ -2,14 +2,11 @@
 // computes it in memory; write() hands the tables back to their families for their files.
 #include "brdfbake/brdfbake.h"
 
-#include <cstdio>
-
 #include "bake/bake.h"
 #include "formats/output_set.h"
 #include "common/format.h"
 #include "formats/readers/table_reader.h"
 #include "plan/plan.h"
-#include "tables/registry.h"
 
 namespace brdfbake {
 

@@ -1,10 +1,8 @@
 #include "report/convergence.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <thread>
 
 #include "common/errors.h"
 #include "common/format.h"

@@ -242,7 +242,7 @@ class Dielectric final : public TableFamily {
     // dielectricOutput's writer reads the table through a pointer: `baked` lives in the set
     auto table = std::make_shared<DielectricTable>();
     table->image = baked.image;
-    table->cube = baked.volume;
+    table->cube = std::move(baked.volume);  // the set keeps `baked` only for its files; the writer reads `table`
     OutputFile f = dielectricOutput(d, *table);
     auto write = f.write;
     if (write) f.write = [write, table](const std::string& tmp) { write(tmp); };
