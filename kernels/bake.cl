@@ -1,15 +1,18 @@
 /* bake.cl: one texel per work-item, no barriers. The host prepends a prelude that fixes the model
  * pair, e.g. "#define BRDF_NDF 0\n#define BRDF_GAF 10\n", so every model switch folds at compile
  * time, or (one program for many pairs, host/cl/runner.h) "#define BRDF_NDF sel_ndf" and the same
- * for the GAF, so that the pair is the kernels' last two arguments, then compat.h, the pointwise
- * headers twice (one value, then lanes) and the integrators: kernelSource() in host/cl/runner.cpp.
- * The pair arguments are there in both forms (a specialised program ignores them). */
+ * for the GAF, so that the pair is the kernels' last two arguments, then this file with what it
+ * includes (host/cl/programs.cpp). The pair arguments are there in both forms (a specialised
+ * program ignores them). */
 #ifndef BRDF_NDF
 #error "BRDF_NDF must be defined by the prelude"
 #endif
 #ifndef BRDF_GAF
 #error "BRDF_GAF must be defined by the prelude"
 #endif
+#include "integrate/hemisphere_texel.h"
+#include "integrate/albedo_avg.h"
+#include "integrate/diffuse_albedo.h"
 
 /* Texels whose quadrature bound exceeds this are recomputed with the refined budget: the default
  * accuracy is 1e-5 including the 1e-6 float allowance and storage rounding (host/bake). */

@@ -10,10 +10,11 @@
  * Precision. The host tabulates each axis's cosines and sines in double (host/common/brdf3d_grid.cpp
  * axisTrig: from the exact grid fraction and its complement formed from integers, so that cos theta
  * near grazing keeps full relative precision); the kernel forms the directions from them, no trig
- * of its own. Its program is its own (host/cl/runner.cpp volumeKernelSource):
- * compat.h, the models and this file, with `real` = double where the device has cl_khr_fp64 (float
- * otherwise); the texel is rounded to float once, at the end.
+ * of its own. Its program is its own (host/cl/programs.cpp): this file and the models it
+ * includes, with `real` = double where the device has cl_khr_fp64 (float otherwise); the texel is
+ * rounded to float once, at the end.
  */
+#include "brdf/brdf.h"
 typedef real geo_t;
 
 /* |i + o|^2 below this: i = -o up to rounding (both directions on the horizon, opposite) */

@@ -1,8 +1,8 @@
 /* dielectric.cl: the rough dielectric's albedos (kernels/integrate/dielectric.h), one texel or one
- * quadrature node per work-item, no barriers. Its program is its own (host/cl/runner.cpp
- * dielectricKernelSource): compat.h, the models, quadrature.h, btdf.h, the estimator, albedo_avg.h
- * (the mu rule) and this file, with `real` = double where the device has cl_khr_fp64.
+ * quadrature node per work-item, no barriers. Its program is its own (host/cl/programs.cpp): this
+ * file and what it includes, with `real` = double where the device has cl_khr_fp64.
  * The eta of each slice comes from the host (computed in double from the axis coordinate). */
+#include "integrate/dielectric.h"
 
 /* Coordinate of sample i of n on [0, 1]: texel centres (i + 0.5)/n, or nodes i/(n - 1). */
 static inline real diel_grid(int i, int n, int node_grid) {

@@ -143,6 +143,10 @@ int main(int argc, char** argv) {
               " * gaussian (docs/MODELS.md \"Exact Smith Lambda\"): z = c/(c + alpha s) on %d nodes, y = alpha^2\n"
               " * on %d nodes, both uniform in [0, 1], row-major tab[j * SMITH_NZ + i] (j: y, i: z). */\n",
               NZ, NY);
+  std::printf("/* Once per pass (compat.h \"Passes\"). */\n"
+              "#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_SMITH_TABLES_H_2) : !defined(BRDF_SMITH_TABLES_H)\n"
+              "#ifdef BRDF_SECOND_PASS\n#define BRDF_SMITH_TABLES_H_2\n#else\n#define BRDF_SMITH_TABLES_H\n#endif\n"
+              "#include \"brdf/compat.h\"\n");
   std::printf("#ifndef BRDF_LANE_PASS\n#define SMITH_NZ %d\n#define SMITH_NY %d\n", NZ, NY);
   for (int m = 0; m < 2; ++m) {
     int model = 2 + m;
@@ -174,4 +178,5 @@ int main(int argc, char** argv) {
                  names[m], worstG, worstL);
   }
   std::printf("#endif /* !BRDF_LANE_PASS */\n");
+  std::printf("#endif /* BRDF_SMITH_TABLES_H */\n");
 }

@@ -7,7 +7,7 @@
 #include <mutex>
 #include <thread>
 
-#include "cl/embedded_kernels.h"
+#include "cl/programs.h"
 #include "cl/runner_internal.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
@@ -15,74 +15,6 @@
 namespace brdfbake {
 
 using namespace runner_detail;
-
-namespace {
-const char* embedded(const std::string& path) {
-  for (const auto& f : kEmbeddedKernelSources)
-    if (path == f.path) return f.text;
-  throw Error(kExitSoftware, "internal: OpenCL source " + path + " is not embedded (CMakeLists.txt)");
-}
-void append(std::string& src, const std::string& path) {
-  src += "#line 1 \"" + path + "\"\n";
-  src += embedded(path);
-  src += "\n";
-}
-
-}  // namespace
-
-// The program for one model pair: the prelude fixing the pair, then the shared code in dependency
-// order. The pointwise functions (models and integrand) are compiled twice, for one value and for
-// a lane vector of values (kernels/brdf/compat.h explains the lanes).
-// The 3D table's program: only the models and kernels/brdf3d.cl, in double where the device has it
-// (compat.h BRDF_DEVICE_DOUBLE), without the integrators: it builds in a fraction of the time.
-std::string volumeKernelSource(int ndf, int gaf) {
-  std::string src = "/* brdfbake prelude (3D tables): " + ndfNames()[ndf] + " + " + gafNames()[gaf] + " */\n";
-  src += "#define BRDF_NDF " + std::to_string(ndf) + "\n#define BRDF_GAF " + std::to_string(gaf) +
-         "\n#define BRDF_DEVICE_DOUBLE 1\n";
-  for (const char* f : {"kernels/brdf/compat.h", "kernels/brdf/smith_tables.h", "kernels/brdf/ndf.h", "kernels/brdf/gaf.h",
-                        "kernels/brdf/fresnel.h", "kernels/brdf/diffuse.h", "kernels/brdf/brdf.h", "kernels/brdf3d.cl"})
-    append(src, f);
-  return src;
-}
-
-// The rough dielectric's program: the models, the rule tables, btdf.h and its estimator, in double
-// where the device has it (like the 3D tables'), one value per work-item, no lanes.
-std::string dielectricKernelSource(int ndf, int gaf) {
-  std::string src = "/* brdfbake prelude (rough dielectric): " + ndfNames()[ndf] + " + " + gafNames()[gaf] + " */\n";
-  src += "#define BRDF_NDF " + std::to_string(ndf) + "\n#define BRDF_GAF " + std::to_string(gaf) +
-         "\n#define BRDF_DEVICE_DOUBLE 1\n";
-  for (const char* f : {"kernels/brdf/compat.h", "kernels/brdf/smith_tables.h", "kernels/brdf/ndf.h", "kernels/brdf/gaf.h",
-                        "kernels/brdf/fresnel.h", "kernels/brdf/diffuse.h", "kernels/brdf/brdf.h",
-                        "kernels/integrate/quadrature.h", "kernels/integrate/albedo_avg.h", "kernels/brdf/btdf.h",
-                        "kernels/integrate/dielectric.h", "kernels/dielectric.cl"})
-    append(src, f);
-  return src;
-}
-
-std::string kernelSource(int ndf, int gaf) {
-  if (gaf >= kDielectricProgram) return dielectricKernelSource(ndf, gaf - kDielectricProgram);
-  if (gaf >= kVolumeProgram) return volumeKernelSource(ndf, gaf - kVolumeProgram);
-  std::string src;
-  if (ndf == kSharedProgram) {  // the pair is the kernels' sel_ndf, sel_gaf arguments (kernels/bake.cl)
-    src = "/* brdfbake prelude: every pair */\n#define BRDF_NDF sel_ndf\n#define BRDF_GAF sel_gaf\n";
-  } else {
-    src = "/* brdfbake prelude: " + ndfNames()[ndf] + " + " + gafNames()[gaf] + " */\n";
-    src += "#define BRDF_NDF " + std::to_string(ndf) + "\n#define BRDF_GAF " + std::to_string(gaf) + "\n";
-  }
-  const char* pointwise[] = {"kernels/brdf/smith_tables.h", "kernels/brdf/ndf.h", "kernels/brdf/gaf.h", "kernels/brdf/fresnel.h",
-                             "kernels/brdf/diffuse.h", "kernels/integrate/integrand.h"};
-  append(src, "kernels/brdf/compat.h");
-  for (const char* f : pointwise) append(src, f);
-  src += "#define BRDF_LANE_PASS 1\n#undef real\n#define real lane_t\n";
-  for (const char* f : pointwise) append(src, f);
-  src += "#undef BRDF_LANE_PASS\n#undef real\n#define real float\n";
-  for (const char* f : {"kernels/brdf/brdf.h", "kernels/integrate/quadrature.h", "kernels/integrate/azimuth.h",
-                        "kernels/integrate/hemisphere.h", "kernels/integrate/hemisphere_texel.h",
-                        "kernels/integrate/sheen.h", "kernels/integrate/albedo_avg.h",
-                        "kernels/integrate/diffuse_albedo.h", "kernels/bake.cl"})
-    append(src, f);
-  return src;
-}
 
 // -w: without AVX-512, Clang warns about every float16 argument ("changes the ABI"), harmless
 // here (PoCL compiles the kernel and its library for one CPU) but enough to bury a real error
@@ -146,7 +78,7 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
 }  // namespace
 
 void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* done) {
-  cl::Program prog(slot.context, kernelSource(w.ndf, w.gaf));
+  cl::Program prog(slot.context, programSource(w.key));
   cl_int rc = CL_SUCCESS;
   std::string log;
   try {
@@ -159,13 +91,8 @@ void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* don
   }
   if (rc != CL_SUCCESS) {
     if (log.empty()) log = prog.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
-    throw Error(kExitSoftware, "OpenCL kernel build failed for " +
-                                   (w.ndf == kSharedProgram ? std::string("every pair (the shared program)")
-                                                            : ndfNames()[w.ndf] + " + " + gafNames()[w.gaf % kVolumeProgram]) +
-                                   (w.gaf >= kDielectricProgram ? " (rough dielectric)"
-                                    : w.gaf >= kVolumeProgram   ? " (3D tables)"
-                                                                : "") +
-                                   " (" + std::to_string(rc) + "); build log:\n" + log);
+    throw Error(kExitSoftware, "OpenCL kernel build failed for " + programName(w.key) + " (" + std::to_string(rc) +
+                                   "); build log:\n" + log);
   }
   done->slot = slotIndex;
   done->program = prog;
@@ -187,12 +114,12 @@ void KernelRunner::compileKernel(Compiled& c, const std::string& name) {
   c.kernels.push_back(name);
 }
 
-// The pair's program: the copy that has `kernel` compiled, else the first built; for the
-// integrators (gaf < kVolumeProgram) the shared program when the pair has none of its own.
-KernelRunner::Compiled* KernelRunner::find(int ndf, int gaf, const char* kernel) {
-  auto it = programs_.find({ndf, gaf});
-  if ((it == programs_.end() || it->second.empty()) && gaf < kVolumeProgram)
-    it = programs_.find({kSharedProgram, kSharedProgram});
+// The program's copy that has `kernel` compiled, else the first built; for one pair's integrators
+// the shared program when the pair has none of its own.
+KernelRunner::Compiled* KernelRunner::find(const ProgramKey& key, const char* kernel) {
+  auto it = programs_.find(key);
+  if ((it == programs_.end() || it->second.empty()) && key.kind == ProgramKey::Integrators)
+    it = programs_.find(ProgramKey::shared());
   if (it == programs_.end() || it->second.empty()) return nullptr;
   if (kernel)
     for (auto& c : it->second)
@@ -200,20 +127,24 @@ KernelRunner::Compiled* KernelRunner::find(int ndf, int gaf, const char* kernel)
   return it->second.front().get();
 }
 
-// k_p runs in any built program of its NDF (the lowest GAF, for a fixed choice), else in the
-// shared program, else in the NDF + none program.
+namespace {
+ProgramKey integrators(int ndf, int gaf) { return {ProgramKey::Integrators, ndf, gaf}; }
+}  // namespace
+
+// k_p runs in any built integrators program of its NDF (the lowest GAF, for a fixed choice), else
+// in the shared program, else in the NDF + none program.
 KernelRunner::Compiled* KernelRunner::kpProgram(int ndf) {
-  auto it = programs_.lower_bound({ndf, 0});
-  if (it != programs_.end() && it->first.first == ndf && it->first.second < kVolumeProgram)
-    return find(ndf, it->first.second, kKp);
-  if (programs_.count({kSharedProgram, kSharedProgram})) return find(kSharedProgram, kSharedProgram, kKp);
+  auto it = programs_.lower_bound(integrators(ndf, 0));
+  if (it != programs_.end() && it->first.kind == ProgramKey::Integrators && it->first.ndf == ndf)
+    return find(it->first, kKp);
+  if (programs_.count(ProgramKey::shared())) return find(ProgramKey::shared(), kKp);
   return nullptr;
 }
 
 // The integrators' programs built for single pairs so far.
 int KernelRunner::pairPrograms() const {
   int n = 0;
-  for (const auto& p : programs_) n += p.first.first >= 0 && p.first.second < kVolumeProgram;
+  for (const auto& p : programs_) n += p.first.kind == ProgramKey::Integrators && !p.first.isShared();
   return n;
 }
 
@@ -222,52 +153,55 @@ int KernelRunner::pairPrograms() const {
 bool KernelRunner::shareFor(int newPairs) const {
   if (sharing_ == Sharing::Shared) return true;
   if (sharing_ == Sharing::PerPair) return false;
-  return programs_.count({kSharedProgram, kSharedProgram}) || pairPrograms() + newPairs >= kSharedFrom;
+  return programs_.count(ProgramKey::shared()) || pairPrograms() + newPairs >= kSharedFrom;
 }
 
-KernelRunner::Compiled& KernelRunner::compiled(int ndf, int gaf, const char* kernel) {
-  if (!find(ndf, gaf)) {
-    if (gaf < kVolumeProgram && shareFor(1)) buildHere(kSharedProgram, kSharedProgram);
-    else buildHere(ndf, gaf);
+bool KernelRunner::sharedProgramBuilt() const { return programs_.count(ProgramKey::shared()) > 0; }
+
+KernelRunner::Compiled& KernelRunner::compiled(const ProgramKey& key, const char* kernel) {
+  if (!find(key)) {
+    if (key.kind == ProgramKey::Integrators && shareFor(1)) buildHere(ProgramKey::shared());
+    else buildHere(key);
   }
-  Compiled& c = *find(ndf, gaf, kernel);
+  Compiled& c = *find(key, kernel);
   compileKernel(c, kernel);
   return c;
 }
 
 void KernelRunner::prepare(int ndf, int gaf) {
-  if (planned_ || find(ndf, gaf)) return;
-  if (shareFor(1)) buildHere(kSharedProgram, kSharedProgram);
-  else buildHere(ndf, gaf);
+  if (planned_ || find(integrators(ndf, gaf))) return;
+  buildHere(shareFor(1) ? ProgramKey::shared() : integrators(ndf, gaf));
 }
 
-// The pair's program, built in the main context on this thread.
-void KernelRunner::buildHere(int ndf, int gaf) {
+// The program, built in the main context on this thread.
+void KernelRunner::buildHere(const ProgramKey& key) {
   auto fresh = std::make_unique<Compiled>();
-  build(*slots_[0], 0, Work{ndf, gaf, {}}, fresh.get());
-  programs_[{ndf, gaf}].push_back(std::move(fresh));
+  build(*slots_[0], 0, Work{key, {}}, fresh.get());
+  programs_[key].push_back(std::move(fresh));
 }
+
+namespace {
+// The program and kernel of a need other than the integrators' (which the plan shares or not).
+std::pair<ProgramKey, const char*> ownProgram(const KernelNeed& need) {
+  switch (need.kernel) {
+    case KernelNeed::Brdf3d: return {{ProgramKey::Volume, need.ndf, need.gaf}, kBrdf3d};
+    case KernelNeed::Dielectric: return {{ProgramKey::Dielectric, need.ndf, need.gaf}, kDielectric};
+    case KernelNeed::DielectricNodes: return {{ProgramKey::Dielectric, need.ndf, need.gaf}, kDielectricNodes};
+    case KernelNeed::Hemisphere: break;
+    case KernelNeed::Kp: break;
+  }
+  return {integrators(need.ndf, need.gaf), kHemisphere};
+}
+}  // namespace
 
 void KernelRunner::prepare(const KernelNeed& need) {
-  const int ndf = need.ndf, gaf = need.gaf;
-  switch (need.kernel) {
-    case KernelNeed::Hemisphere:
-      compiled(ndf, gaf, kHemisphere);
-      break;
-    case KernelNeed::Kp:
-      if (Compiled* c = kpProgram(ndf)) compileKernel(*c, kKp);
-      else compiled(ndf, GAF_NONE, kKp);
-      break;
-    case KernelNeed::Brdf3d:
-      compiled(ndf, gaf + kVolumeProgram, kBrdf3d);
-      break;
-    case KernelNeed::Dielectric:
-      compiled(ndf, gaf + kDielectricProgram, kDielectric);
-      break;
-    case KernelNeed::DielectricNodes:
-      compiled(ndf, gaf + kDielectricProgram, kDielectricNodes);
-      break;
+  if (need.kernel == KernelNeed::Kp) {
+    if (Compiled* c = kpProgram(need.ndf)) compileKernel(*c, kKp);
+    else compiled(integrators(need.ndf, GAF_NONE), kKp);
+    return;
   }
+  auto [key, kernel] = ownProgram(need);
+  compiled(key, kernel);
 }
 
 // The programs and kernels the tables need, in the tables' order; k_p goes to a program of its
@@ -275,24 +209,27 @@ void KernelRunner::prepare(const KernelNeed& need) {
 // more (counting those built already), one shared program serves all of their integrators.
 std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<KernelNeed>& tables) const {
   std::vector<Work> work;
-  auto add = [&](int ndf, int gaf, const char* kernel) {
-    auto it = std::find_if(work.begin(), work.end(), [&](const Work& w) { return w.ndf == ndf && w.gaf == gaf; });
+  auto add = [&](const ProgramKey& key, const char* kernel) {
+    auto it = std::find_if(work.begin(), work.end(), [&](const Work& w) { return w.key == key; });
     if (it == work.end()) {
-      work.push_back(Work{ndf, gaf, {}});
+      work.push_back(Work{key, {}});
       it = work.end() - 1;
     }
     if (std::find(it->kernels.begin(), it->kernels.end(), kernel) == it->kernels.end()) it->kernels.push_back(kernel);
   };
-  auto integrator = [](KernelNeed::Kernel k) { return k == KernelNeed::Hemisphere || k == KernelNeed::Kp; };
-  // the pairs (k_p: its NDF) without a program of their own yet
+  auto builtFor = [&](int ndf) {
+    return std::any_of(programs_.begin(), programs_.end(), [&](const auto& p) {
+      return p.first.kind == ProgramKey::Integrators && p.first.ndf == ndf;
+    });
+  };
+  // the pairs (k_p: its NDF, gaf -1) without an integrators program of their own yet
   std::vector<std::pair<int, int>> fresh;
   for (const KernelNeed& t : tables) {
-    if (!integrator(t.kernel)) continue;
-    std::pair<int, int> key = t.kernel == KernelNeed::Kp ? std::make_pair(t.ndf, -1) : std::make_pair(t.ndf, t.gaf);
-    bool built = t.kernel == KernelNeed::Kp ? std::any_of(programs_.begin(), programs_.end(),
-                                                       [&](const auto& p) { return p.first.first == t.ndf && p.first.second < kVolumeProgram; })
-                                         : programs_.count(key) > 0;
-    if (!built && std::find(fresh.begin(), fresh.end(), key) == fresh.end()) fresh.push_back(key);
+    if (t.kernel != KernelNeed::Hemisphere && t.kernel != KernelNeed::Kp) continue;
+    const bool kp = t.kernel == KernelNeed::Kp;
+    std::pair<int, int> pair{t.ndf, kp ? -1 : t.gaf};
+    bool built = kp ? builtFor(t.ndf) : programs_.count(integrators(t.ndf, t.gaf)) > 0;
+    if (!built && std::find(fresh.begin(), fresh.end(), pair) == fresh.end()) fresh.push_back(pair);
   }
   // a k_p whose NDF has a pair in the plan needs no program of its own
   fresh.erase(std::remove_if(fresh.begin(), fresh.end(),
@@ -304,26 +241,26 @@ std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<KernelNeed>
               fresh.end());
   bool shared = !fresh.empty() && shareFor(static_cast<int>(fresh.size()));
   for (const KernelNeed& t : tables) {
-    if (t.kernel == KernelNeed::Hemisphere) {
-      if (shared && !programs_.count({t.ndf, t.gaf})) add(kSharedProgram, kSharedProgram, kHemisphere);
-      else add(t.ndf, t.gaf, kHemisphere);
+    if (t.kernel == KernelNeed::Kp) continue;
+    if (t.kernel == KernelNeed::Hemisphere && shared && !programs_.count(integrators(t.ndf, t.gaf))) {
+      add(ProgramKey::shared(), kHemisphere);
+      continue;
     }
-    if (t.kernel == KernelNeed::Brdf3d) add(t.ndf, t.gaf + kVolumeProgram, kBrdf3d);
-    if (t.kernel == KernelNeed::Dielectric) add(t.ndf, t.gaf + kDielectricProgram, kDielectric);
-    if (t.kernel == KernelNeed::DielectricNodes) add(t.ndf, t.gaf + kDielectricProgram, kDielectricNodes);
+    auto [key, kernel] = ownProgram(t);
+    add(key, kernel);
   }
   for (const KernelNeed& t : tables) {
     if (t.kernel != KernelNeed::Kp) continue;
-    // the lowest GAF of this NDF among programs already built or about to be
+    // the lowest GAF of this NDF among integrators programs already built or about to be
     int gaf = -1;
     for (const auto& p : programs_)
-      if (p.first.first == t.ndf && p.first.second < kVolumeProgram && (gaf < 0 || p.first.second < gaf))
-        gaf = p.first.second;
+      if (p.first.kind == ProgramKey::Integrators && p.first.ndf == t.ndf && (gaf < 0 || p.first.gaf < gaf))
+        gaf = p.first.gaf;
     for (const Work& w : work)
-      if (w.ndf == t.ndf && w.gaf < kVolumeProgram && (gaf < 0 || w.gaf < gaf)) gaf = w.gaf;
-    if (gaf >= 0) add(t.ndf, gaf, kKp);
-    else if (shared || programs_.count({kSharedProgram, kSharedProgram})) add(kSharedProgram, kSharedProgram, kKp);
-    else add(t.ndf, GAF_NONE, kKp);
+      if (w.key.kind == ProgramKey::Integrators && w.key.ndf == t.ndf && (gaf < 0 || w.key.gaf < gaf)) gaf = w.key.gaf;
+    if (gaf >= 0) add(integrators(t.ndf, gaf), kKp);
+    else if (shared || programs_.count(ProgramKey::shared())) add(ProgramKey::shared(), kKp);
+    else add(integrators(t.ndf, GAF_NONE), kKp);
   }
   return work;
 }
@@ -334,7 +271,7 @@ void KernelRunner::prepareAll(const std::vector<KernelNeed>& tables) {
   // drop what is compiled already
   std::vector<Work> todo;
   for (Work& w : work) {
-    if (Compiled* c = find(w.ndf, w.gaf)) {
+    if (Compiled* c = find(w.key)) {
       for (const std::string& k : w.kernels) compileKernel(*c, k);
     } else {
       todo.push_back(w);
@@ -351,7 +288,7 @@ void KernelRunner::prepareAll(const std::vector<KernelNeed>& tables) {
                                    [](const Work& a, const Work& b) { return a.kernels.size() < b.kernels.size(); });
       // k_p alone is not worth a second build (it compiles in a tenth of the split-sum's time)
       if (most->kernels.size() < 2 || (most->kernels.size() == 2 && most->kernels[1] == kKp)) break;
-      Work rest{most->ndf, most->gaf, {}};  // the first kernel stays
+      Work rest{most->key, {}};  // the first kernel stays
       rest.kernels.assign(most->kernels.begin() + 1, most->kernels.end());
       most->kernels.resize(1);
       todo.push_back(rest);
@@ -384,7 +321,7 @@ void KernelRunner::prepareAll(const std::vector<KernelNeed>& tables) {
   }
   for (size_t i = 0; i < todo.size(); ++i)  // the first failure in table order
     if (errors[i]) std::rethrow_exception(errors[i]);
-  for (size_t i = 0; i < todo.size(); ++i) programs_[{todo[i].ndf, todo[i].gaf}].push_back(std::move(done[i]));
+  for (size_t i = 0; i < todo.size(); ++i) programs_[todo[i].key].push_back(std::move(done[i]));
 }
 
 void KernelRunner::prepareAll(const std::vector<std::pair<int, int>>& pairs) {

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "cl/programs.h"
 #include "common/models.h"
 
 namespace brdfbake {
@@ -31,9 +32,6 @@ struct KernelNeed {
   enum Kernel { Hemisphere, Kp, Brdf3d, Dielectric, DielectricNodes } kernel;
   int ndf, gaf;
 };
-
-// The full device source for one NDF/GAF pair: a #define prelude, then the embedded files.
-std::string kernelSource(int ndf, int gaf);
 
 // What the albedo's two moments are (kernels/brdf/ndf.h BrdfParams): the split-sum pair by
 // default; HEMI_FRESNEL with a Fresnel model puts that model's albedo in the second.
@@ -120,7 +118,7 @@ class KernelRunner {
   static constexpr int kSharedFrom = 3;
   void setSharing(Sharing s) { sharing_ = s; }
   // Whether the shared program has been built (the tables of several pairs have run in it).
-  bool sharedProgramBuilt() const { return programs_.count({-1, -1}) > 0; }
+  bool sharedProgramBuilt() const;
 
   // Threads prepareAll uses (default: hardware_concurrency; 1 = in order on this thread).
   void setBuildThreads(int n) { buildThreads_ = n; }
@@ -134,15 +132,15 @@ class KernelRunner {
   struct Slot;      // a context and its queue
   struct Compiled;  // a built program, the slot it lives in, the kernels compiled so far
   struct Work {     // one program to build and the kernels to compile in it
-    int ndf, gaf;
+    ProgramKey key;
     std::vector<std::string> kernels;
   };
 
-  Compiled& compiled(int ndf, int gaf, const char* kernel);
-  Compiled* find(int ndf, int gaf, const char* kernel = nullptr);
+  Compiled& compiled(const ProgramKey& key, const char* kernel);
+  Compiled* find(const ProgramKey& key, const char* kernel = nullptr);
   Compiled* kpProgram(int ndf);
   void build(Slot& slot, int slotIndex, const Work& w, Compiled* done);
-  void buildHere(int ndf, int gaf);
+  void buildHere(const ProgramKey& key);
   void compileKernel(Compiled& c, const std::string& kernel);
   std::vector<Work> plan(const std::vector<KernelNeed>& needs) const;
   int pairPrograms() const;
@@ -156,8 +154,8 @@ class KernelRunner {
   int buildThreads_ = 0;
   Sharing sharing_ = Sharing::Auto;
   std::vector<std::unique_ptr<Slot>> slots_;  // [0]: the main context
-  // per pair: its program, in one context, or in several with different kernels compiled
-  std::map<std::pair<int, int>, std::vector<std::unique_ptr<Compiled>>> programs_;
+  // per program: in one context, or in several with different kernels compiled
+  std::map<ProgramKey, std::vector<std::unique_ptr<Compiled>>> programs_;
 };
 
 }  // namespace brdfbake

@@ -13,13 +13,6 @@ namespace brdfbake::runner_detail {
 inline const char* const kHemisphere = "bake_hemisphere";
 inline const char* const kKp = "bake_kp";
 inline const char* const kBrdf3d = "bake_brdf3d";
-// The one program for every pair (kernels/bake.cl: the pair is an argument), under
-// {kSharedProgram, kSharedProgram}.
-constexpr int kSharedProgram = -1;
-// 3D tables have programs of their own (volumeKernelSource): kept under the pair's GAF + this.
-constexpr int kVolumeProgram = 1000;
-// The rough dielectric's program (dielectricKernelSource): under the pair's GAF + this.
-constexpr int kDielectricProgram = 2000;
 inline const char* const kDielectric = "bake_dielectric";
 inline const char* const kDielectricNodes = "bake_dielectric_points";
 

@@ -58,7 +58,7 @@ void setGridArgs(cl::Kernel& k, int first, int nx, int ny, float xLo, float xHi,
 
 KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, float muLo, float muHi, float rLo,
                                           float rHi, bool nodeGrid, const HemiWeight& w, int level, bool muSqrt) {
-  Compiled& c = compiled(ndf, gaf, kHemisphere);
+  Compiled& c = compiled({ProgramKey::Integrators, ndf, gaf}, kHemisphere);
   Slot& s = *slots_[c.slot];
   size_t n = static_cast<size_t>(nx) * ny;
   cl::Buffer a = outBuffer(s.context, n), b = outBuffer(s.context, n), e = outBuffer(s.context, n),
@@ -102,7 +102,7 @@ void setRArgs(cl::Kernel& k, const cl::Buffer& values, const cl::Buffer& bounds,
 // host/cl/runner_avg.cpp.
 std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, const std::vector<cl_float4>& nodes,
                                                               const HemiWeight& w, bool bare) {
-  Compiled& c = compiled(ndf, gaf, kHemisphere);
+  Compiled& c = compiled({ProgramKey::Integrators, ndf, gaf}, kHemisphere);
   Slot& s = *slots_[c.slot];
   size_t count = nodes.size();
   cl::Buffer a = outBuffer(s.context, count), b = outBuffer(s.context, count), e = outBuffer(s.context, count),
@@ -127,7 +127,7 @@ std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, 
 
 KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid, float rLo, float rHi) {
   Compiled* pc = kpProgram(ndf);
-  Compiled& c = pc ? *pc : compiled(ndf, GAF_NONE, kKp);
+  Compiled& c = pc ? *pc : compiled({ProgramKey::Integrators, ndf, GAF_NONE}, kKp);
   compileKernel(c, kKp);
   Slot& s = *slots_[c.slot];
   cl::Buffer v = outBuffer(s.context, n), err = outBuffer(s.context, n);
@@ -148,10 +148,13 @@ KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid, float rLo, float rHi
 KernelTable KernelRunner::diffuseAlbedo(int model, int nx, int ny, float pLo, float pHi, bool nodeGrid, float muLo,
                                         float muHi) {
   static const char* const kDiffuse = "bake_diffuse_albedo";
-  Compiled* pc = programs_.empty() ? nullptr : find(programs_.begin()->first.first, programs_.begin()->first.second);
+  // the first integrators program (the map orders them first), else ggx + smith-correlated's
+  Compiled* pc = nullptr;
+  if (!programs_.empty() && programs_.begin()->first.kind == ProgramKey::Integrators) pc = find(programs_.begin()->first);
   if (!pc) {
-    buildHere(NDF_GGX, GAF_SMITH_CORRELATED);
-    pc = find(NDF_GGX, GAF_SMITH_CORRELATED);
+    const ProgramKey fallback{ProgramKey::Integrators, NDF_GGX, GAF_SMITH_CORRELATED};
+    buildHere(fallback);
+    pc = find(fallback);
   }
   Compiled& c = *pc;
   Slot& s = *slots_[c.slot];
@@ -176,7 +179,7 @@ KernelTable KernelRunner::diffuseAlbedo(int model, int nx, int ny, float pLo, fl
 namespace brdfbake {
 
 std::vector<std::vector<float>> KernelRunner::brdf3dSlab(const Brdf3dSpec& spec, int z0, int zn) {
-  Compiled& c = compiled(spec.ndf, spec.gaf + kVolumeProgram, kBrdf3d);
+  Compiled& c = compiled({ProgramKey::Volume, spec.ndf, spec.gaf}, kBrdf3d);
   Slot& s = *slots_[c.slot];
   const int nchan = spec.channels();
   size_t plane = static_cast<size_t>(spec.nx) * spec.ny * zn;
@@ -240,7 +243,7 @@ cl::Buffer etaBuffer(const cl::Context& ctx, const std::vector<double>& etas, bo
 std::vector<std::vector<float>> KernelRunner::dielectricSlab(int ndf, int gaf, int nx, int ny,
                                                              const std::vector<double>& etas, bool nodeGrid,
                                                              float target) {
-  Compiled& c = compiled(ndf, gaf + kDielectricProgram, kDielectric);
+  Compiled& c = compiled({ProgramKey::Dielectric, ndf, gaf}, kDielectric);
   Slot& s = *slots_[c.slot];
   const int zn = static_cast<int>(etas.size());
   size_t plane = static_cast<size_t>(nx) * ny * zn;
@@ -264,7 +267,7 @@ std::vector<std::vector<float>> KernelRunner::dielectricSlab(int ndf, int gaf, i
 std::vector<std::vector<double>> KernelRunner::dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
                                                                 const std::vector<double>& rs,
                                                                 const std::vector<double>& etas, float target) {
-  Compiled& c = compiled(ndf, gaf + kDielectricProgram, kDielectricNodes);
+  Compiled& c = compiled({ProgramKey::Dielectric, ndf, gaf}, kDielectricNodes);
   Slot& s = *slots_[c.slot];
   const size_t n = mus.size();
   std::vector<std::vector<double>> planes(4);

@@ -8,6 +8,14 @@
  *   rho_s = sqrt((n_u+1)(n_v+1))/(8 pi) Tex1(h.k, max(n.i, n.o)) Tex2(n.h, sqrt(n_u) h.x) Tex2(n.h, sqrt(n_v) h.y)
  * and the diffuse as rho_d = 28/(23 pi) R_d (1 - R_s) Tex0(n.i, n.o).
  */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_ANISOTROPIC_H_2) : !defined(BRDF_ANISOTROPIC_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_ANISOTROPIC_H_2
+#else
+#define BRDF_ANISOTROPIC_H
+#endif
+#include "brdf/fresnel.h"
 
 /* Ashikhmin and Shirley 2000, eq. 5, the angular part: Tex0(u, v) = (1 - (1 - u/2)^5)(1 - (1 - v/2)^5) */
 BRDF_FN real as_tex0(real u, real v) {
@@ -58,3 +66,4 @@ BRDF_FN real as_specular(real nu, real nv, real rs, real ix, real iy, real iz, r
   real norm = sqrt((nu + RC(1.0)) * (nv + RC(1.0))) / (RC(8.0) * BRDF_PI);
   return norm * lobe * fresnel_schlick(rs, ho) / (ho * fmax(iz, oz));
 }
+#endif /* BRDF_ANISOTROPIC_H */

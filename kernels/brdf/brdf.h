@@ -14,6 +14,17 @@
  * Directions below the horizon give f = 0; n.i or n.o within BRDF_HORIZON of 0 counts as on it (an
  * exact 0 that the directions' rounding moved by an ulp, to either side) and takes the floor.
  */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_BRDF_H_2) : !defined(BRDF_BRDF_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_BRDF_H_2
+#else
+#define BRDF_BRDF_H
+#endif
+#include "brdf/ndf.h"
+#include "brdf/gaf.h"
+#include "brdf/fresnel.h"
+#include "brdf/diffuse.h"
 #ifndef BRDF_LANE_PASS
 #define BRDF_MIN_COS RC(1e-6)
 #define BRDF_HORIZON RC(1e-9)
@@ -76,3 +87,4 @@ BRDF_FN real brdf_f(BrdfMaterial m, BrdfGeometry g, real fx, real fy, real rho) 
   return spec + diff;
 }
 #endif /* !BRDF_LANE_PASS */
+#endif /* BRDF_BRDF_H */

@@ -9,6 +9,16 @@
  * leaves it (total internal reflection where 1 - (i.h)^2 > eta^2). Walter's (eta_i, eta_o) are
  * (1, eta) in these units. Cosines come in as computed by the caller without cancellation.
  */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_BTDF_H_2) : !defined(BRDF_BTDF_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_BTDF_H_2
+#else
+#define BRDF_BTDF_H
+#endif
+#include "brdf/ndf.h"
+#include "brdf/gaf.h"
+#include "brdf/fresnel.h"
 #ifndef BRDF_LANE_PASS
 
 /* eta^2 - 1 without cancellation near eta = 1. */
@@ -90,3 +100,4 @@ BRDF_FN real btdf_f(int ndf, int gaf, BrdfParams p, real eta, real ni, real s2i,
 }
 
 #endif /* !BRDF_LANE_PASS */
+#endif /* BRDF_BTDF_H */

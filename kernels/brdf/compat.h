@@ -20,6 +20,13 @@
  *   lane_sum(x)        the sum of x's lanes
  *   param_t            a value derived from the per-texel parameters: one value in both passes
  *   tab_at(tab, i)     tab[i] of a BRDF_CONST float table, i an integer held in a real (per lane)
+ *
+ * Passes. Each header includes the headers it uses (paths relative to kernels/) and is read at
+ * most once per pass: a first pass, and a second with BRDF_SECOND_PASS defined, which is the
+ * device's lane pass (integrate/lanes.h) and the host's float namespace (host/common/brdf_host.h).
+ * The guard at the top of each header says so; this file's own guard is single-pass (its macros
+ * are the same in both), except the host's per-namespace part below. On the device the host joins
+ * a program's files by following the #include lines from its .cl file (host/cl/programs.cpp).
  */
 #ifndef BRDF_COMPAT_H
 #define BRDF_COMPAT_H
@@ -87,9 +94,15 @@ static inline __attribute__((overloadable)) float16 tab_at(constant float* t, fl
 #endif /* BRDF_COMPAT_H */
 
 /* Per-namespace part for the host: pull the overloaded math functions into scope and define the
- * one-lane helpers for this namespace's `real`. Outside the include guard on purpose: the host
+ * one-lane helpers for this namespace's `real`. Once per pass, not under the guard above: the host
  * includes the models once per precision (host/common/brdf_host.h defines BRDF_HOST_NAMESPACE). */
-#if !defined(__OPENCL_C_VERSION__) && defined(BRDF_HOST_NAMESPACE)
+#if !defined(__OPENCL_C_VERSION__) && defined(BRDF_HOST_NAMESPACE) && \
+    (defined(BRDF_SECOND_PASS) ? !defined(BRDF_COMPAT_NS_2) : !defined(BRDF_COMPAT_NS))
+#ifdef BRDF_SECOND_PASS
+#define BRDF_COMPAT_NS_2
+#else
+#define BRDF_COMPAT_NS
+#endif
 using std::acos;
 using std::atan;
 using std::atan2;

@@ -7,6 +7,14 @@
  * Parameters: shirley, ashikhmin-shirley and shirley-as-printed take F0 (Rs); oren-nayar (and its
  * as-printed form) take sigma in radians; burley takes the roughness r in [0, 1]; lambert none.
  */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_DIFFUSE_H_2) : !defined(BRDF_DIFFUSE_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_DIFFUSE_H_2
+#else
+#define BRDF_DIFFUSE_H
+#endif
+#include "brdf/fresnel.h"
 #ifndef BRDF_LANE_PASS
 #define DIFFUSE_LAMBERT 0
 #define DIFFUSE_SHIRLEY 1
@@ -89,3 +97,4 @@ BRDF_FN real diffuse_f(int model, param_t param, real ni, real si, param_t no, p
   if (model == DIFFUSE_OREN_NAYAR_AS_PRINTED) return diffuse_oren_nayar_as_printed(param, ni, si, no, so, cphi);
   return diffuse_lambert(ni);
 }
+#endif /* BRDF_DIFFUSE_H */

@@ -1,5 +1,13 @@
 /* fresnel.h: Fresnel reflectance, MODELS.md "Fresnel". c is the cosine of the angle to the normal
  * of the reflecting facet (o.h for microfacets). */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_FRESNEL_H_2) : !defined(BRDF_FRESNEL_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_FRESNEL_H_2
+#else
+#define BRDF_FRESNEL_H
+#endif
+#include "brdf/ndf.h"
 #ifndef BRDF_LANE_PASS
 #define FRESNEL_ONE 0
 #define FRESNEL_SCHLICK 1
@@ -116,3 +124,4 @@ BRDF_FN real fresnel_soft_scale(int moments, int model, real x) {
   return soft ? sqrt((x - RC(1.0)) * (x + RC(1.0))) : RC(0.0);
 }
 #endif
+#endif /* BRDF_FRESNEL_H */

@@ -7,6 +7,15 @@
  *   ni, no, nh, oh: the cosines n.i, n.o, n.h, o.h; s2i, s2o: sin^2 of theta_i, theta_o.
  * The view (no, s2o) is param_t: one per call, also in the lane pass (compat.h).
  */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_GAF_H_2) : !defined(BRDF_GAF_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_GAF_H_2
+#else
+#define BRDF_GAF_H
+#endif
+#include "brdf/ndf.h"
+#include "brdf/smith_tables.h"
 #ifndef BRDF_LANE_PASS
 #define GAF_NONE 0
 #define GAF_IMPLICIT 1
@@ -241,3 +250,4 @@ BRDF_FN int gaf_view_breaks(int gaf, real* mu) {
   return 4;
 }
 #endif /* !BRDF_LANE_PASS */
+#endif /* BRDF_GAF_H */

@@ -11,6 +11,15 @@
  * The pointwise verbs are lane-generic (compat.h): branches only on the model id and per-texel
  * parameters, selects on values.
  */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_NDF_H_2) : !defined(BRDF_NDF_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_NDF_H_2
+#else
+#define BRDF_NDF_H
+#endif
+#include "brdf/compat.h"
+#include "brdf/smith_tables.h"
 #ifndef BRDF_LANE_PASS
 #define NDF_GGX 0
 #define NDF_BECKMANN 1
@@ -287,3 +296,4 @@ BRDF_FN real ndf_v_of_tan2(int ndf, BrdfParams p, real t2) {
   return log1p(t2) / a2;
 }
 #endif /* !BRDF_LANE_PASS */
+#endif /* BRDF_NDF_H */

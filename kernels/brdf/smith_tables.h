@@ -2,6 +2,14 @@
  * V(z, y) = (Ft_exact - Ft_beckmann)/y for the exact Smith Lambda of Blinn-Phong and the
  * gaussian (docs/MODELS.md "Exact Smith Lambda"): z = c/(c + alpha s) on 129 nodes, y = alpha^2
  * on 33 nodes, both uniform in [0, 1], row-major tab[j * SMITH_NZ + i] (j: y, i: z). */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_SMITH_TABLES_H_2) : !defined(BRDF_SMITH_TABLES_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_SMITH_TABLES_H_2
+#else
+#define BRDF_SMITH_TABLES_H
+#endif
+#include "brdf/compat.h"
 #ifndef BRDF_LANE_PASS
 #define SMITH_NZ 129
 #define SMITH_NY 33
@@ -366,3 +374,4 @@ BRDF_CONST float smith_tab_gaussian[SMITH_NZ * SMITH_NY] = {
 2.736108908e-03f, 2.356255567e-03f, 1.988046823e-03f, 1.631044594e-03f, 1.284828488e-03f, 9.489951408e-04f, 6.231575725e-04f, 3.069445554e-04f, 0.000000000e+00f,
 };
 #endif /* !BRDF_LANE_PASS */
+#endif /* BRDF_SMITH_TABLES_H */

@@ -1,4 +1,13 @@
 /* albedo_avg.h: the average albedo's rule (the estimator of E it averages is hemisphere.h). */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_ALBEDO_AVG_H_2) : !defined(BRDF_ALBEDO_AVG_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_ALBEDO_AVG_H_2
+#else
+#define BRDF_ALBEDO_AVG_H
+#endif
+#include "brdf/gaf.h"
+#include "integrate/quadrature.h"
 /* Average albedo E_avg = 2 int_0^1 E(mu) mu dmu (Kulla and Conty 2017): the Gauss-Kronrod 15/31
  * rule on [0, 1] its panels use (the horizon layer's panel: GK15, quadrature.h), nodes AVG_MU,
  * Kronrod weights AVG_WK and Kronrod minus Gauss weights AVG_WD (the 15 Gauss nodes are the odd
@@ -117,3 +126,4 @@ BRDF_CONST real AVG_WD[AVG_NODES] = {
 /* Node mu's refinement target (AVG_TARGET above) in an n-node panel rule, w its weight on [0, 1]
  * (any panel: its inner term stays within AVG_TARGET times its length). */
 BRDF_FN real avg_target_share(int n, real mu, real w) { return AVG_TARGET / (RC(2.0) * (real)n * mu * w); }
+#endif /* BRDF_ALBEDO_AVG_H */

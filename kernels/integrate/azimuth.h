@@ -2,6 +2,15 @@
  * derivation): int_0^phimax H dphi at fixed theta_h, by the trapezoid rule on whole circles or
  * GK15 panels on arcs, split at the GAF's and Fresnel's kinks and graded towards the horizon.
  * Needs integrand.h and quadrature.h; hemisphere.h, which calls hemi_phi, comes after it. */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_AZIMUTH_H_2) : !defined(BRDF_AZIMUTH_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_AZIMUTH_H_2
+#else
+#define BRDF_AZIMUTH_H
+#endif
+#include "integrate/lanes.h"
+#include "integrate/quadrature.h"
 /* The azimuth's budgets (the brdf.method text is generated from these: host/bake/bake.cpp). */
 #define HEMI_TRAP_N 16         /* trapezoid intervals on the whole circle; refined: twice as many */
 #define HEMI_PHI_GROW RC(4.0)  /* grading of the arc panels towards phimax; refined: halved */
@@ -222,3 +231,4 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
     lo = hi;
   }
 }
+#endif /* BRDF_AZIMUTH_H */

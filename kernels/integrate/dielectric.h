@@ -38,6 +38,17 @@
  * meeting the reflected edge, x* meeting ck, and x*'s crossings at grazing views, which the scan
  * stepped over. Until then every estimate was the bare |K15 - G7|, 20 times the error or more.
  */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_DIELECTRIC_H_2) : !defined(BRDF_DIELECTRIC_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_DIELECTRIC_H_2
+#else
+#define BRDF_DIELECTRIC_H
+#endif
+#include "brdf/btdf.h"
+#include "brdf/brdf.h"
+#include "integrate/quadrature.h"
+#include "integrate/albedo_avg.h"
 #define DIEL_MAXP 64
 #define DIEL_VCAP RC(40.0)
 #define DIEL_GRADE RC(0.5)
@@ -385,3 +396,4 @@ BRDF_FN DielResult diel_texel(int ndf, int gaf, real mu, real r, real eta, real 
   }
   return res;
 }
+#endif /* BRDF_DIELECTRIC_H */

@@ -24,6 +24,15 @@
  * shirley-as-printed divides by 1 - F0, floored at DIFFUSE_TINY in the model: where 1 - F0 is below
  * that (true value +inf for mu > 0) the bound is DIFFUSE_HUGE. The result is never NaN or Inf.
  */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_DIFFUSE_ALBEDO_H_2) : !defined(BRDF_DIFFUSE_ALBEDO_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_DIFFUSE_ALBEDO_H_2
+#else
+#define BRDF_DIFFUSE_ALBEDO_H
+#endif
+#include "integrate/lanes.h"
+#include "integrate/quadrature.h"
 #define DIFFUSE_PANELS 2
 #define DIFFUSE_MU_FLOOR DIFFUSE_TINY
 #define DIFFUSE_HUGE RC(1e38)
@@ -108,3 +117,4 @@ BRDF_FN real diffuse_albedo(int model, real param, real mu, real* err) {
   *err = infinite ? DIFFUSE_HUGE : (real)bound;
   return (real)sum;
 }
+#endif /* BRDF_DIFFUSE_ALBEDO_H */

@@ -24,6 +24,16 @@
  * an outer panel's 15 nodes (expm1, sqrt, atan2, exp), one evaluates a GK15 azimuth panel (cos and
  * the integrand), and one plus a single node the 16-interval trapezoid (cosines from a table).
  */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_HEMISPHERE_H_2) : !defined(BRDF_HEMISPHERE_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_HEMISPHERE_H_2
+#else
+#define BRDF_HEMISPHERE_H
+#endif
+#include "integrate/azimuth.h"
+#include "brdf/brdf.h"
+#include "integrate/quadrature.h"
 #define HEMI_VCAP RC(40.0)
 /* The budgets (the brdf.method text is generated from these: host/bake/bake.cpp); the azimuth's,
  * HEMI_TRAP_N and HEMI_PHI_GROW, are in azimuth.h. */
@@ -153,17 +163,14 @@ BRDF_FN void hemi_panel(int ndf, int gaf, BrdfParams p, real mu, real s, real t1
   }
 }
 
-/* The charlie NDF's estimator (kernels/integrate/sheen.h, after this file). */
-BRDF_FN HemiResult sheen_moments(int gaf, BrdfParams p, real mu, int refine);
-
-/* The rule's values and its error estimates (no floor: hemisphere_moments adds it).
+/* The rule of the NDFs whose lobe peaks at h = n (all but charlie, whose rule is sheen.h's): its
+ * values and error estimates (no floor: hemisphere_moments adds it).
  * refine = 0: the default budget; 1: every outer panel cut in five graded pieces, 32 trapezoid
  * intervals, phi grading x2 instead of x4 and every phi panel halved. Levels L >= 2 (the
  * convergence report's ladder, not the bake): each of the five pieces cut in 2^(L-1), every phi
  * panel in 2^L, and GK15 panels on whole circles too. Callers refine the few texels whose bound is above
  * their target (hemisphere_moments_to). */
-BRDF_FN HemiResult hemi_rule(int ndf, int gaf, BrdfParams p, real mu, int refine) {
-  if (ndf == NDF_CHARLIE) return sheen_moments(gaf, p, mu, refine);
+BRDF_FN HemiResult hemi_rule_peaked(int ndf, int gaf, BrdfParams p, real mu, int refine) {
   HemiResult res;
   res.a = 0;
   res.b = 0;
@@ -315,3 +322,4 @@ BRDF_FN BrdfParams brdf_params(int ndf, int gaf, real r) {
   }
   return p;
 }
+#endif /* BRDF_HEMISPHERE_H */

@@ -1,8 +1,16 @@
 /* hemisphere_texel.h: what a table's texel claims, on top of the rules of hemisphere.h: the
  * estimators' floors, the tabulated Lambda's share, the choice between the default and the refined
  * budget against a target, and the texel at (mu, r) with its edges (mu = 0, r = 0 and the corner).
- * Shared by the device and the host tests; comes right after hemisphere.h (sheen.h, which
- * hemi_rule hands charlie to, after both). */
+ * Shared by the device and the host tests. */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_HEMISPHERE_TEXEL_H_2) : !defined(BRDF_HEMISPHERE_TEXEL_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_HEMISPHERE_TEXEL_H_2
+#else
+#define BRDF_HEMISPHERE_TEXEL_H
+#endif
+#include "integrate/hemisphere.h"
+#include "integrate/sheen.h"
 /* The estimators' floor. The rules' estimates are estimates, not bounds: where they are tiny the
  * true error can exceed them. Measured in double against the converged rule (refine = 3), as the
  * texel's claim is made (the largest error over A, B, E against the largest estimate), over every
@@ -51,6 +59,12 @@ BRDF_FN void hemi_add_relative(real f, HemiResult* h) {
   h->err_b += f * fabs(h->b);
 }
 BRDF_FN real hemi_floor(int refine) { return refine > 0 ? HEMI_ERR_FLOOR_REFINED : HEMI_ERR_FLOOR_SHARP; }
+
+/* The NDF's rule at budget `refine` (hemisphere.h explains the levels): charlie's own (sheen.h),
+ * else the one for lobes peaked at h = n. */
+BRDF_FN HemiResult hemi_rule(int ndf, int gaf, BrdfParams p, real mu, int refine) {
+  return ndf == NDF_CHARLIE ? sheen_moments(gaf, p, mu, refine) : hemi_rule_peaked(ndf, gaf, p, mu, refine);
+}
 
 /* The moments at (mu, alpha) and their error estimates (absolute): the rule's, the floor, and the
  * model's own approximation (the tabulated exact Lambda). */
@@ -144,3 +158,4 @@ BRDF_FN HemiResult hemisphere_texel_weighted(int ndf, int gaf, real mu, real r, 
   hemi_add_corner(mu, r, &h);
   return h;
 }
+#endif /* BRDF_HEMISPHERE_TEXEL_H */

@@ -6,6 +6,16 @@
  * Only cos(phi) varies across lanes: the view and theta_h are param_t, so the view's Lambda is
  * computed once per call, not once per lane.
  */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_INTEGRAND_H_2) : !defined(BRDF_INTEGRAND_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_INTEGRAND_H_2
+#else
+#define BRDF_INTEGRAND_H
+#endif
+#include "brdf/ndf.h"
+#include "brdf/gaf.h"
+#include "brdf/fresnel.h"
 /* The integrand H split by the weight w(o.h) that p.moments names (ndf.h BrdfParams): fb = H w,
  * fa = H (1 - w); Schlick's (1 - o.h)^5 for the split-sum pair. */
 BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, BrdfAngle h, param_t sn,
@@ -23,3 +33,4 @@ BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, Br
   *fb = H * w;
   *fa = H - *fb;
 }
+#endif /* BRDF_INTEGRAND_H */

@@ -3,6 +3,14 @@
  * Kronrod value is the estimate. |K15 - G7| estimates the error of G7, not of K15: on smooth
  * integrands K15's is orders of magnitude smaller. gk_error below turns the pair into an estimate
  * of K15's own error. */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_QUADRATURE_H_2) : !defined(BRDF_QUADRATURE_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_QUADRATURE_H_2
+#else
+#define BRDF_QUADRATURE_H
+#endif
+#include "brdf/compat.h"
 
 /* GK15 nodes on [-1, 1] in ascending order, Kronrod weights, and Kronrod minus Gauss weights (the
  * error estimate is |sum WD f|; the 7 Gauss nodes are the odd ones), padded to 16 with a zero-weight node so that one float16 lane vector holds
@@ -144,3 +152,4 @@ BRDF_FN real trap_error(real d1, real d2) {
   real q = d1 / d2;
   return d1 * q * q;
 }
+#endif /* BRDF_QUADRATURE_H */

@@ -26,6 +26,14 @@
  * alpha = 0: the lobe lies on the horizon, where n.i = 2 (o.h) c - mu = -mu < 0, so E = 0 for mu > 0
  * (the corner mu = 0 is evaluated at HEMI_CORNER_R, hemisphere_texel.h).
  */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_SHEEN_H_2) : !defined(BRDF_SHEEN_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_SHEEN_H_2
+#else
+#define BRDF_SHEEN_H
+#endif
+#include "integrate/hemisphere.h"
 /* The first of the theta breaks' v[0 .. n) inside (cur, end), or end. */
 BRDF_FN real sheen_next_break(const real* v, int n, real cur, real end) {
   for (int q = 0; q < n; ++q)
@@ -88,3 +96,4 @@ BRDF_FN HemiResult sheen_moments(int gaf, BrdfParams p, real mu, int refine) {
   res.err_b *= BRDF_INV_PI;
   return res;
 }
+#endif /* BRDF_SHEEN_H */
