@@ -14,6 +14,7 @@
 #include "shader/shader_gen.h"
 #include "cl/device.h"
 #include "cli/args.h"
+#include "cli/commands.h"
 #include "common/errors.h"
 #include "formats/exr/table_file.h"
 #include "formats/readers/table_reader.h"
@@ -30,7 +31,10 @@ int main(int argc, char** argv) {
     Command cmd = parseArgs(std::vector<std::string>(argv + 1, argv + argc));
     switch (cmd.kind) {
       case Command::Kind::Help:
-        std::cout << usageText();
+        std::cout << (cmd.helpFor.empty() ? overviewHelp() : commandHelp(cmd.helpFor));
+        return kExitOk;
+      case Command::Kind::Completion:
+        std::cout << bashCompletion();
         return kExitOk;
       case Command::Kind::Version:
         std::cout << "brdfbake " << BRDFBAKE_VERSION << " (git " << BRDFBAKE_GIT_REV << ")\n";

@@ -1,4 +1,5 @@
 #include "cli/args.h"
+#include "cli/commands.h"
 #include "cli/layout_args.h"
 #include "cli/scene_args.h"
 #include "cli/volume_args.h"
@@ -87,12 +88,31 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   }
   size_t i = 0;
   const std::string& first = args[0];
-  if (first == "--help" || first == "-h" || first == "help") {
+  const bool isCommand = first.rfind("-", 0) != 0;
+  if (isCommand && !findCommand(first)) unknownCommand(first);
+  // help: `help [COMMAND]`, `--help`, or -h/--help anywhere after a command (SCENE or not)
+  if (first == "help") {
+    if (args.size() > 2) throw Error(kExitUsage, "help: expected at most one command name, e.g. brdfbake help bake");
+    const bool self = args.size() == 2 && (args[1] == "--help" || args[1] == "-h");  // help's own help
+    if (args.size() == 2 && !self && !findCommand(args[1])) unknownCommand(args[1]);
     cmd.kind = Command::Kind::Help;
+    cmd.helpFor = self ? "help" : args.size() == 2 ? args[1] : "";
     return cmd;
   }
+  for (const auto& a : args)
+    if (a == "--help" || a == "-h") {
+      cmd.kind = Command::Kind::Help;
+      cmd.helpFor = isCommand ? first : "";
+      return cmd;
+    }
   if (first == "--version") {
     cmd.kind = Command::Kind::Version;
+    return cmd;
+  }
+  if (first == "completion") {
+    if (args.size() != 2 || args[1] != "bash")
+      throw Error(kExitUsage, "completion: expected the shell, bash (brdfbake completion bash)");
+    cmd.kind = Command::Kind::Completion;
     return cmd;
   }
   if (first == "devices") {
@@ -116,7 +136,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         if (!cmd.file.empty() || k + 1 >= args.size()) throw Error(kExitUsage, args[k] + ": give one output file, once");
         cmd.file = args[++k];
       } else if (!args[k].empty() && args[k][0] == '-') {
-        throw Error(kExitUsage, "shader: unknown option '" + args[k] + "'; valid: --lang glsl|hlsl, -o FILE");
+        refuseOption("shader", args[k]);
       } else {
         cmd.files.push_back(args[k]);
       }
@@ -168,10 +188,8 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   } else if (first == "convergence") {
     i = 1;
     cmd.kind = Command::Kind::Convergence;
-  } else if (first.rfind("-", 0) != 0) {
-    throw Error(kExitUsage, "unknown command '" + first + "'; valid: bake, plan, energy, verify, stress, convergence, "
-                            "devices, info, sample, shader (see --help)");
   }
+  const std::string command = isCommand ? first : "bake";
   // `brdfbake [options]` is `brdfbake bake [options]`: every bake option works at the top level.
   std::vector<std::string> seen;  // scalar options given so far: each at most once
   auto once = [&](const std::string& opt, const std::string& canonical) {
@@ -191,6 +209,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       if (!next || looksLikeOption) throw Error(kExitUsage, opt + ": missing value");
       return args[++i];
     };
+    if (!takesOption(command, opt)) refuseOption(command, opt);
     if (opt == "--ndf") {
       for (const auto& n : splitCommas(value())) addUnique(req.ndfs, ndfId(n));
     } else if (opt == "--gaf") {
@@ -250,13 +269,13 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       once(opt, "--fresnel");
       req.fresnel.model = fresnelId(value());
       req.fresnelGiven = true;
-    } else if (opt == "--sigma" && (cmd.kind == Command::Kind::Energy || cmd.kind == Command::Kind::Bake)) {
+    } else if (opt == "--sigma") {
       once(opt, opt);
       std::vector<double> v = parseValues(opt, value());
       if (v.size() != 1 || v[0] < 0 || v[0] > 1.5707963267948966)
         throw Error(kExitUsage, "--sigma must be one angle in [0, 1.5708] (radians, 0..pi/2)");
       req.sigma = v[0];
-    } else if (opt == "--eta-range" && (cmd.kind == Command::Kind::Bake || cmd.kind == Command::Kind::Convergence)) {
+    } else if (opt == "--eta-range") {
       once(opt, opt);
       const std::string text = value();
       std::vector<double> v;
@@ -271,15 +290,15 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         throw Error(kExitUsage, "--eta-range must be LO,HI with 0 < LO < HI <= 100 (the relative IOR eta_t/eta_i; "
                                 "below 1 leaves the denser medium), got '" + text + "'");
       req.etaRange = std::make_pair(v[0], v[1]);
-    } else if (opt == "--transmission" && cmd.kind == Command::Kind::Energy) {
+    } else if (opt == "--transmission") {
       once(opt, opt);
       req.transmission = true;
-    } else if (opt == "--coupling" && cmd.kind == Command::Kind::Energy) {
+    } else if (opt == "--coupling") {
       once(opt, opt);
       req.coupling = value();
       if (req.coupling != "sum" && req.coupling != "albedo-scaling")
         throw Error(kExitUsage, "--coupling must be sum or albedo-scaling, got '" + req.coupling + "'");
-    } else if ((opt == "--levels" || opt == "--samples") && cmd.kind == Command::Kind::Convergence) {
+    } else if (opt == "--levels" || opt == "--samples") {
       // a budget ladder: increasing integers in range
       once(opt, opt);
       bool lv = opt == "--levels";
@@ -299,7 +318,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         ladder.push_back(static_cast<int>(v));
       }
       (lv ? req.levels : req.samples) = ladder;
-    } else if (opt == "--preset" && cmd.kind == Command::Kind::Bake) {
+    } else if (opt == "--preset") {
       once(opt, "--preset");
       req.preset = value();
       if (req.preset != "gltf") throw Error(kExitUsage, "--preset: unknown preset '" + req.preset + "'; valid: gltf");
@@ -317,11 +336,8 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       std::vector<double>& slot = opt == "--f0" ? req.fresnel.f0 : opt == "--eta" ? req.fresnel.eta
                                   : opt == "--k"  ? req.fresnel.k  : req.fresnel.f82;
       slot = parseValues(opt, value());
-    } else if (opt == "--help" || opt == "-h") {
-      cmd.kind = Command::Kind::Help;
-      return cmd;
     } else {
-      throw Error(kExitUsage, "unknown option '" + opt + "' (see --help)");
+      throw Error(kExitSoftware, "internal: " + opt + " is in the option table (cli/commands.cpp) but not parsed");
     }
   }
   checkFormatOptions(req);
@@ -369,41 +385,16 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
                                   "the sheen colour scales the lobe); bake charlie without it");
   }
   if (cmd.kind == Command::Kind::Energy) {
-    // energy writes nothing: the table options do not apply
-    for (const char* o : {"--table", "--grid", "--mu-axis", "--half", "--precision", "--format", "--output"})
-      if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()))
-        throw Error(kExitUsage, std::string(o) + ": not an energy option (energy writes no tables)");
     if (req.sigma && req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
       throw Error(kExitUsage, "--sigma: only --diffuse oren-nayar and oren-nayar-as-printed take it");
     if (req.transmission && (req.fresnel.model != FRESNEL_DIELECTRIC || req.diffuse >= 0))
       throw Error(kExitUsage, "--transmission: rough glass takes --fresnel dielectric (its --eta) and no --diffuse");
   }
-  if (cmd.kind == Command::Kind::Stress) {
-    // stress runs its own fixed sweep of stiff cases: it takes only where to write and what device
-    for (const char* o : {"--table", "--grid", "--mu-axis", "--half", "--precision", "--format", "--fresnel", "--size"})
-      if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()))
-        throw Error(kExitUsage, std::string(o) + ": not a stress option (stress sweeps fixed stiff cases: -o, --device)");
-    if (modelsGiven)
-      throw Error(kExitUsage, "--ndf/--gaf/--diffuse: not stress options (stress sweeps fixed stiff cases: -o, --device)");
-  }
   if (cmd.kind == Command::Kind::Convergence) {
-    for (const char* o : {"--grid", "--mu-axis", "--half", "--precision", "--format"})
-      if (std::find(seen.begin(), seen.end(), o) != seen.end())
-        throw Error(kExitUsage, std::string(o) + ": not a convergence option (it measures one --table of one "
-                                                 "--ndf/--gaf/--fresnel; --size, --levels, --samples, -o)");
-    if (req.diffuse >= 0)
-      throw Error(kExitUsage, "--diffuse: convergence measures the specular estimators (the diffuse albedo has one budget)");
     if (req.tables.size() > 1)
       throw Error(kExitUsage, "--table: convergence measures one table kind at a time, got " +
                                   std::to_string(req.tables.size()));
     if (req.tables.empty()) req.tables = {TableKind::Albedo};
-  }
-  if (cmd.kind == Command::Kind::Verify) {
-    // verify checks model pairs: it writes a report page (under -o), no tables
-    for (const char* o : {"--table", "--grid", "--mu-axis", "--half", "--precision", "--format", "--fresnel", "--diffuse"})
-      if (std::find(seen.begin(), seen.end(), o) != seen.end() || (std::string(o) == "--table" && !req.tables.empty()) ||
-          (std::string(o) == "--diffuse" && req.diffuse >= 0))
-        throw Error(kExitUsage, std::string(o) + ": not a verify option (verify checks NDF/GAF pairs: --ndf, --gaf, --size, -o)");
   }
   if (req.sigma && cmd.kind == Command::Kind::Bake) {
     if (req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)

@@ -11,20 +11,17 @@
 namespace brdfbake {
 
 struct Command {
-  enum class Kind { Bake, Energy, Verify, Stress, Convergence, Devices, Info, Sample, ScenePlan, SceneBake, Shader, Help, Version } kind = Kind::Bake;
+  enum class Kind { Bake, Energy, Verify, Stress, Convergence, Devices, Info, Sample, ScenePlan, SceneBake, Shader, Help, Version, Completion } kind = Kind::Bake;
   BakeRequest bake;
   std::string file;  // for Info, Sample
   std::array<double, 3> at{};  // Sample: --at, in degrees
   SceneOptions scene;          // ScenePlan, SceneBake
   std::vector<std::string> files;  // Shader: the tables
   bool hlsl = false;               // Shader: --lang hlsl (else glsl)
+  std::string helpFor;             // Help: the command whose help to print ("" = the overview)
 };
-
-
 
 // Throws Error(kExitUsage) with a message naming the option and the accepted values.
 Command parseArgs(const std::vector<std::string>& args);
-
-std::string usageText();
 
 }  // namespace brdfbake

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdlib>
 
+#include "cli/commands.h"
 #include "common/errors.h"
 
 namespace brdfbake {
@@ -14,7 +15,6 @@ bool parseSceneCommand(const std::vector<std::string>& args, Command& cmd) {
   // bake SCENE: the word after bake is a file, not an option
   bool bake = args[0] == "bake" && args.size() > 1 && !args[1].empty() && args[1][0] != '-';
   if (!plan && !bake) return false;
-  const std::string verb = args[0];
   if (args.size() < 2 || args[1].empty() || args[1][0] == '-')
     throw Error(kExitUsage, "plan: expected a scene file (.toml manifest, .gltf or .glb): brdfbake plan SCENE [options]");
   SceneOptions o;
@@ -22,6 +22,7 @@ bool parseSceneCommand(const std::vector<std::string>& args, Command& cmd) {
   std::vector<std::string> seen;
   for (size_t i = 2; i < args.size(); ++i) {
     const std::string& opt = args[i];
+    if (!takesOption(plan ? "plan" : "bake SCENE", opt)) refuseOption(plan ? "plan" : "bake SCENE", opt);
     if (std::find(seen.begin(), seen.end(), opt) != seen.end()) throw Error(kExitUsage, opt + " given twice; give it once");
     seen.push_back(opt);
     auto value = [&]() -> const std::string& {
@@ -42,22 +43,20 @@ bool parseSceneCommand(const std::vector<std::string>& args, Command& cmd) {
         throw Error(kExitUsage, "--shard must be I/N with 1 <= I <= N <= 4096 (part I of N), got '" + v + "'");
       o.shard = static_cast<int>(a);
       o.shards = static_cast<int>(b);
-    } else if (opt == "--list" && plan) {
+    } else if (opt == "--list") {
       o.list = true;
-    } else if (opt == "--force" && bake) {
+    } else if (opt == "--force") {
       o.force = true;
-    } else if (opt == "--prune" && bake) {
+    } else if (opt == "--prune") {
       o.prune = true;
-    } else if (opt == "--stamp" && bake) {
+    } else if (opt == "--stamp") {
       o.stamp = value();
-    } else if (opt == "--device" && bake) {
+    } else if (opt == "--device") {
       o.device = value();
-    } else if (opt == "--cache-dir" && bake) {
+    } else if (opt == "--cache-dir") {
       o.cacheDir = value();
     } else {
-      throw Error(kExitUsage, verb + " SCENE: unknown option '" + opt + "'; valid: -o DIR, --shard I/N" +
-                                  (plan ? ", --list" : ", --force, --prune, --stamp FILE, --device TEXT, --cache-dir DIR") +
-                                  " (the tables come from the scene; its keys: README \"Scenes\")");
+      throw Error(kExitSoftware, "internal: " + opt + " is in the option table (cli/commands.cpp) but not parsed");
     }
   }
   cmd.kind = plan ? Command::Kind::ScenePlan : Command::Kind::SceneBake;

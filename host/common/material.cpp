@@ -20,7 +20,8 @@ const std::vector<std::string>& fresnelNames() {
 int fresnelId(const std::string& name, const std::string& field) {
   for (size_t i = 0; i < fresnelNames().size(); ++i)
     if (fresnelNames()[i] == name) return static_cast<int>(i);
-  throw Error(kExitUsage, field + ": unknown Fresnel model '" + name + "'; valid: " + joinNames(fresnelNames()));
+  throw Error(kExitUsage, field + ": unknown Fresnel model '" + name + "'" + didYouMean(name, fresnelNames()) +
+                              "; valid: " + joinNames(fresnelNames()));
 }
 
 const std::vector<std::string>& diffuseNames() {
@@ -32,7 +33,8 @@ const std::vector<std::string>& diffuseNames() {
 int diffuseId(const std::string& name, const std::string& field) {
   for (size_t i = 0; i < diffuseNames().size(); ++i)
     if (diffuseNames()[i] == name) return static_cast<int>(i);
-  throw Error(kExitUsage, field + ": unknown diffuse model '" + name + "'; valid: " + joinNames(diffuseNames()));
+  throw Error(kExitUsage, field + ": unknown diffuse model '" + name + "'" + didYouMean(name, diffuseNames()) +
+                              "; valid: " + joinNames(diffuseNames()));
 }
 
 DiffuseAxis diffuseAxis(int model) {

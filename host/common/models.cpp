@@ -1,5 +1,7 @@
 #include "common/models.h"
 
+#include <algorithm>
+
 #include "common/brdf_host.h"
 #include "common/errors.h"
 
@@ -31,12 +33,39 @@ std::string joinNames(const std::vector<std::string>& names) {
   return s;
 }
 
+std::string closestName(const std::string& word, const std::vector<std::string>& valid) {
+  std::string best;
+  size_t bestD = std::string::npos;
+  for (const auto& v : valid) {
+    // Levenshtein distance
+    std::vector<size_t> prev(v.size() + 1), cur(v.size() + 1);
+    for (size_t j = 0; j <= v.size(); ++j) prev[j] = j;
+    for (size_t i = 1; i <= word.size(); ++i) {
+      cur[0] = i;
+      for (size_t j = 1; j <= v.size(); ++j)
+        cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (word[i - 1] == v[j - 1] ? 0 : 1)});
+      std::swap(prev, cur);
+    }
+    if (prev[v.size()] < bestD) {
+      bestD = prev[v.size()];
+      best = v;
+    }
+  }
+  return bestD <= std::max<size_t>(2, word.size() / 3) ? best : std::string();
+}
+
+std::string didYouMean(const std::string& word, const std::vector<std::string>& valid) {
+  const std::string near = closestName(word, valid);
+  return near.empty() ? std::string() : " (did you mean '" + near + "'?)";
+}
+
 namespace {
 int lookup(const std::vector<std::string>& names, const std::string& name, const std::string& field,
            const char* what) {
   for (size_t i = 0; i < names.size(); ++i)
     if (names[i] == name) return static_cast<int>(i);
-  throw Error(kExitUsage, field + ": unknown " + what + " '" + name + "'; valid: " + joinNames(names));
+  throw Error(kExitUsage, field + ": unknown " + what + " '" + name + "'" + didYouMean(name, names) + "; valid: " +
+                              joinNames(names));
 }
 }  // namespace
 

@@ -22,6 +22,11 @@ const std::string& tableName(TableKind kind);
 std::string roughnessMapping(int ndf);
 
 std::string joinNames(const std::vector<std::string>& names);
+// The closest of `valid` to `word` by edit distance (for "did you mean"), or "" if none is close:
+// within 2 edits, or a third of the word's length for longer words.
+std::string closestName(const std::string& word, const std::vector<std::string>& valid);
+// " (did you mean 'x'?)" with the closest name, or "" if none is close.
+std::string didYouMean(const std::string& word, const std::vector<std::string>& valid);
 
 // Sheen models (MODELS.md "Sheen"): the charlie NDF and its visibilities charlie-smith, neubelt.
 bool isSheenNdf(int ndf);

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "common/errors.h"
+#include "common/models.h"
 
 namespace brdfbake {
 
@@ -60,12 +61,12 @@ const std::vector<LayoutPreset>& layoutPresets() {
 }
 
 const LayoutPreset& layoutPreset(const std::string& name) {
-  std::string list;
+  std::vector<std::string> names;
   for (const auto& p : layoutPresets()) {
     if (p.name == name) return p;
-    list += (list.empty() ? "" : ", ") + p.name;
+    names.push_back(p.name);
   }
-  throw Error(kExitUsage, "--layout: unknown preset '" + name + "'; presets: " + list +
+  throw Error(kExitUsage, "--layout: unknown preset '" + name + "'" + didYouMean(name, names) + "; presets: " + joinNames(names) +
                               " (or set the layout with --axes mu,r|r,mu, --flip-x, --flip-y, --channels)");
 }
 

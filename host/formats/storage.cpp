@@ -12,6 +12,7 @@
 
 #include "common/errors.h"
 #include "common/format.h"
+#include "common/models.h"
 
 namespace brdfbake {
 
@@ -41,13 +42,17 @@ const std::string& precisionName(Precision p) { return kPrecisionNames[static_ca
 FileFormat parseFormat(const std::string& opt, const std::string& name) {
   for (size_t i = 0; i < kFormatNames.size(); ++i)
     if (kFormatNames[i] == name) return static_cast<FileFormat>(i);
-  throw Error(kExitUsage, opt + " must be one or more of " + join(kFormatNames) + " (merl: brdf3d only), got '" + name + "'");
+  std::vector<std::string> all = kFormatNames;
+  all.push_back("merl");
+  throw Error(kExitUsage, opt + " must be one or more of " + join(kFormatNames) + " (merl: brdf3d only), got '" + name + "'" +
+                              didYouMean(name, all));
 }
 
 Precision parsePrecision(const std::string& opt, const std::string& name) {
   for (size_t i = 0; i < kPrecisionNames.size(); ++i)
     if (kPrecisionNames[i] == name) return static_cast<Precision>(i);
-  throw Error(kExitUsage, opt + " must be one of " + join(kPrecisionNames) + ", got '" + name + "'");
+  throw Error(kExitUsage, opt + " must be one of " + join(kPrecisionNames) + ", got '" + name + "'" +
+                              didYouMean(name, kPrecisionNames));
 }
 
 std::string formatExtension(FileFormat f) {

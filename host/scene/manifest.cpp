@@ -14,33 +14,13 @@
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"
+#include "common/models.h"
 #include "scene/scene.h"
 
 namespace brdfbake {
 
 std::string SourcePos::str() const {
   return file + ":" + std::to_string(line) + ":" + std::to_string(column);
-}
-
-std::string closestName(const std::string& word, const std::vector<std::string>& valid) {
-  std::string best;
-  size_t bestD = std::string::npos;
-  for (const auto& v : valid) {
-    // Levenshtein distance
-    std::vector<size_t> prev(v.size() + 1), cur(v.size() + 1);
-    for (size_t j = 0; j <= v.size(); ++j) prev[j] = j;
-    for (size_t i = 1; i <= word.size(); ++i) {
-      cur[0] = i;
-      for (size_t j = 1; j <= v.size(); ++j)
-        cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (word[i - 1] == v[j - 1] ? 0 : 1)});
-      std::swap(prev, cur);
-    }
-    if (prev[v.size()] < bestD) {
-      bestD = prev[v.size()];
-      best = v;
-    }
-  }
-  return bestD <= std::max<size_t>(2, word.size() / 3) ? best : std::string();
 }
 
 namespace {

@@ -68,7 +68,4 @@ Scene readGltfScene(const std::string& path);
 // Parses manifest text (for the fuzzer and tests); `name` stands for the file in messages.
 Scene parseManifest(const std::string& text, const std::string& name);
 
-// The closest of `valid` to `word` by edit distance (for "did you mean"), or "" if none is close.
-std::string closestName(const std::string& word, const std::vector<std::string>& valid);
-
 }  // namespace brdfbake

@@ -1,0 +1,379 @@
+#include "cli/commands.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "common/errors.h"
+#include "common/material.h"
+#include "common/models.h"
+#include "formats/layout.h"
+#include "formats/storage.h"
+
+namespace brdfbake {
+
+namespace {
+
+constexpr unsigned kTableCommands = kCmdBake | kCmdEnergy | kCmdVerify | kCmdConvergence;  // take --ndf, --gaf
+constexpr unsigned kDeviceCommands = kCmdBake | kCmdEnergy | kCmdVerify | kCmdStress | kCmdConvergence | kCmdSceneBake;
+
+std::vector<std::string> formatNames() {
+  std::vector<std::string> v;
+  for (FileFormat f : {FileFormat::Exr, FileFormat::Ktx2, FileFormat::Dds, FileFormat::Png16, FileFormat::Header})
+    v.push_back(formatName(f));
+  v.push_back("merl");
+  return v;
+}
+std::vector<std::string> precisionNames() {
+  std::vector<std::string> v;
+  for (Precision p : {Precision::Float32, Precision::Float16, Precision::Unorm16, Precision::Unorm8})
+    v.push_back(precisionName(p));
+  return v;
+}
+std::vector<std::string> layoutNames() {
+  std::vector<std::string> v;
+  for (const auto& p : layoutPresets()) v.push_back(p.name);
+  return v;
+}
+
+std::vector<CommandInfo> makeCommands() {
+  return {
+      {"bake", kCmdBake, "brdfbake bake [options]   (or brdfbake [options])",
+       "bake tables (default: ggx + smith-correlated, the four default tables, into out/)",
+       "Bakes the product of --ndf x --gaf x --table into -o DIR, one file per format; the files land "
+       "together or not at all. brdfbake bake SCENE bakes a scene's tables instead (brdfbake plan --help).",
+       {"brdfbake bake --table splitsum --size 64 -o out/lut", "brdfbake bake --layout filament -o out/filament",
+        "brdfbake bake --ndf ggx --gaf smith-correlated --fresnel dielectric --eta 1.5 -o out/glass"},
+       ""},
+      {"bake SCENE", kCmdSceneBake, "brdfbake bake SCENE [options]",
+       "bake what a scene (.toml manifest, .gltf/.glb) needs that is new or changed",
+       "Bakes the tables the scene's materials use and that are missing or out of date under -o DIR;\n"
+       "docs/scenes.md lists the manifest's keys.",
+       {"brdfbake bake scene.toml -o out/scene"},
+       "the tables come from the scene; docs/scenes.md"},
+      {"plan", kCmdPlan, "brdfbake plan SCENE [options]",
+       "the tables a scene needs, why, their cost, and what is up to date",
+       "Prints one line per table (or, with --list, only the output paths); writes nothing.",
+       {"brdfbake plan scene.toml -o out/scene"},
+       "plan writes nothing; the tables come from the scene"},
+      {"energy", kCmdEnergy, "brdfbake energy [options]",
+       "does a whole material conserve energy? the worst total albedo over (mu, r, parameter)",
+       "Exit 0 if the material conserves energy, 1 if it does not; writes no tables.",
+       {"brdfbake energy --fresnel conductor --eta 0.2 --k 3 --diffuse burley",
+        "brdfbake energy --transmission --fresnel dielectric --eta 1.5"},
+       "energy writes no tables"},
+      {"verify", kCmdVerify, "brdfbake verify [options]",
+       "white and weak furnace, normalisation, reciprocity, energy loss of --ndf x --gaf pairs",
+       "Writes a page with plots to DIR/verify (default out/verify); exit 1 when a check fails.",
+       {"brdfbake verify --ndf ggx,beckmann --gaf smith-correlated -o out"},
+       "verify checks NDF/GAF pairs: --ndf, --gaf, --size, -o"},
+      {"stress", kCmdStress, "brdfbake stress [options]",
+       "every table kind through the stiff and extreme cases, against the reference",
+       "Writes a page to DIR/stress; exit 1 on NaN/Inf, a missed limit or an error over its bound.",
+       {"brdfbake stress -o out"},
+       "stress sweeps fixed stiff cases: -o, --device"},
+      {"convergence", kCmdConvergence, "brdfbake convergence [options]",
+       "error against run time of each method that computes --table KIND, against its reference",
+       "One table kind (default albedo; any kind, or --brdf merl:FILE) for one pair; writes a page to\n"
+       "DIR/convergence (docs/convergence.md).",
+       {"brdfbake convergence --table splitsum --ndf ggx --gaf smith-correlated -o out"},
+       "it measures one --table of one --ndf/--gaf/--fresnel; --size, --levels, --samples, -o"},
+      {"shader", kCmdShader, "brdfbake shader --lang glsl|hlsl FILE... [-o OUT]",
+       "lookup functions for tables (grid, axes, atlas and channels built in)",
+       "FILE: .exr, .ktx2, .png, .h/.mjs, or .dds beside its .ktx2/.exr twin; prints to stdout without -o.",
+       {"brdfbake shader --lang glsl out/splitsum_ggx_smith-correlated.exr"},
+       "shader reads tables: --lang, -o"},
+      {"info", kCmdInfo, "brdfbake info FILE", "a table's metadata and value range (.exr, .ktx2, .dds, .png, .h, .mjs)",
+       "", {"brdfbake info out/albedo_ggx_smith-correlated.exr"}, "info takes one file"},
+      {"sample", kCmdSample, "brdfbake sample FILE.exr --at A,B,C",
+       "a brdf3d table's trilinear lookup next to the exact BRDF at a point, in degrees",
+       "A,B,C: (theta_i, theta_o, phi) or (theta_h, theta_d, phi_d), as the table's --param.",
+       {"brdfbake sample out/brdf3d_ggx_smith-correlated.exr --at 30,45,90"}, "sample takes FILE --at A,B,C"},
+      {"devices", kCmdDevices, "brdfbake devices", "the OpenCL platforms and devices", "", {"brdfbake devices"},
+       "devices takes no options"},
+      {"completion", kCmdCompletion, "brdfbake completion bash", "a bash completion script for brdfbake",
+       "Load it in the current shell with: source <(brdfbake completion bash)", {"brdfbake completion bash"},
+       "completion takes the shell's name"},
+      {"help", kCmdHelp, "brdfbake help [COMMAND]", "this overview, or one command's options (= COMMAND --help)",
+       "", {"brdfbake help bake"}, "help takes a command's name"},
+  };
+}
+
+std::vector<OptionInfo> makeOptions() {
+  const unsigned B = kCmdBake, E = kCmdEnergy, V = kCmdVerify, S = kCmdStress, C = kCmdConvergence;
+  const unsigned P = kCmdPlan, SB = kCmdSceneBake;
+  return {
+      // models
+      {"--ndf", "", "NAME", kTableCommands, "Models", joinNames(ndfNames()) + " (default ggx); repeat or comma-separate: the product is baked", ndfNames()},
+      {"--gaf", "", "NAME", kTableCommands, "Models", joinNames(gafNames()) + "\n(default smith-correlated)", gafNames()},
+      {"--brdf", "", "merl:FILE", B | C, "Models",
+       "a measured material (MERL .binary) for --table albedo, albedo-avg (1x1), splitsum; no --ndf/--gaf/--fresnel", {}},
+      {"--preset", "", "NAME", B, "Models",
+       "gltf: glTF's reference-shading tables (the GGX split sum, the sheen IBL term and the sheen "
+       "albedo-scaling table); with --size, --grid, --half, -o",
+       {"gltf"}},
+      // tables
+      {"--table", "", "KIND", B | C, "Tables",
+       joinNames(tableNames()) + "\n(default: the first four; docs/commands.md describes each)", tableNames()},
+      {"--size", "", "N", B | E | V | C, "Tables",
+       "texels per axis, 1..8192 (default 128 for splitsum and ashikhmin-shirley, 32 otherwise); "
+       "brdf3d: N or X,Y,Z, 1..1024; convergence: points per axis",
+       {}},
+      {"--grid", "", "G", B, "Tables", "texel-center (default: value at (i+0.5)/n) or node (at i/(n-1), n >= 2)",
+       {"texel-center", "node"}},
+      {"--mu-axis", "", "A", B, "Tables",
+       "linear (default: x = mu) or sqrt (x = sqrt(mu), texel i at mu = x_i^2, as HDRP's FGD): "
+       "splitsum and albedo only",
+       {"linear", "sqrt"}},
+      {"--eta-range", "", "LO,HI", B | C, "Tables", "dielectric tables' eta axis, 0 < LO < HI <= 100 (default 0.4,2.5)", {}},
+      // output
+      {"--format", "", "F[,F..]", B, "Output",
+       "exr (default), ktx2, dds, png16 (16-bit PNG, 2D), header (C/C++ .h and JavaScript .mjs): one "
+       "file per format; brdf3d also merl (alone)",
+       formatNames()},
+      {"--precision", "", "P", B, "Output",
+       "float32 (default), float16, unorm16, unorm8 (unorm: tables within [0, 1]); exr stores "
+       "float32/float16, png16 always unorm16",
+       precisionNames()},
+      {"--half", "", "", B, "Output", "--precision float16", {}},
+      {"--output", "-o", "DIR", B | V | S | C | P | SB, "Output", "output directory, created with its parents (default out)", {}},
+      {"--layout", "", "NAME", B, "Engine layout",
+       "--table splitsum arranged as an engine samples it (axes, flips, channels, format, precision, "
+       "size, grid): " + joinNames(layoutNames()) + "\n(unity-hdrp-sqrt: x = sqrt(NdotV), node grid; docs/layouts.md)",
+       layoutNames()},
+      {"--axes", "", "mu,r|r,mu", B, "Engine layout", "which quantity runs along x", {"mu,r", "r,mu"}},
+      {"--flip-x", "", "", B, "Engine layout", "reverse the x axis", {}},
+      {"--flip-y", "", "", B, "Engine layout", "reverse the y axis", {}},
+      {"--channels", "", "A,B[,A+B]", B, "Engine layout", "the split sum's channels, in order", {}},
+      // Fresnel
+      {"--fresnel", "", "MODEL", B | E | C, "Fresnel",
+       joinNames(fresnelNames()) + "\n(default one: F = 1; with --fresnel the default tables are albedo, albedo-avg)",
+       fresnelNames()},
+      {"--f0", "", "V", B | E | C, "Fresnel", "reflectance at normal incidence, [0, 1] (schlick, f82-tint; default 0.04); V or R,G,B", {}},
+      {"--eta", "", "V", B | E | C, "Fresnel", "relative IOR, (0, 100] (dielectric, schlick-tir: default 1.5; conductor)", {}},
+      {"--k", "", "V", B | E | C, "Fresnel", "extinction coefficient, [0, 100] (conductor)", {}},
+      {"--f82", "", "V", B | E | C, "Fresnel", "tint of Schlick's reflectance at mu = 1/7, [0, 1] (f82-tint; default 1)", {}},
+      // diffuse
+      {"--diffuse", "", "MODEL", B | E, "Diffuse",
+       joinNames(diffuseNames()) + "\n(--table albedo: the model's albedo over (mu, its parameter); splitsum: burley in B)",
+       diffuseNames()},
+      {"--sigma", "", "S", B | E, "Diffuse", "oren-nayar's roughness, radians in [0, pi/2] (default 0.5)", {}},
+      // 3D tables
+      {"--param", "", "P", B, "3D tables (--table brdf3d)", "angles (theta_i, theta_o, phi; default) or rusinkiewicz (theta_h, theta_d, phi_d)",
+       {"angles", "rusinkiewicz"}},
+      {"--theta-h", "", "I", B, "3D tables (--table brdf3d)", "rusinkiewicz's theta_h index: linear (default) or sqrt (MERL's)", {"linear", "sqrt"}},
+      {"--roughness", "", "R", B, "3D tables (--table brdf3d)", "the specular lobe's perceptual roughness, [0.01, 1] (default 0.5)", {}},
+      {"--value", "", "V", B, "3D tables (--table brdf3d)", "f (default) or f-cos (f cos theta_i)", {"f", "f-cos"}},
+      {"--rho", "", "V", B, "3D tables (--table brdf3d)", "diffuse albedo with --diffuse (one value or R,G,B in [0, 1]; default 1)", {}},
+      {"--atlas", "", "CxR", B, "3D tables (--table brdf3d)", "slices per atlas row and column (default: near-square)", {}},
+      // energy
+      {"--transmission", "", "", E, "Energy", "rough glass: E_R + E_T (--fresnel dielectric --eta V)", {}},
+      {"--coupling", "", "C", E, "Energy", "sum (default) or albedo-scaling: how the diffuse layer joins the specular", {"sum", "albedo-scaling"}},
+      // convergence
+      {"--levels", "", "L,L..", C, "Convergence", "the quadrature's budgets, an increasing list in 0..5 (default 0,1,2,3)", {}},
+      {"--samples", "", "N,N..", C, "Convergence", "Monte Carlo sample counts, an increasing list in 1..4194304", {}},
+      // scenes
+      {"--shard", "", "I/N", P | SB, "Scenes", "part I of N of the scene's tables (1 <= I <= N <= 4096), for parallel jobs", {}},
+      {"--list", "", "", P, "Scenes", "print the output paths only", {}},
+      {"--force", "", "", SB, "Scenes", "bake every table, up to date or not", {}},
+      {"--prune", "", "", SB, "Scenes", "remove tables under -o that the scene no longer needs", {}},
+      {"--stamp", "", "FILE", SB, "Scenes", "write FILE when the bake succeeds (a build system's output)", {}},
+      // device
+      {"--device", "", "TEXT", kDeviceCommands, "Device",
+       "the first OpenCL device whose name or platform contains TEXT (default: the first CPU device, e.g. PoCL)", {}},
+      {"--cache-dir", "", "DIR", kDeviceCommands, "Device", "PoCL's kernel cache (default: $POCL_CACHE_DIR, else ~/.cache/pocl)", {}},
+      // shader
+      {"--lang", "", "L", kCmdShader, "Shader", "glsl or hlsl", {"glsl", "hlsl"}},
+      {"--output", "-o", "OUT", kCmdShader, "Shader", "write the code to OUT instead of stdout", {}},
+      {"--at", "", "A,B,C", kCmdSample, "Sample", "the point, three angles in degrees", {}},
+      {"--help", "-h", "", ~0u, "Help", "this help", {}},
+  };
+}
+
+// `text`'s lines, each wrapped at spaces to fit 100 columns after `pad`, joined with "\n" + pad.
+std::string indent(const std::string& text, const std::string& pad) {
+  const size_t width = 100 - pad.size();
+  std::string out;
+  std::istringstream lines(text);
+  bool first = true;
+  for (std::string line; std::getline(lines, line);) {
+    while (true) {
+      size_t cut = line.size() <= width ? std::string::npos : line.rfind(' ', width);
+      out += (first ? "" : "\n" + pad) + line.substr(0, cut);
+      first = false;
+      if (cut == std::string::npos) break;
+      line = line.substr(cut + 1);
+    }
+  }
+  return out;
+}
+
+// The options of one command, grouped under their headings in table order.
+std::string optionsText(unsigned bit) {
+  std::string out, group;
+  for (const auto& o : optionInfos()) {
+    if (!(o.commands & bit) || o.name == "--help") continue;
+    if (o.group != group) {
+      group = o.group;
+      out += "\n" + group + ":\n";
+    }
+    std::string head = "  " + (o.alias.empty() ? "" : o.alias + ", ") + o.name + (o.value.empty() ? "" : " " + o.value);
+    const std::string pad(22, ' ');
+    if (head.size() + 2 > pad.size()) head += "\n" + pad;
+    else head += std::string(pad.size() - head.size(), ' ');
+    out += head + indent(o.help, pad) + "\n";
+  }
+  return out;
+}
+
+const char* const kExitCodes =
+    "Exit codes: 0 ok, 1 a check failed (verify, stress, energy), 64 usage, 65 bad input data, 66 unreadable\n"
+    "input, 69 no OpenCL device, 70 internal error, 73 cannot create output, 74 write error (e.g. disk full),\n"
+    "128+N interrupted by signal N.\n";
+
+std::vector<std::string> visibleCommandNames() {
+  std::vector<std::string> v;
+  for (const auto& c : commandInfos())
+    if (c.name.find(' ') == std::string::npos) v.push_back(c.name);
+  return v;
+}
+
+}  // namespace
+
+const std::vector<CommandInfo>& commandInfos() {
+  static const std::vector<CommandInfo> c = makeCommands();
+  return c;
+}
+
+const std::vector<OptionInfo>& optionInfos() {
+  static const std::vector<OptionInfo> o = makeOptions();
+  return o;
+}
+
+const CommandInfo* findCommand(const std::string& name) {
+  for (const auto& c : commandInfos())
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+const OptionInfo* findOption(const std::string& opt) {
+  for (const auto& o : optionInfos())
+    if (o.name == opt || (!o.alias.empty() && o.alias == opt)) return &o;
+  return nullptr;
+}
+
+bool takesOption(const std::string& command, const std::string& opt) {
+  const CommandInfo* c = findCommand(command);
+  if (!c) return false;
+  for (const auto& o : optionInfos())
+    if ((o.name == opt || (!o.alias.empty() && o.alias == opt)) && (o.commands & c->bit)) return true;
+  return false;
+}
+
+std::string overviewHelp() {
+  std::string out = "usage: brdfbake COMMAND [options]   (brdfbake [options] is brdfbake bake [options])\n\ncommands:\n";
+  for (const auto& c : commandInfos()) {
+    std::string head = "  " + c.name;
+    head += std::string(head.size() < 16 ? 16 - head.size() : 1, ' ');
+    out += head + c.summary + "\n";
+  }
+  out += "\n'brdfbake COMMAND --help' lists that command's options with examples. The bake options:\n";
+  out += optionsText(kCmdBake);
+  out += "\nModels, formulas and table conventions: docs/MODELS.md; every command: docs/commands.md.\n";
+  out += kExitCodes;
+  return out;
+}
+
+std::string commandHelp(const std::string& name) {
+  const CommandInfo* c = findCommand(name);
+  if (!c) unknownCommand(name);
+  std::string out = "usage: " + c->synopsis + "\n\n" + c->summary + "\n";
+  if (!c->details.empty()) out += indent(c->details, "") + "\n";
+  const std::string opts = optionsText(c->bit);
+  out += opts.empty() ? "\n(no options)\n" : opts;
+  // bake's help also shows the scene form, whose options differ
+  if (c->bit == kCmdBake) {
+    const CommandInfo& s = *findCommand("bake SCENE");
+    out += "\nusage: " + s.synopsis + "\n" + s.summary + "\n" + optionsText(s.bit);
+  }
+  out += "\nexamples:\n";
+  for (const auto& e : c->examples) out += "  " + e + "\n";
+  out += "\n";
+  out += kExitCodes;
+  return out;
+}
+
+void unknownCommand(const std::string& word) {
+  const std::vector<std::string> names = visibleCommandNames();
+  throw Error(kExitUsage, "unknown command '" + word + "'" + didYouMean(word, names) + "; valid: " + joinNames(names) +
+                              " (brdfbake --help)");
+}
+
+void refuseOption(const std::string& command, const std::string& opt) {
+  const CommandInfo* c = findCommand(command);
+  const std::string shown = c && c->bit == kCmdSceneBake ? "bake SCENE" : command;
+  const std::string helpCmd = c && c->bit == kCmdSceneBake ? "bake" : command;
+  if (findOption(opt)) {
+    const std::string article = std::string("aeiou").find(shown[0]) != std::string::npos ? "an " : "a ";
+    throw Error(kExitUsage, opt + ": not " + article + shown + " option (" + (c ? c->refusal : std::string()) +
+                                "; brdfbake " + helpCmd + " --help lists them)");
+  }
+  // the nearest of this command's options, else of any command's
+  std::vector<std::string> own, all;
+  for (const auto& o : optionInfos()) {
+    (c && (o.commands & c->bit) ? own : all).push_back(o.name);
+  }
+  std::string near = didYouMean(opt, own);
+  if (near.empty()) near = didYouMean(opt, all);
+  throw Error(kExitUsage, shown + ": unknown option '" + opt + "'" + near + "; brdfbake " + helpCmd +
+                              " --help lists its options");
+}
+
+std::string bashCompletion() {
+  std::string s =
+      "# bash completion for brdfbake, generated by `brdfbake completion bash`.\n"
+      "# Load it with: source <(brdfbake completion bash)\n"
+      "_brdfbake() {\n"
+      "  local cur prev cmd i\n"
+      "  cur=\"${COMP_WORDS[COMP_CWORD]}\"\n"
+      "  prev=\"${COMP_WORDS[COMP_CWORD-1]}\"\n"
+      "  cmd=bake\n"
+      "  for ((i = 1; i < COMP_CWORD; i++)); do\n"
+      "    case \"${COMP_WORDS[i]}\" in -*) ;; *) cmd=\"${COMP_WORDS[i]}\"; break ;; esac\n"
+      "  done\n"
+      "  case \"$prev\" in\n";
+  for (const auto& o : optionInfos()) {
+    if (o.values.empty()) continue;
+    std::string words;
+    for (const auto& v : o.values) words += (words.empty() ? "" : " ") + v;
+    s += "    " + o.name + ") COMPREPLY=($(compgen -W \"" + words + "\" -- \"$cur\")); return ;;\n";
+  }
+  s += "  esac\n"
+       "  if [[ $COMP_CWORD -eq 1 && \"$cur\" != -* ]]; then\n"
+       "    COMPREPLY=($(compgen -W \"";
+  const std::vector<std::string> names = visibleCommandNames();
+  for (size_t i = 0; i < names.size(); ++i) s += (i ? " " : "") + names[i];
+  s += "\" -- \"$cur\")); return\n"
+       "  fi\n"
+       "  local opts\n"
+       "  case \"$cmd\" in\n";
+  for (const auto& c : commandInfos()) {
+    if (c.name.find(' ') != std::string::npos) continue;
+    unsigned bits = c.bit | (c.bit == kCmdBake ? kCmdSceneBake : 0u);
+    std::string words;
+    for (const auto& o : optionInfos())
+      if (o.commands & bits) {
+        if (words.find(o.name + " ") == std::string::npos) words += o.name + " ";
+        if (!o.alias.empty() && words.find(o.alias + " ") == std::string::npos) words += o.alias + " ";
+      }
+    s += "    " + c.name + ") opts=\"" + words + "\" ;;\n";
+  }
+  s += "    *) opts=\"\" ;;\n"
+       "  esac\n"
+       "  if [[ \"$cur\" == -* ]]; then COMPREPLY=($(compgen -W \"$opts\" -- \"$cur\")); return; fi\n"
+       "  COMPREPLY=($(compgen -f -- \"$cur\"))\n"
+       "}\n"
+       "complete -o filenames -F _brdfbake brdfbake\n";
+  return s;
+}
+
+}  // namespace brdfbake
