@@ -1,8 +1,8 @@
 /* anisotropic.h: the anisotropic Ashikhmin-Shirley specular BRDF and the three factorised textures
  * of seed 001 (docs/MODELS.md "Ashikhmin-Shirley: factorised textures"). Without the (n.i) cosine.
  * Directions in the shading frame: x = tangent (the n_u direction), y = bitangent (n_v), z = n.
- * Needs fresnel.h (fresnel_schlick, fresnel_schlick_weight) before it. Host only for now (brdf64,
- * brdf32); written in the shared subset so that a kernel could include it.
+ * Uses fresnel.h (fresnel_schlick, fresnel_schlick_weight). The host evaluates it (brdf64,
+ * brdf32); it is written in the shared subset so that a kernel can include it.
  *
  * The specular factorises as (Ashikhmin and Shirley 2000, as Steigleder and McCool lay it out):
  *   rho_s = sqrt((n_u+1)(n_v+1))/(8 pi) Tex1(h.k, max(n.i, n.o)) Tex2(n.h, sqrt(n_u) h.x) Tex2(n.h, sqrt(n_v) h.y)

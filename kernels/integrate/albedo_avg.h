@@ -19,11 +19,11 @@
  * (avg_target_share; but never below the albedo's own target, host/cl/runner_avg.cpp), so that
  * the inner term sum wk 2 mu err_E stays near AVG_TARGET. The grazing nodes (mu = 0.001, 0.006),
  * where E costs most, weigh least, and are refined least. AVG_TARGET is the albedo's own target
- * (HEMI_BAKE_TARGET, 3e-7); it was 8e-6, the entries' goal, at which the
- * gaussian's few nodes whose default-budget estimate is 1e4 times its error (1.8e-5 against 6e-10
- * at mu = 0.105, r = 0.52) stayed unrefined and made half its E_avg claims (1.2e-6, ggx's 2.2e-7);
- * at 3e-7 the gaussian + smith claims 4.0e-7 instead of 9.7e-7, in about the albedo table's time,
- * and ggx's nodes are unchanged. */
+ * (HEMI_BAKE_TARGET, 3e-7) rather than the entries' goal, 8e-6: at 8e-6 the gaussian's few nodes
+ * whose default-budget estimate is 1e4 times its error (1.8e-5 against 6e-10 at mu = 0.105,
+ * r = 0.52) stay unrefined and make half its E_avg claims (1.2e-6, ggx's 2.2e-7); at 3e-7 the
+ * gaussian + smith claims 4.0e-7 instead of 9.7e-7, in about the albedo table's time, and ggx's
+ * nodes are the same at both. */
 #define AVG_TARGET RC(3e-7)
 /* Where alpha < AVG_LAYER_ALPHA the rule starts from two panels, [0, AVG_LAYER_BREAK alpha] and the
  * rest: E(mu) falls within a layer of width ~alpha at the horizon (the Smith and Schlick G1 go from
@@ -46,10 +46,9 @@
  * grid, against the reference): beyond the rule's bound E_avg is off by at most 2.1e-9 of its value
  * (beckmann and blinn-phong + schlick-ggx at r = 7/64, alpha = 0.012, just above
  * AVG_LAYER_ALPHA), 3.3e-10 for ggx, 5.3e-12 for the gaussian. The floor keeps a margin of 2.4.
- * Since session 22 none, cook-torrance, kelemen and neumann are rescaled too: the same sweep over
- * their 16 pairs (BRDFBAKE_AVG_GAFS=0,2,3,4, 48 minutes on the loaded machine) finds at most
- * 7.5e-10 (beckmann + kelemen, r = 1/8), inside the floor. Charlie's averages since session 23
- * too: the same rule with bare estimates in double against the sheen reference's E_avg (Gauss-
+ * For none, cook-torrance, kelemen and neumann (also rescaled) the same sweep over their 16 pairs
+ * (BRDFBAKE_AVG_GAFS=0,2,3,4, 48 minutes on the loaded machine) finds at most 7.5e-10 (beckmann +
+ * kelemen, r = 1/8), inside the floor. Charlie's averages the same: the same rule with bare estimates in double against the sheen reference's E_avg (Gauss-
  * Legendre 20 and 30 on panels graded towards mu = 0 and split at 1/2, agreeing to 3.6e-9), every r
  * of a 32-entry table (charlie-smith; neubelt too, and its node grid's r = 1/32 to 1/2): never
  * beyond the rule's bound (neubelt's largest error 3.1e-10 of E_avg). */

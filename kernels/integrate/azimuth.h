@@ -33,9 +33,9 @@ BRDF_FN int hemi_gaf_alpha_layer(int gaf) {
  * panel ends in phi (gaf_kinks) and in theta_h (gaf_theta_breaks), with substitutions where the
  * phi integral has a root or 3/2-power end (gaf_root_at_normal, the theta breaks) and where G
  * itself is singular at i's horizon (gaf_root_at_horizon); the horizon layers of `none` and
- * kelemen are graded (gaf_horizon_layer). Before those, the rescaled estimates missed by up to
- * 1.3e-6 of the value (session 22: none, cook-torrance, kelemen, neumann) and fell 4 times below
- * the error (session 23: the charlie NDF), so those kept |K15 - G7|, 6 to 52 times their error.
+ * kelemen are graded (gaf_horizon_layer). Without those panel ends, the rescaled estimates miss by
+ * up to 1.3e-6 of the value (none, cook-torrance, kelemen, neumann) and fall 4 times below the
+ * error (the charlie NDF), where |K15 - G7| runs 6 to 52 times the error.
  * sq_lo / sq_hi: an end with a square-root singularity in the integrand (Fresnel's critical
  * angle) or a power of n.i (charlie-smith at phimax), eased by phi = lo + L y^2 (hi - L (1 - y)^2;
  * the smoothstep for both). */

@@ -18,9 +18,8 @@
  * both budgets: the sharpened estimates (gk_error) miss by at most 5.5e-8 of the value
  * (blinn-phong + smith-exact at mu = 0.47, r = 255/256; 4.4e-8 for ggx + smith at mu = 255/256,
  * r = 0.11, where G1(i) changes within n.i ~ alpha of i's horizon next to v1, inside one outer
- * panel), |K15 - G7| by at most 1.6e-7 of it (beckmann + none, mu = 1/256, r = 255/256; none
- * is rescaled since session 22, charlie since session 23, so every pair has the sharpened
- * estimate's floors below). The
+ * panel), |K15 - G7| by at most 1.6e-7 of it (beckmann + none, mu = 1/256, r = 255/256; every
+ * pair, none and charlie included, has the sharpened estimate's floors below). The
  * floor, relative to the value so that it scales with what the rule integrates (and averages into
  * E_avg's node bounds where the average keeps them; the plain average of the rescaled pairs has a
  * floor of its own, albedo_avg.h AVG_ERR_FLOOR), covers both; tests/accuracy_test.cpp checks every such texel against the
@@ -29,18 +28,18 @@
  * texels, both budgets: the sharpened estimates miss by at most 4.4e-8 of the value (7.5e-9 away
  * from the edges); `./tests/brdfbake-accuracy-tests` prints it. The refined budget's estimates miss
  * by far less, at most 4.5e-10 of the value over the same texels (gaussian + smith-correlated at
- * the 128x128 edges): its own floor, 1e-9, kept the same margin (2.2) as the default's. Measured
+ * the 128x128 edges). Measured
  * on the unweighted moments of the pairs without a tabulated Lambda (whose 6.6e-7 dwarfs it), at
  * levels 0 and 1; the Fresnel-weighted moments and the convergence ladders' levels 2 and up use it
- * unmeasured. Session 22 sharpened none, cook-torrance, kelemen and neumann too
- * (azimuth.h): over the same texels their misses are at most 2.5e-8 of the value at the
- * default budget and 6.2e-10 at the refined one (gaussian + neumann at the 128x128 edges, mu =
- * 1/256), so the refined floor is now 1.5e-9 (margin 2.4). Session 23 rescaled the charlie NDF's
- * estimates too (charlie-smith's kinks and horizon singularity, gaf.h): against the sheen reference
- * (host/reference/sheen_reference.cpp, independent of these rules) over 17 r x 27 mu per sheen
- * pair (charlie-smith, neubelt, none, implicit), they miss by at most 4.4e-9 of the value at the
+ * unmeasured. None, cook-torrance, kelemen and neumann, sharpened as well (azimuth.h), miss over
+ * the same texels by at most 2.5e-8 of the value at the default budget and 6.2e-10 at the refined
+ * one (gaussian + neumann at the 128x128 edges, mu = 1/256), so the refined floor is 1.5e-9
+ * (margin 2.4). The charlie NDF's estimates, sharpened the same way (charlie-smith's kinks and
+ * horizon singularity, gaf.h), miss the sheen reference (host/reference/sheen_reference.cpp,
+ * independent of these rules) over 17 r x 27 mu per sheen pair (charlie-smith, neubelt, none,
+ * implicit) by at most 4.4e-9 of the value at the
  * default budget and 1.1e-10 at the refined one (charlie-smith, r = 1, mu = 3/8 and 0.49), inside
- * both floors. Before that charlie kept |K15 - G7| with a floor of 2e-7. */
+ * both floors. */
 #define HEMI_ERR_FLOOR_SHARP RC(1e-7)
 #define HEMI_ERR_FLOOR_REFINED RC(1.5e-9)
 /* The exact Smith Lambda of blinn-phong and the gaussian is tabulated (smith_tables.h): its G1 is
