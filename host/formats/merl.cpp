@@ -12,6 +12,7 @@
 #include <cstring>
 
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "formats/exr/table_file.h"  // temporaryPathFor
 #include "formats/storage.h"  // TempFileWriter
 
@@ -182,14 +183,15 @@ bool MerlData::lookup(double thetaH, double thetaD, double phiD, double out[3]) 
 MerlData readMerl(const std::string& path) {
   int fd;
   do {
-    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);  // a FIFO's open would block
   } while (fd < 0 && errno == EINTR);
   if (fd < 0) throw Error(kExitNoInput, "cannot read MERL file " + path + ": " + errnoText(errno));
   struct stat st;
   if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
     ::close(fd);
-    throw Error(kExitNoInput, "cannot read MERL file " + path + ": not a regular file");
+    throw Error(kExitNoInput, "cannot read MERL file " + path + ": " + fileTypeName(st.st_mode) + ", not a regular file");
   }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   auto readAll = [&](unsigned char* p, size_t n) {
     size_t done = 0;
     while (done < n) {

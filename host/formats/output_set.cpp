@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "common/errors.h"
+#include "common/input_file.h"
 
 namespace brdfbake {
 
@@ -95,6 +96,21 @@ void checkOutputDir(const std::string& dir) {
   }
   if (::access(cur.c_str(), W_OK | X_OK) != 0)
     throw Error(kExitCantCreat, "-o: cannot write in '" + cur + "': " + errnoText(errno));
+}
+
+void checkReplaceableFile(const std::string& path, const std::string& option) {
+  if (path.empty()) throw Error(kExitUsage, option + ": empty file name");
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+    throw Error(kExitCantCreat, option + " " + path + ": " +
+                                    (S_ISLNK(st.st_mode) ? std::string("a symbolic link") : fileTypeName(st.st_mode)) +
+                                    ", not a regular file; it would be replaced when the bake succeeds");
+  const std::string parent = parentOf(path);
+  try {
+    checkOutputDir(parent);
+  } catch (const Error& e) {
+    throw Error(kExitCantCreat, option + " " + path + ": " + std::string(e.what()).substr(4));  // drop "-o: "
+  }
 }
 
 void guardInterrupts(const std::string& what) {

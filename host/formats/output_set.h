@@ -35,6 +35,11 @@ void guardInterrupts(const std::string& what);
 // nothing is left behind and files that were there before are unchanged.
 void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files);
 
+// Before any work, for a file a later writeTextFile replaces (`option` names it: "--stamp"): it
+// is absent or a regular file, and its directory exists or can be created. Throws
+// Error(kExitCantCreat) naming the option, the path and what is there (a FIFO, a directory...).
+void checkReplaceableFile(const std::string& path, const std::string& option);
+
 // One text file (generated shader code, a bake's stamp), written through a synced temporary and a
 // rename: the file is whole or untouched. Error(kExitCantCreat) / Error(kExitIoErr) naming it.
 void writeTextFile(const std::string& path, const std::string& text);

@@ -12,6 +12,7 @@
 
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "common/format.h"
 #include "scene/scene.h"
 
@@ -27,10 +28,8 @@ double extNumber(const tinygltf::Value& ext, const char* key, double fallback) {
 }  // namespace
 
 Scene readGltfScene(const std::string& path) {
-  {
-    std::ifstream probe(path, std::ios::binary);
-    if (!probe) throw Error(kExitNoInput, "cannot read scene " + path + ": " + std::strerror(errno));
-  }
+  const bool glb = path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
+  checkInputFile(path, "scene", glb ? kCapGlb : kCapGltfJson);
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   // materials only: images are neither needed nor loaded

@@ -3,6 +3,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <cmath>
@@ -13,6 +14,7 @@
 #include "brdfbake/request.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "common/format.h"
 #include "common/models.h"
 #include "scene/scene.h"
@@ -284,11 +286,66 @@ void screenNonAscii(const std::string& text, const std::string& file) {
   }
 }
 
+// toml++ parses nested tables, arrays and dotted keys by recursion, one level per part: a 100 KB
+// key of 50,000 parts overflows the stack. The manifest's own keys nest at most three deep, so
+// anything past kMaxNesting is refused here, before the parser sees the text: brackets and braces
+// open at once, or parts of one dotted key (a '.' outside strings, not between digits: 1.5 is a
+// value). Strings and comments are skipped as TOML defines them.
+constexpr int kMaxNesting = 32;
+void screenNesting(const std::string& text, const std::string& name) {
+  int line = 1, col = 0, depth = 0, parts = 1;
+  auto fail = [&](const std::string& what) {
+    throw Error(kExitDataErr, SourcePos{name, line, col}.str() + ": " + what + " nest deeper than " +
+                                  std::to_string(kMaxNesting) + " levels; a manifest needs at most 3");
+  };
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    ++col;
+    if (c == '\n') {
+      ++line;
+      col = 0;
+      parts = 1;
+      continue;
+    }
+    if (c == '#') {  // a comment, to the end of the line
+      while (i + 1 < text.size() && text[i + 1] != '\n') ++i;
+      continue;
+    }
+    if (c == '"' || c == '\'') {
+      const bool multi = text.compare(i, 3, std::string(3, c)) == 0;
+      const std::string close = multi ? std::string(3, c) : std::string(1, c);
+      size_t j = i + close.size();
+      while (j < text.size() && text.compare(j, close.size(), close) != 0) {
+        if (c == '"' && text[j] == '\\') ++j;  // basic strings escape; literal ones do not
+        if (j < text.size() && text[j] == '\n') {
+          ++line;
+          col = 0;
+        }
+        ++j;
+      }
+      i = std::min(text.size(), j + close.size()) - 1;
+      continue;
+    }
+    if (c == '[' || c == '{') {
+      if (++depth > kMaxNesting) fail("arrays, tables and inline tables");
+    } else if (c == ']' || c == '}') {
+      depth = std::max(0, depth - 1);
+    } else if (c == '=' || c == ',') {
+      parts = 1;
+    } else if (c == '.') {
+      const bool digits = i > 0 && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i - 1])) &&
+                          std::isdigit(static_cast<unsigned char>(text[i + 1]));
+      if (!digits && ++parts > kMaxNesting) fail("the parts of a dotted key");
+    }
+  }
+}
+
 }  // namespace
 
 Scene parseManifest(const std::string& text, const std::string& name) {
   Reader r{name};
   screenNonAscii(text, name);
+  screenNesting(text, name);
   toml::table root;
   try {
     root = toml::parse(text, name);
@@ -325,12 +382,7 @@ Scene parseManifest(const std::string& text, const std::string& name) {
 }
 
 Scene readManifest(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(kExitNoInput, "cannot read scene " + path + ": " + std::strerror(errno));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw Error(kExitNoInput, "cannot read scene " + path);
-  Scene s = parseManifest(ss.str(), path);
+  Scene s = parseManifest(readInputFile(path, "scene", kCapManifest), path);
   s.path = path;
   size_t slash = path.find_last_of('/');
   s.baseDir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);

@@ -129,6 +129,7 @@ int runScenePlan(const SceneOptions& o) {
 }
 
 int runSceneBake(const SceneOptions& o) {
+  if (!o.stamp.empty()) checkReplaceableFile(o.stamp, "--stamp");  // before anything is baked
   Loaded l = load(o);
   ScenePlan& p = l.part;
   Plan todo;

@@ -16,7 +16,8 @@ enum ExitCode : int {
   kExitUnavailable = 69,  // EX_UNAVAILABLE: no OpenCL platform/device
   kExitSoftware = 70,     // EX_SOFTWARE: internal error (kernel build failure, NaN in output)
   kExitCantCreat = 73,    // EX_CANTCREAT: output cannot be created
-  kExitIoErr = 74,        // EX_IOERR: I/O error while writing
+  kExitIoErr = 74,        // EX_IOERR: I/O error while writing (disk full, quota, no inodes)
+  kExitTempFail = 75,     // EX_TEMPFAIL: try again later (another bake holds the output directory)
 };
 
 class Error : public std::runtime_error {

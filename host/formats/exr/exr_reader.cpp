@@ -15,6 +15,7 @@
 #include <cstdint>
 
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "formats/exr/exr_internal.h"
 #include "formats/exr/table_file.h"
 
@@ -44,12 +45,7 @@ auto guardRead(const std::string& path, F&& f) -> decltype(f()) {
 namespace exr {
 
 std::unique_ptr<Imf::InputFile> openExr(const std::string& path) {
-  struct stat st;
-  if (::stat(path.c_str(), &st) != 0) {
-    const int err = errno;
-    readError(path, errnoText(err));
-  }
-  if (S_ISDIR(st.st_mode)) readError(path, errnoText(EISDIR));
+  checkInputFile(path, "", kCapTable);  // a regular file: OpenEXR would block on a FIFO
   auto file = guardRead(path, [&] { return std::make_unique<Imf::InputFile>(path.c_str(), 0); });
   if (!file->isComplete()) readError(path, "file is incomplete (truncated?)");
   return file;

@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "formats/readers/reader_internal.h"
 
 namespace brdfbake {
@@ -19,7 +20,7 @@ std::string fileBytes(const std::string& path, size_t limit) {
   auto missing = [&](int err) { throw Error(kExitNoInput, "cannot read " + path + ": " + std::strerror(err)); };
   int fd;
   do {
-    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);  // a FIFO's open would block
   } while (fd < 0 && errno == EINTR);
   if (fd < 0) missing(errno);
   struct stat st;
@@ -28,6 +29,11 @@ std::string fileBytes(const std::string& path, size_t limit) {
     ::close(fd);
     missing(err);
   }
+  if (!S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw Error(kExitNoInput, "cannot read " + path + ": " + fileTypeName(st.st_mode) + ", not a regular file");
+  }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   std::string out;
   char buf[65536];
   while (out.size() < limit) {

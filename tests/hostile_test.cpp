@@ -1,0 +1,82 @@
+// Hostile input: what is not a regular file is refused before it is read (a FIFO would block the
+// read forever, /dev/zero never ends), nesting that would overflow the TOML parser's stack is
+// refused before it parses, and a --stamp that is not a file is refused before anything is baked.
+// Each command runs under `timeout 20`: a hang fails as exit 124 instead of stalling the suite.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "cli_run.h"
+
+namespace fs = std::filesystem;
+using namespace brdfbake::testing_cli;
+
+namespace {
+
+CmdResult runBounded(const std::string& args, const std::string& cwd) { return run(args, cwd, "timeout 20"); }
+
+void expectRefused(const CmdResult& r, int code, const std::string& says, const std::string& what) {
+  EXPECT_EQ(r.code, code) << what << "\n" << r.out;
+  EXPECT_NE(r.out.find(says), std::string::npos) << what << "\n" << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << what << ": one line\n" << r.out;
+}
+
+}  // namespace
+
+TEST(Hostile, NonRegularInputsAreRefusedBeforeTheyAreRead) {
+  const fs::path d = freshDir("hostile", "inputs");
+  ASSERT_EQ(::mkfifo((d / "f.exr").c_str(), 0600), 0);
+  ASSERT_EQ(::mkfifo((d / "f.toml").c_str(), 0600), 0);
+  ASSERT_EQ(::mkfifo((d / "f.binary").c_str(), 0600), 0);
+  fs::create_symlink("/dev/zero", d / "zero.toml");
+  fs::create_symlink("/dev/zero", d / "zero.gltf");
+  fs::create_directory(d / "dir.toml");
+  const std::string fifo = "a FIFO (named pipe), not a regular file";
+  expectRefused(runBounded("info f.exr", d.string()), 66, "cannot read f.exr: " + fifo, "info FIFO");
+  expectRefused(runBounded("shader --lang glsl f.exr", d.string()), 66, "cannot read f.exr: " + fifo, "shader FIFO");
+  expectRefused(runBounded("plan f.toml", d.string()), 66, "cannot read scene f.toml: " + fifo, "plan FIFO");
+  expectRefused(runBounded("plan zero.toml", d.string()), 66, "zero.toml: a character device, not a regular file",
+                "plan /dev/zero");
+  expectRefused(runBounded("bake zero.gltf", d.string()), 66, "zero.gltf: a character device", "bake glTF /dev/zero");
+  expectRefused(runBounded("plan dir.toml", d.string()), 66, "dir.toml: a directory, not a regular file", "plan dir");
+  expectRefused(runBounded("bake --brdf merl:f.binary -o out", d.string()), 66, "cannot read MERL file f.binary: " + fifo,
+                "MERL FIFO");
+  EXPECT_FALSE(fs::exists(d / "out"));
+}
+
+TEST(Hostile, DeepNestingIsRefusedBeforeTheParserRecurses) {
+  const fs::path d = freshDir("hostile", "nesting");
+  std::string key = "a";
+  for (int i = 0; i < 50000; ++i) key += ".a";  // 100 KB, one dotted key: overflows toml++'s stack
+  std::ofstream(d / "key.toml") << "# a comment\n" << key << " = 1\n";
+  std::ofstream(d / "arrays.toml") << "x = " << std::string(5000, '[') << std::string(5000, ']') << "\n";
+  expectRefused(runBounded("plan key.toml", d.string()), 65,
+                "key.toml:2:64: the parts of a dotted key nest deeper than 32 levels", "dotted key");
+  expectRefused(runBounded("bake key.toml", d.string()), 65, "key.toml:2:64:", "dotted key, bake");
+  expectRefused(runBounded("plan arrays.toml", d.string()), 65,
+                "arrays.toml:1:37: arrays, tables and inline tables nest deeper than 32 levels", "arrays");
+  // within the limit, and dots in strings, comments and numbers: not nesting
+  std::ofstream(d / "fine.toml") << "# a.b.c.d.e.f.g.h.i.j.k.l.m.n.o.p.q.r.s.t.u.v.w.x.y.z.aa.bb.cc.dd.ee.ff.gg.hh\n"
+                                 << "name = \"a.b.c.d.e.f.g.h.i.j.k.l.m.n.o.p.q.r.s.t.u.v.w.x.y.z.a.b.c.d.e.f.g.h\"\n"
+                                 << "[[material]]\nname = \"m\"\nndf = \"ggx\"\ngaf = \"smith-correlated\"\n"
+                                 << "roughness = [0.125, 0.5]\n";
+  CmdResult r = runBounded("plan fine.toml", d.string());
+  EXPECT_EQ(r.out.find("nest deeper"), std::string::npos) << r.out;
+}
+
+TEST(Hostile, StampThatIsNotAFileIsRefusedBeforeBaking) {
+  const fs::path d = freshDir("hostile", "stamp");
+  fs::copy_file(fs::path(BRDFBAKE_SOURCE_DIR) / "examples/scenes/pbr-desktop.toml", d / "s.toml");
+  ASSERT_EQ(::mkfifo((d / "stamp").c_str(), 0600), 0);
+  fs::create_directory(d / "stampdir");
+  expectRefused(runBounded("bake s.toml -o out --stamp stamp", d.string()), 73,
+                "--stamp stamp: a FIFO (named pipe), not a regular file", "stamp FIFO");
+  expectRefused(runBounded("bake s.toml -o out --stamp stampdir", d.string()), 73, "--stamp stampdir: a directory",
+                "stamp dir");
+  EXPECT_FALSE(fs::exists(d / "out")) << "baked before the stamp was checked";
+  struct stat st {};
+  ASSERT_EQ(::lstat((d / "stamp").c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode)) << "the FIFO was replaced";
+}
