@@ -40,7 +40,7 @@ std::vector<TableReport> runPlan(const Plan& plan) {
   FileSet set;
   set.extraStrings = plan.extraStrings;
   for (const Job& j : plan.jobs) j.family->addFiles(ctx, j, set);
-  commitOutputs(plan.outDir, set.files);
+  commitOutputs(plan.outDir, set.files, !plan.noWait);
   for (auto& after : set.afterCommit) after();
   return set.reports;
 }

@@ -258,6 +258,9 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       once(opt, "--output");
       req.outDir = value();
       if (req.outDir.empty()) throw Error(kExitUsage, opt + ": empty directory name");
+    } else if (opt == "--no-wait") {
+      once(opt, opt);
+      req.noWait = true;
     } else if (opt == "--device") {
       once(opt, "--device");
       req.device = value();

@@ -136,6 +136,8 @@ std::vector<OptionInfo> makeOptions() {
        precisionNames()},
       {"--half", "", "", B, "Output", "--precision float16", {}},
       {"--output", "-o", "DIR", B | V | S | C | P | SB, "Output", "output directory, created with its parents (default out)", {}},
+      {"--no-wait", "", "", B | SB, "Output",
+       "when another bake is writing into -o, exit 75 at once instead of waiting for it", {}},
       {"--layout", "", "NAME", B, "Engine layout",
        "--table splitsum arranged as an engine samples it (axes, flips, channels, format, precision, "
        "size, grid): " + joinNames(layoutNames()) + "\n(unity-hdrp-sqrt: x = sqrt(NdotV), node grid; docs/layouts.md)",

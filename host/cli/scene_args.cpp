@@ -45,6 +45,8 @@ bool parseSceneCommand(const std::vector<std::string>& args, Command& cmd) {
       o.shards = static_cast<int>(b);
     } else if (opt == "--list") {
       o.list = true;
+    } else if (opt == "--no-wait") {
+      o.noWait = true;
     } else if (opt == "--force") {
       o.force = true;
     } else if (opt == "--prune") {

@@ -9,10 +9,12 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <thread>
 
 #include "common/errors.h"
 #include "common/input_file.h"
+#include "formats/commit_record.h"
 
 namespace brdfbake {
 
@@ -130,7 +132,7 @@ void guardInterrupts(const std::string& what) {
   }
 }
 
-void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files) {
+void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files, bool wait) {
   if (files.size() > static_cast<size_t>(kMaxPaths))
     throw Error(kExitUsage, "too many tables in one bake (" + std::to_string(files.size()) + "; at most " +
                                 std::to_string(kMaxPaths) + ")");
@@ -157,14 +159,49 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files)
     }
     created.push_back(*it);
   }
+  // every file lands in `dir` itself: the commit record names them relative to it
+  struct stat dirSt {};
+  ::stat(p.c_str(), &dirSt);
+  for (const auto& f : files) {
+    struct stat st {};
+    if (::stat(parentOf(f.path).c_str(), &st) != 0 || st.st_dev != dirSt.st_dev || st.st_ino != dirSt.st_ino) {
+      cleanUp({}, created);
+      throw Error(kExitSoftware, "internal: " + f.path + " is not in the output directory " + dir);
+    }
+  }
+
+  // one writer at a time; then finish or sweep what a killed writer left
+  std::vector<std::string> temps;
+  std::unique_ptr<DirLock> lock;
+  try {
+    lock = std::make_unique<DirLock>(p, wait);
+    if (gNumPaths < kMaxPaths) {  // the handler removes the holder line with the rest
+      copyTo(gPaths[gNumPaths], lock->infoPath());
+      gNumPaths = gNumPaths + 1;
+    }
+    recoverDirectory(p);
+  } catch (...) {
+    lock.reset();
+    cleanUp({}, created);
+    throw;
+  }
 
   // every file to its temporary, synced
-  std::vector<std::string> temps;
   try {
     for (const auto& f : files) {
-      std::string tmp = temporaryPathFor(f.path);
+      // created and registered with the signals held, so the handler knows every temporary
+      sigset_t set = interruptSet(), prev;
+      ::sigprocmask(SIG_BLOCK, &set, &prev);
+      std::string tmp;
+      try {
+        tmp = makeTemporaryFor(f.path);
+      } catch (...) {
+        ::sigprocmask(SIG_SETMASK, &prev, nullptr);
+        throw;
+      }
       copyTo(gPaths[gNumPaths], tmp);
       gNumPaths = gNumPaths + 1;
+      ::sigprocmask(SIG_SETMASK, &prev, nullptr);
       temps.push_back(tmp);
       if (f.write) f.write(tmp);
       else writeTableExrTemporary(tmp, f.path, *f.image, f.half);
@@ -179,6 +216,8 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files)
   // For tests of interrupted writes: hold here, every temporary written, nothing renamed yet.
   if (const char* hold = std::getenv("BRDFBAKE_TEST_HOLD_BEFORE_COMMIT_MS"))
     std::this_thread::sleep_for(std::chrono::milliseconds(std::atoi(hold)));
+  // For tests of interleaved writers: a pause between renames.
+  const char* renameDelay = std::getenv("BRDFBAKE_TEST_RENAME_DELAY_MS");
 
   // The renames, with the interrupt signals held back until all have landed (or been undone).
   sigset_t set = interruptSet(), old;
@@ -194,18 +233,34 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files)
     backups[k] = temps[k] + ".old";
     if (::link(files[k].path.c_str(), backups[k].c_str()) != 0) {
       failure = "cannot keep a backup of " + files[k].path + ": " + errnoText(errno);
-      code = kExitCantCreat;
+      code = errno == ENOSPC || errno == EDQUOT ? kExitIoErr : kExitCantCreat;
       backups[k].clear();
     }
   }
+  // the record first: a run killed from here on is finished by the next one (recoverDirectory)
+  std::string record;
+  if (failure.empty()) {
+    std::vector<std::pair<std::string, std::string>> pairs;
+    for (size_t k = 0; k < files.size(); ++k) pairs.push_back({temps[k], files[k].path});
+    try {
+      record = writeCommitRecord(p, pairs);
+    } catch (const Error& e) {
+      failure = e.what();
+      code = e.code();
+    }
+    testKillPoint("record");
+  }
   size_t landed = 0;
   for (; landed < files.size() && failure.empty(); ++landed) {
+    if (landed > 0 && renameDelay) std::this_thread::sleep_for(std::chrono::milliseconds(std::atoi(renameDelay)));
     if (std::rename(temps[landed].c_str(), files[landed].path.c_str()) != 0) {
       failure = "cannot create " + files[landed].path + ": " + errnoText(errno);
-      code = kExitCantCreat;
+      code = errno == ENOSPC || errno == EDQUOT ? kExitIoErr : kExitCantCreat;
       break;
     }
+    testKillPoint("rename:" + std::to_string(landed + 1));
   }
+  if (failure.empty()) testKillPoint("renamed");
   if (!failure.empty()) {
     for (size_t k = 0; k < landed; ++k) {
       if (!backups[k].empty()) {
@@ -218,15 +273,9 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files)
   }
   for (const auto& b : backups)
     if (!b.empty()) ::unlink(b.c_str());
-  if (!failure.empty()) {
-    cleanUp(temps, created);
-  } else {
-    int fd = ::open(p.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd >= 0) {
-      ::fsync(fd);  // the renames themselves reach the disk
-      ::close(fd);
-    }
-  }
+  if (!record.empty()) removeCommitRecord(p, record);  // landed, or put back as it was
+  lock.reset();
+  if (!failure.empty()) cleanUp(temps, created);
   // Done with what the handler would remove. A signal that arrived meanwhile is delivered with its
   // default action once unblocked: the set has landed whole (or not at all) by then.
   gNumPaths = 0;

@@ -33,7 +33,9 @@ void guardInterrupts(const std::string& what);
 // Creates `dir` (and missing parents), writes every file to a temporary, syncs, renames them all.
 // Error kExitIoErr (write failed, e.g. disk full) or kExitCantCreat (cannot create); in either case
 // nothing is left behind and files that were there before are unchanged.
-void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files);
+// Under the directory's lock (formats/commit_record.h; wait = false: Error(kExitTempFail) when another
+// process holds it), after finishing what a killed bake left there.
+void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files, bool wait = true);
 
 // Before any work, for a file a later writeTextFile replaces (`option` names it: "--stamp"): it
 // is absent or a regular file, and its directory exists or can be created. Throws

@@ -21,6 +21,7 @@ Plan makePlan(const BakeRequest& given) {
   Plan plan;
   plan.outDir = req.outDir;
   plan.device = req.device;
+  plan.noWait = req.noWait;
   for (const TableFamily* f : families())
     for (Job& j : f->plan(req)) plan.jobs.push_back(std::move(j));
   return plan;

@@ -135,6 +135,7 @@ int runSceneBake(const SceneOptions& o) {
   Plan todo;
   todo.outDir = p.plan.outDir;
   todo.device = p.plan.device;
+  todo.noWait = o.noWait;
   int upToDate = 0;
   for (const auto& t : p.tables) {
     if (!o.force && statusOf(t) == Status::UpToDate) {

@@ -13,6 +13,7 @@ struct SceneOptions {
   bool list = false;       // plan: only the output paths, absolute, one per line
   std::string stamp;       // bake: written (atomically) after a successful bake, listing the outputs
   std::string device, cacheDir;
+  bool noWait = false;     // bake: exit 75 instead of waiting when another bake writes into the directory
 };
 
 // Prints the plan: each table, why, its size and estimated cost, whether it is new, changed or up to

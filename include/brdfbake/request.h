@@ -33,6 +33,7 @@ struct BakeRequest {
   std::optional<bool> muSqrt;
   std::string device;                // substring of the device (or platform) name; "" = first CPU
   std::string cacheDir;              // PoCL kernel cache (POCL_CACHE_DIR); "" = PoCL's default
+  bool noWait = false;               // another bake writing into outDir: Error(kExitTempFail) instead of waiting
   FresnelChoice fresnel;             // --fresnel and its parameters (validated)
   bool fresnelGiven = false;
   int diffuse = -1;                  // --diffuse: DIFFUSE_* id, or -1

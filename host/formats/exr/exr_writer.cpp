@@ -22,6 +22,7 @@
 #include <cstdio>
 
 #include "common/errors.h"
+#include "formats/commit_record.h"
 #include "formats/exr/exr_internal.h"
 #include "formats/exr/table_file.h"
 
@@ -96,14 +97,7 @@ class TempFileGuard {
 
 }  // namespace
 
-std::string temporaryPathFor(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  if (name.empty() || name == "." || name == "..")
-    throw Error(kExitCantCreat, "cannot create " + path + ": not a file name");
-  return dir + "." + name + ".tmp-" + std::to_string(::getpid());
-}
+std::string temporaryPathFor(const std::string& path) { return makeTemporaryFor(path); }
 
 void writeTableExr(const std::string& path, const TableImage& img, bool half) {
   const std::string tmp = temporaryPathFor(path);

@@ -32,7 +32,7 @@ namespace brdfbake {
 // screenWindowCenter, screenWindowWidth, tiles, type, name, version, chunkCount,
 // maxSamplesPerPixel); otherwise kExitDataErr too.
 //
-// Atomic: writes `<dir>/.<name>.tmp-<pid>` next to `path`, fsyncs it, then renames it
+// Atomic: writes a unique `<dir>/.<name>.brdfbake-tmp-XXXXXX` next to `path`, fsyncs it, then renames it
 // onto `path`.  On failure the temp file is removed and Error is thrown whose message
 // names `path`: kExitCantCreat if the temp file cannot be created or the rename fails,
 // kExitIoErr for errors while writing.
@@ -53,7 +53,8 @@ void writeTableExrTemporary(const std::string& tmp, const std::string& path, con
 using TableRowFill = std::function<void(int y0, int rows, std::vector<std::vector<float>>& planes)>;
 void writeTableExrRowsTemporary(const std::string& tmp, const std::string& path, const TableImage& meta, bool half,
                                 int rowsPerBlock, const TableRowFill& fill);
-// `<dir>/.<name>.tmp-<pid>` for `path`; throws kExitCantCreat when path names no file.
+// A unique temporary next to `path` (formats/commit_record.h makeTemporaryFor: created, empty);
+// throws kExitCantCreat when path names no file, kExitIoErr when the file system is full.
 std::string temporaryPathFor(const std::string& path);
 
 // Reads a file written by writeTableExr (or any single-part scanline EXR with R/G/B/A

@@ -1,0 +1,61 @@
+// One writer per output directory, and a commit that a killed run cannot leave half done
+// (docs/reliability.md). commitOutputs (formats/output_set.h) uses all of it:
+//  - DirLock: flock on the directory itself, released by the kernel when the process dies; a
+//    second bake waits (saying once, after 1 s, who holds it) or, without waiting, exits 75;
+//  - the commit record: before the first rename, the list of (temporary, target) pairs, synced;
+//    removed once every rename has landed;
+//  - recoverDirectory: under the lock, finishes the renames of a record a killed run left (its
+//    temporaries were synced before the record was written), then removes every temporary and
+//    backup of this tool in the directory.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace brdfbake {
+
+// The hidden names this tool uses in an output directory.
+inline const char* const kLockInfoName = ".brdfbake-lock";     // who holds the lock (while held)
+inline const char* const kCommitRecordName = ".brdfbake-commit";  // a commit in progress
+// A temporary for `path` in the same directory, unique (mkstemp): `.<name>.brdfbake-tmp-XXXXXX`.
+// The file exists (empty) when this returns. Error(kExitCantCreat), or kExitIoErr when the file
+// system is full (no space, quota or inodes).
+std::string makeTemporaryFor(const std::string& path);
+// Whether a directory entry's name is one of this tool's temporaries or backups (also the
+// `.<name>.tmp-<pid>` form of earlier releases).
+bool isOurTemporary(const std::string& name);
+
+class DirLock {
+ public:
+  // Locks `dir` (an existing directory). wait = false: Error(kExitTempFail) at once when another
+  // process holds it, naming that process.
+  DirLock(const std::string& dir, bool wait);
+  ~DirLock();
+  DirLock(const DirLock&) = delete;
+  DirLock& operator=(const DirLock&) = delete;
+  const std::string& infoPath() const { return info_; }
+
+ private:
+  int fd_ = -1;
+  std::string info_;
+};
+
+// Under the lock: finishes an interrupted commit (prints one line to stderr saying so) and sweeps
+// this tool's temporaries. Error(kExitIoErr) when a rename or removal fails.
+void recoverDirectory(const std::string& dir);
+
+// Writes and syncs the record of `pairs` (temporary, target), both paths inside `dir`; returns its
+// path. Error(kExitIoErr) / Error(kExitCantCreat) when it cannot be written.
+std::string writeCommitRecord(const std::string& dir, const std::vector<std::pair<std::string, std::string>>& pairs);
+// Removes the record and syncs the directory.
+void removeCommitRecord(const std::string& dir, const std::string& record);
+
+// For tests of killed commits: when $BRDFBAKE_TEST_KILL_AT equals `step` ("record", "rename:N",
+// "renamed"), the process sends itself SIGKILL there.
+void testKillPoint(const std::string& step);
+
+// Error(kExitIoErr) for errno values that mean the file system is full (ENOSPC, EDQUOT), else
+// Error(kExitCantCreat); the message is `what` + ": " + strerror.
+[[noreturn]] void throwFileError(int err, const std::string& what);
+
+}  // namespace brdfbake

@@ -1,0 +1,104 @@
+// One writer per output directory and a commit that lands whole (formats/commit_record.h): a second
+// bake waits for the first (or exits 75 with --no-wait), two racing bakes end in one run's complete
+// set, and a bake killed at any step of its commit is finished by the next one, leaving the
+// directory byte-identical to an uninterrupted bake's and free of hidden files.
+// Test hooks: BRDFBAKE_TEST_HOLD_BEFORE_COMMIT_MS (hold with every temporary written),
+// BRDFBAKE_TEST_RENAME_DELAY_MS (pause between renames), BRDFBAKE_TEST_KILL_AT (SIGKILL at a step).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <future>
+#include <map>
+#include <thread>
+
+#include "cli_run.h"
+
+namespace fs = std::filesystem;
+using namespace brdfbake::testing_cli;
+
+namespace {
+
+// name -> bytes of every entry (hidden ones included)
+std::map<std::string, std::string> contents(const fs::path& d) {
+  std::map<std::string, std::string> m;
+  for (const auto& e : fs::directory_iterator(d)) m[e.path().filename().string()] = bytes(e.path());
+  return m;
+}
+
+std::vector<std::string> hidden(const fs::path& d) {
+  std::vector<std::string> h;
+  for (const auto& e : fs::directory_iterator(d))
+    if (e.path().filename().string()[0] == '.') h.push_back(e.path().filename().string());
+  return h;
+}
+
+const char* const kSmall = "--table splitsum,albedo,albedo-avg,kp --size 8";
+const char* const kOther = "--table splitsum,albedo,albedo-avg,kp --size 16";
+
+}  // namespace
+
+TEST(Commit, SecondWriterWaitsOrExits75) {
+  const fs::path d = freshDir("commit", "lock");
+  ASSERT_EQ(run(std::string(kOther) + " -o ref16", d.string()).code, 0);
+  auto first = std::async(std::launch::async, [&] {
+    return run(std::string(kSmall) + " -o o", d.string(), "BRDFBAKE_TEST_HOLD_BEFORE_COMMIT_MS=4000");
+  });
+  // the first holds the lock once its temporaries exist
+  for (int i = 0; i < 200; ++i) {
+    bool temps = fs::exists(d / "o") && !hidden(d / "o").empty();
+    if (temps) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  CmdResult busy = run(std::string(kOther) + " -o o --no-wait", d.string());
+  EXPECT_EQ(busy.code, 75) << busy.out;
+  EXPECT_NE(busy.out.find("-o o: another bake is writing there (PID "), std::string::npos) << busy.out;
+  EXPECT_NE(busy.out.find("--size 8 -o o)"), std::string::npos) << "names the holder's command: " << busy.out;
+  CmdResult waited = run(std::string(kOther) + " -o o", d.string());
+  EXPECT_EQ(waited.code, 0) << waited.out;
+  EXPECT_NE(waited.out.find("brdfbake: waiting for o: another bake is writing there"), std::string::npos) << waited.out;
+  EXPECT_EQ(first.get().code, 0);
+  // the waiting bake committed last: its whole set, nothing of the first, no hidden files
+  EXPECT_EQ(contents(d / "o"), contents(d / "ref16"));
+}
+
+TEST(Commit, RacingWritersEndInOneCompleteSet) {
+  const fs::path d = freshDir("commit", "race");
+  ASSERT_EQ(run(std::string(kSmall) + " -o ref8", d.string()).code, 0);
+  ASSERT_EQ(run(std::string(kOther) + " -o ref16", d.string()).code, 0);
+  // a pause between renames makes an unlocked interleaving certain
+  const std::string env = "BRDFBAKE_TEST_RENAME_DELAY_MS=300";
+  auto a = std::async(std::launch::async, [&] { return run(std::string(kSmall) + " -o o", d.string(), env); });
+  auto b = std::async(std::launch::async, [&] { return run(std::string(kOther) + " -o o", d.string(), env); });
+  EXPECT_EQ(a.get().code, 0);
+  EXPECT_EQ(b.get().code, 0);
+  const auto got = contents(d / "o");
+  EXPECT_TRUE(got == contents(d / "ref8") || got == contents(d / "ref16")) << "a mix of two runs' files";
+}
+
+TEST(Commit, KilledCommitIsFinishedByTheNextBake) {
+  const fs::path d = freshDir("commit", "kill");
+  ASSERT_EQ(run(std::string(kSmall) + " -o ref", d.string()).code, 0);
+  const auto ref = contents(d / "ref");
+  ASSERT_EQ(ref.size(), 4u);
+  for (const std::string step : {"record", "rename:1", "rename:2", "rename:3", "rename:4", "renamed"}) {
+    fs::remove_all(d / "o");
+    ASSERT_EQ(run(std::string(kOther) + " -o o", d.string()).code, 0);  // files to replace
+    CmdResult killed = run(std::string(kSmall) + " -o o", d.string(), "BRDFBAKE_TEST_KILL_AT=" + step);
+    EXPECT_NE(killed.code, 0) << step;
+    EXPECT_FALSE(hidden(d / "o").empty()) << step << ": the kill left nothing to recover";
+    CmdResult next = run(std::string(kSmall) + " -o o", d.string());
+    EXPECT_EQ(next.code, 0) << step << "\n" << next.out;
+    EXPECT_NE(next.out.find("finished the commit of a bake that was killed"), std::string::npos) << step << next.out;
+    EXPECT_EQ(contents(d / "o"), ref) << step;
+    EXPECT_TRUE(hidden(d / "o").empty()) << step;
+  }
+  // a kill before the record (temporaries only): swept, with the temporaries of earlier releases
+  fs::remove_all(d / "o");
+  fs::create_directory(d / "o");
+  for (const char* n : {".kp_ggx.exr.tmp-12345", ".kp_ggx.exr.tmp-12345.old", ".x.exr.brdfbake-tmp-AbC123"})
+    std::ofstream(d / "o" / n) << "partial";
+  std::ofstream(d / "o" / ".mine") << "not ours";
+  ASSERT_EQ(run(std::string(kSmall) + " -o o", d.string()).code, 0);
+  EXPECT_EQ(hidden(d / "o"), std::vector<std::string>{".mine"});
+}
