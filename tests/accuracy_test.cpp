@@ -22,7 +22,7 @@ using namespace brdfbake;
 using testing_device::rel;
 using testing_device::runner;
 
-constexpr double kGoal = 1e-5;  // issue #2: every texel within 1e-5 of the exact integral
+constexpr double kGoal = 1e-5;  // the goal: every texel within 1e-5 of the exact integral
 // The reference's own accuracy (adaptive GK31 to ~1e-11; limits from inside to ~1e-9).
 constexpr double kReferenceSlack = 3e-9;
 constexpr double kLimitSlack = 1e-7;

@@ -2,9 +2,9 @@
 //
 // E_avg = sum_k W_k E_k (W_k = the GK31 weight times 2 mu_k, sum 1) from node values the device
 // computes in float; the host sums them in double. The sum's float error is sum_k W_k d_k, d_k
-// the nodes' own float errors. Bounding each d_k by the per-texel model and adding them (what
-// tables/error_model.h's avgFloatArithmeticError did before) ignores that the d_k have both signs
-// and mostly cancel: it claimed 13 u against measured errors near 1 u. This test measures the
+// the nodes' own float errors. Bounding each d_k by the per-texel model and adding them (the bound
+// tables/error_model.h derives) ignores that the d_k have both signs and mostly cancel: it claims
+// 13 u against measured errors near 1 u. This test measures the
 // average's float error directly — the bake's rule (host/cl/avg_rule.h, its panels included) with
 // the device's nodes against the same rule in double at the same nodes, each node taking the budget
 // (default or refined) its device value came from — for every

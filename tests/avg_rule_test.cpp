@@ -13,7 +13,7 @@
 // every r of 32- and 64-entry tables and a 33-entry node grid instead (how the floors were set:
 // ~35 minutes on two cores; BRDFBAKE_AVG_GAFS=0,2 restricts it to those GAF ids). The reference's
 // values at the default r come from tests/data/reference_values.txt (tests/reference_cache.h):
-// computing them all was 96% of this test's time, about 7 minutes of CPU for the four NDFs.
+// computing them all takes 96% of this test's time, about 7 minutes of CPU for the four NDFs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -54,8 +54,8 @@ std::vector<float> sweepR() {
     return rs;
   }
   // the horizon layer's range (alpha < 0.01: r < 0.1) and the largest misses of the sweep (r = 7/64
-  // and 1/8, just above it), the rest sparsely, and the ends (8 r: the 11 of sessions 21 and 22 made
-  // this the suite's longest test, 2.5 minutes for ggx alone on a loaded machine)
+  // and 1/8, just above it), the rest sparsely, and the ends (8 r: 11 make this the suite's longest
+  // test, 2.5 minutes for ggx alone on a loaded machine)
   for (int j : {1, 5, 7, 8, 21, 63}) rs.push_back(static_cast<float>(j) / 64.0f);
   for (float r : {0.0f, 1.0f}) rs.push_back(r);
   return rs;

@@ -57,13 +57,13 @@ TEST(Dielectric, KernelMatchesReference) {
       worst = std::max({worst, er, et});
       EXPECT_LT(er, 1e-5) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " mu " << mu << " r " << r << " eta " << etas[z];
       EXPECT_LT(et, 1e-5) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " mu " << mu << " r " << r << " eta " << etas[z];
-      // the reference's own accuracy: ~1e-8 (two methods agree to 6e-8, README "Rough glass")
+      // the reference's own accuracy: ~1e-8 (two methods agree to 6e-8, docs/rough-glass.md)
       EXPECT_LE(std::max(er, et), t[2][k] + 1e-7) << "bound not honest at mu " << mu << " r " << r << " eta " << etas[z];
     }
   }
   // a rough surface, eta = 2.13: the refracting half-vector reaches the horizon inside the lobe, where
-  // D jumps to 0; the reference missed 7.4e-7 of E_T here (a cell of brdfbake-bench --dielectric over
-  // its bound 7.6e-7) until its circles split at that plane too.
+  // D jumps to 0; without its circles split at that plane too, the reference misses 7.4e-7 of E_T
+  // here (a cell of brdfbake-bench --dielectric over its bound 7.6e-7).
   {
     double mu = 15.5 / 32, r = 29.5 / 32, eta = 2.13;  // the device run tight (bound ~5e-10)
     auto t = runner().dielectricPoints(NDF_GGX, GAF_SMITH_CORRELATED, {mu}, {r}, {eta}, 1e-9f);
@@ -72,8 +72,8 @@ TEST(Dielectric, KernelMatchesReference) {
     EXPECT_LE(std::max(er, et), t[2][0] + t[3][0] + 1e-7) << "E_T " << t[1][0] << " reference " << ref.t;
   }
   // grazing view under TIR of the mean surface (sin theta_i > eta): the transmitted lobe hugs the
-  // horizon from below. The reference missed 5e-5 of E_T here until its circles split at the horizon
-  // (found by brdfbake-bench --dielectric, confirmed by Monte Carlo at 2^25 samples).
+  // horizon from below. Without its circles split at the horizon, the reference misses 5e-5 of E_T
+  // here (brdfbake-bench --dielectric; Monte Carlo at 2^25 samples sides with the table).
   {
     double mu = 1.5 / 32, r = 15.5 / 32, eta = 0.44051;
     auto t = runner().dielectricPoints(NDF_GGX, GAF_SMITH_CORRELATED, {mu}, {r}, {eta}, kDielectricTarget);
@@ -87,8 +87,8 @@ TEST(Dielectric, KernelMatchesReference) {
 
 // The rescaled estimates (kernels/integrate/dielectric.h) against the same rule converged (every inner
 // panel in 8, 64 outer panels), in double on the host: each lobe's error within its estimate. The
-// four texels where session 24 found a break missing (the estimate then 1.9 to 9.6 times below the
-// error) and a 3 x 3 grid at three etas, for a pair of each NDF and GAF.
+// four texels where, without their breaks, the estimate falls 1.9 to 9.6 times below the error,
+// and a 3 x 3 grid at three etas, for a pair of each NDF and GAF.
 TEST(Dielectric, RescaledEstimatesBoundTheConvergedRule) {
   struct Pt {
     double mu, r, eta;
@@ -209,8 +209,8 @@ TEST(Dielectric, EnergyAndFinitenessOverStressRanges) {
 // The averages over mu (dielectric-avg's rule, tables/dielectric_avg.h) with their nodes on the device,
 // against the same rule run on the host in double, nodes to 1e-9 and entries to 1.5e-9 (up to 48 panels):
 // stiff entries (the TIR kink near r = 0, mu^Lambda at mu = 0 for smith-correlated, eta near 1),
-// and for ggx two where the layer above the critical cosine made the rescaled estimates 32 and 24
-// times too small before it kept |K15 - G7| (session 25). Bounds under twice the target and honest,
+// and for ggx two where the layer above the critical cosine makes rescaled estimates 32 and 24
+// times too small (its panels keep |K15 - G7|). Bounds under twice the target and honest,
 // channel by channel. The E(mu) the rule averages is checked against the independent reference above.
 TEST(Dielectric, AveragesMatchTightRuleWithHonestBounds) {
   const int pairs[2][2] = {{NDF_GGX, GAF_SMITH_CORRELATED}, {NDF_BECKMANN, GAF_SMITH}};

@@ -184,10 +184,10 @@ TEST(Fresnel, AlbedoMatchesReference) {
 
 // Total internal reflection (eta = 1/1.5), in double on the host: every texel's claim (the chosen
 // budget's estimate with its floor, hemi_rel_error) against the same rule at level 3, on a 16x16
-// grid of ggx + smith-correlated, and the two texels where session 24 found the estimate 3.2 times
-// below the error (mu 0.92, r 0.86: whole circles just above the critical angle) and 240 times
-// above it (mu 0.73, r 0.48: a horizon break just short of the kink). The largest claim was
-// 2.44e-6 before; now every claim is under 4e-7.
+// grid of ggx + smith-correlated, and the two texels where the estimate falls 3.2 times below the
+// error without the graded panels (mu 0.92, r 0.86: whole circles just above the critical angle)
+// and stands 240 times above it with a horizon break just short of the kink (mu 0.73, r 0.48).
+// Every claim is under 4e-7.
 TEST(Fresnel, TirEstimatesBoundTheConvergedRule) {
   const int ndf = NDF_GGX, gaf = GAF_SMITH_CORRELATED;
   const double eta = static_cast<float>(1 / 1.5);

@@ -252,7 +252,7 @@ TEST(MerlLookup, MissingBinsLeaveTheWeightsAndNoSupportGivesFalse) {
 // integral. Its estimate must hold and be small next to the table's sampling error. The analytic
 // function takes the material's parameters rounded to float (as the device does, hostBrdf), so the
 // reference gets the same r and F0: r = 0.3 as a double would move E by 1.7e-8 at mu = 0.05 and
-// make an honest estimate look 4 times too small (session 25).
+// make an honest estimate look 4 times too small.
 TEST(MerlAlbedo, HSpaceQuadratureMatchesTheReferenceOnAnAnalyticMaterial) {
   for (double r : {0.3, 0.5, 0.8}) {
     Brdf3dSpec s = material(r);
@@ -270,12 +270,12 @@ TEST(MerlAlbedo, HSpaceQuadratureMatchesTheReferenceOnAnAnalyticMaterial) {
 }
 
 // On a MERL file's interpolant at grazing views: where a theta_d or phi_d edge's curve touches the
-// arc inside a theta_h bin, the inner integral has a square root; until session 25 the theta_h
-// panels were not cut there, the rules did not settle, and at r = 0.3, mu = 1/32 the (6,5) rule
-// was off by 4.4e-7 under an estimate of 1.4e-7. With the cuts the rules still converge only
-// algebraically there, and |R_6 - R_4| alone fell below R_6's error at 3 of 48 texel centres
-// (session 26). Against the (25,24) rule, above the ladder's rules: the ladder meets its target
-// below n = 25, its estimate holds, and the error is within the target.
+// arc inside a theta_h bin, the inner integral has a square root; without theta_h panels cut there
+// the rules do not settle, and at r = 0.3, mu = 1/32 the (6,5) rule is off by 4.4e-7 under an
+// estimate of 1.4e-7. With the cuts the rules converge, but only algebraically there, and
+// |R_6 - R_4| alone falls below R_6's error at 3 of 48 texel centres. Against the (25,24) rule,
+// above the ladder's rules: the ladder meets its target below n = 25, its estimate holds, and the
+// error is within the target.
 TEST(MerlAlbedo, EstimateHoldsOnAFilesInterpolantAtGrazingViews) {
   MerlData d = readMerl(merlFileOf(0.3).string());
   RusinkiewiczFn f = merlFunction(d);
@@ -291,8 +291,8 @@ TEST(MerlAlbedo, EstimateHoldsOnAFilesInterpolantAtGrazingViews) {
 }
 
 // brdf.error of a measured material's table: above every stored value's error and within 4 times
-// the largest (issue 9). Before session 26 it was the largest |R_6 - R_4| + the largest storage
-// rounding + a flat 2^-24 that was not derived, 1.1e-7 for this file against errors of ~2e-8.
+// the largest. The largest |R_6 - R_4| + the largest storage rounding + a flat 2^-24, which nothing
+// derives, would claim 1.1e-7 for this file against errors of ~2e-8.
 // Reference: the (20,19) rule, which the ladder does not reach here.
 TEST(MerlAlbedo, TableClaimBoundsTheStoredValuesWithinFourTimes) {
   MerlData d = readMerl(merlFileOf(0.3).string());

@@ -278,8 +278,8 @@ namespace {
 // The per-texel estimate pinned at texels across the regimes (both budgets, the rule's own: floor
 // excluded): an estimate that is doubled, halved or dropped somewhere in the estimator changes one
 // of these. Measured values of this estimator (every microfacet GAF's with the QUADPACK rescaling
-// and the trapezoid ladder: cook-torrance's and kelemen's were |K15 - G7| until session 22, whose
-// panels at their kinks and horizon layers took them from 1.1e-7 and 9.1e-7 to these; the refined
+// and the trapezoid ladder, cook-torrance's and kelemen's with their panels at the kinks and
+// horizon layers, without which their bare |K15 - G7| is 1.1e-7 and 9.1e-7 here; the refined
 // budget's of those two are down at double rounding, pinned as below 1e-13: their value there is
 // rounding noise); when the rule changes on purpose,
 // re-measure and re-pin (and rerun the honesty checks in tests/accuracy_test.cpp).

@@ -62,7 +62,7 @@ TEST(MuAxis, BadValuesAndTablesWithoutTheAxisExit64WritingNothing) {
     EXPECT_NE(r.out.find(msg), std::string::npos) << args << "\n" << r.out;
     EXPECT_FALSE(fs::exists(d)) << args;
   }
-  // linear is the default: accepted wherever (the tables with no mu axis are as they were)
+  // linear is the default: accepted wherever (the tables with no mu axis are unaffected)
   CmdResult help = run("--help");
   EXPECT_NE(help.out.find("--mu-axis A"), std::string::npos);
   EXPECT_NE(help.out.find("unity-hdrp-sqrt"), std::string::npos);

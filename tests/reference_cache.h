@@ -2,7 +2,7 @@
 //
 // The independent reference (host/reference: nested adaptive Gauss-Kronrod in double, 1e-11 per
 // integral) is what the slowest tests spent their time on: 96% of the average-albedo rule's tests,
-// about 95% of the Fresnel albedo's and the sheen average's (perf, session 26), some 500 s of the
+// about 95% of the Fresnel albedo's and the sheen average's (perf), some 500 s of the
 // suite's ~1900 s of CPU. Its values depend only on their arguments, so they are kept:
 //   - a test asks `cached(key, compute)`; the key names the quantity and its exact arguments
 //     (`keyOf`, doubles as hexadecimal floats);

@@ -174,11 +174,11 @@ TEST(Sheen, KernelAlbedoMatchesTheReference) {
 // theta_h = pi/6; mu = 0.7) and its (n.i)^c at i's horizon (grazing views of a smooth sheen). The
 // estimator in double against the reference: the error beyond the rule's own estimate stays within
 // a tenth of each budget's floor (measured at most 4.4e-9 and 1.1e-10 of E over 17 r x 27 mu).
-// Without the kink's breaks the default budget missed by 1.8e-7 (mu = 1, r = 0.8), without the
+// Without the kink's breaks the default budget misses by 1.8e-7 (mu = 1, r = 0.8), without the
 // horizon substitution the refined one by 2.7e-8 (mu = 0.01, r = 1/256).
 TEST(Sheen, RescaledEstimateHoldsAtTheFitsKinkAndHorizon) {
-  // the misses before the fix; the largest after it (mu = 3/8, 0.49 at r = 1); the views where a
-  // theta break meets theta_1 (cos(pi/12), cos(5 pi/12))
+  // the misses without the breaks and substitution; the largest with them (mu = 3/8, 0.49 at
+  // r = 1); the views where a theta break meets theta_1 (cos(pi/12), cos(5 pi/12))
   const std::array<std::pair<double, double>, 10> where = {{{1.0, 0.8},
                                                             {1.0, 0.625},
                                                             {0.7, 1.0},
@@ -285,7 +285,7 @@ TEST(Sheen, KernelAlbedoAvgAndKp) {
       double r = static_cast<float>((j + 0.5) / n);
       // 2 int E mu dmu of the reference's E by Gauss-Legendre 30 on [0, 0.1], [0.1, 1/2] and [1/2, 1]
       // (E is smooth in mu at this r but for charlie-smith's kink at mu = 1/2, where the view's fitted
-      // Lambda switches branch: without that split this reference was off by 3e-7;
+      // Lambda switches branch: without that split this reference is off by 3e-7;
       // reference::sheenAlbedoAvg's nested adaptive rule takes minutes)
       double want = testing_ref::cached1(testing_ref::keyOf("sheenAlbedoAvg gl30x3 " + gafNames()[gaf], {r}), [&] {
         double sum = 0;

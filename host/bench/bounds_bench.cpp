@@ -1,7 +1,7 @@
-// brdfbake-bench --bounds: how tight the claimed error bounds are (issue 9, "Honest and tight
-// error estimates"). For each model pair it bakes the default set's tables as brdfbake does
-// (computeTable: split-sum 128x128, albedo 32x32, albedo-avg 32, k_p 32 once per NDF; texel
-// centres, float) and measures, against the host reference (adaptive GK in double):
+// brdfbake-bench --bounds: how tight the claimed error bounds are. For each model pair it bakes
+// the default set's tables as brdfbake does (computeTable: split-sum 128x128, albedo 32x32,
+// albedo-avg 32, k_p 32 once per NDF; texel centres, float) and measures, against the host
+// reference (adaptive GK in double):
 //   - per table: the file's brdf.error, the largest true error, and their ratio;
 //   - per texel: the claimed bound (what brdf.error is the largest of) over the true error:
 //     its smallest value (below 1 = a dishonest bound) and its median;

@@ -22,14 +22,14 @@
 // Node k's refinement target (the estimator's second budget where its own bound exceeds it)
 // shares the inner term out by weight, AVG_TARGET / (n 2 mu_k w_k), but is never below the albedo
 // table's own target: every node at the refined budget would take E_avg to 8.8 to 9.0 times the
-// albedo table's time instead of 0.9 (`brdfbake-bench --albedo-avg` with the target below set to 0;
-// measured before the layer panels, which add ~10%: 0.90 after, in one loaded run),
-// and it is to cost no more than the albedo table it averages (issue 7).
+// albedo table's time instead of 0.9 (`brdfbake-bench --albedo-avg` with the target below set to 0,
+// measured without the layer panels, which add ~10%: 0.90 with them, in one loaded run),
+// and it is to cost no more than the albedo table it averages.
 // The nodes' bounds: for the plain average of the pairs with rescaled estimates, the rule's bare
 // estimates (no per-node floor) and one floor on E_avg, AVG_ERR_FLOOR, measured on the averages
-// (tests/avg_rule_test.cpp); each node's own floor (1e-7 of E at the default budget) assumed every
-// node missed by its worst in one direction, and made up two thirds of the default pair's
-// quadrature claim (1e-7 of 1.7e-7; the float model and the stored rounding are the rest).
+// (tests/avg_rule_test.cpp); each node's own floor (1e-7 of E at the default budget) would assume
+// every node misses by its worst in one direction, and would make up two thirds of the default
+// pair's quadrature claim (1e-7 of 1.7e-7; the float model and the stored rounding are the rest).
 // The entry's claim here is the quadrature's, plus the one rounding of the double sum to float,
 // known exactly (|float(sum) - sum|, at most half an ulp); the float arithmetic of the nodes is
 // tables/error_model.h's avgFloatArithmeticError.
@@ -190,7 +190,7 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
   // The rule's estimate is sharpened (brdf64::gk_error): E(mu) is analytic on each starting panel
   // (the horizon layer has its own; cook-torrance, neumann and charlie-smith's panels end at their
   // view breaks, gaf_view_breaks), except for a Fresnel weight with a critical angle (eta < 1),
-  // whose E_F(mu) has a square-root kink there. Charlie (sharpened since session 23) halves to its
+  // whose E_F(mu) has a square-root kink there. Charlie's is sharpened too and halves to its
   // own goal (its E(mu) at small r rises within mu ~ 0.05 of the horizon).
   // |K - G| estimates the Gauss rule's error; rescaled, it is at most 3.1e-8 on every such pair's
   // 32-entry table, against 2.8e-6 (ggx + schlick-ggx, r = 0.05 to 0.15, where E(mu) changes on the

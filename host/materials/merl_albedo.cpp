@@ -122,10 +122,10 @@ std::array<double, 3> hSpaceIntegral(const RusinkiewiczFn& f, double mu, HSpaceR
   // horizon's curve turns in theta_h (its ends at phi_h = 0 and pi: theta_h = pi/4 +- theta_o/2),
   // and where a theta_d edge's circle touches the arc o.h in [cos(theta_o + theta_h),
   // cos(theta_o - theta_h)] (theta_h = |theta_o - theta_d|, theta_o + theta_d): there its two phi_h
-  // cuts appear, a square root. Without those cuts the rules did not settle at grazing views of a
+  // cuts appear, a square root. Without those cuts the rules do not settle at grazing views of a
   // MERL file (r 0.3, mu 1/32: (4,3) to (15,14) spread over 4.6e-7, (6,5) off by 4.4e-7 under an
   // estimate of 1.4e-7); with them and the phi_d cuts below they converge monotonically, (6,5) within
-  // 8.1e-9 (session 25; MerlAlbedo.EstimateHoldsOnAFilesInterpolantAtGrazingViews).
+  // 8.1e-9 (MerlAlbedo.EstimateHoldsOnAFilesInterpolantAtGrazingViews).
   std::vector<double> ub;
   for (int k = 0; k <= kMerlThetaH; ++k) ub.push_back(k);
   const double thetaO = std::acos(mu);
@@ -201,9 +201,9 @@ std::array<double, 3> hSpaceIntegral(const RusinkiewiczFn& f, double mu, HSpaceR
 // The rules' errors fall algebraically here, not geometrically: where two bin edges' curves cross
 // inside a theta_h panel, and where the horizon cuts cells whose corners are partly unmeasured, the
 // inner integral is only a few times differentiable, so (n, n-1) errs about as n^-4 to n^-6 and
-// not always with one sign. So one difference, |R_6 - R_4|, was the coarse rule's error, 5 to 9
-// times the fine one's, and at times (3 of 48 texel centres, session 26) below it. The ladder
-// below takes three rules: R_k's estimate is max(|R_k - R_k-1|, |R_k - R_k-2|), which covered
+// not always with one sign. So one difference, |R_6 - R_4|, is the coarse rule's error, 5 to 9
+// times the fine one's, and at times (3 of 48 texel centres) below it. The ladder
+// below takes three rules: R_k's estimate is max(|R_k - R_k-1|, |R_k - R_k-2|), which covers
 // every value measured against the (30, 29) rule (4 materials x 16 texel centres and 3 x 11 nodes:
 // 1.0 to 8.6 times the error, the 1.0 where the reference itself wobbles by 1e-10; docs/merl.md,
 // "Tight claims"), and climbs while any channel's estimate is above merlTexelTarget.

@@ -56,9 +56,9 @@ std::array<double, 3> hSpaceIntegral(const RusinkiewiczFn& f, double mu, HSpaceR
 AlbedoEstimate hSpaceAlbedo(const RusinkiewiczFn& f, double mu);
 // E_avg = 2 int E(mu) mu dmu over the table's own coordinates (theta_h, theta_d, phi_d), where its
 // kinks are coordinate planes (merl_albedo_avg.cpp): rules of n nodes per bin and piece, n climbing
-// kMerlAvgLadder as hSpaceAlbedo's texels climb theirs; `threads` workers (0 = hardware). Until
-// session 26 E_avg was the mu average of hSpaceAlbedo, whose estimate could not be tight (E(mu)
-// kinks wherever a cut meets a bin edge; docs/merl.md).
+// kMerlAvgLadder as hSpaceAlbedo's texels climb theirs; `threads` workers (0 = hardware). Not the
+// mu average of hSpaceAlbedo, whose estimate cannot be tight (E(mu) kinks wherever a cut meets a bin
+// edge; docs/merl.md).
 inline constexpr std::array<int, 7> kMerlAvgLadder{2, 3, 4, 5, 6, 7, 8};
 // E_avg is one value per channel, so its claim is tight only if its estimate sits well below the
 // storage rounding it is added to (else a value that happens to round almost exactly makes the

@@ -11,11 +11,11 @@ namespace brdfbake {
 //  - at the critical cosine mu_c = sqrt(1 - eta^2) (eta < 1): as r -> 0, E_R -> F(mu) with F's
 //    square-root kink there (TIR sets in), smoothed over a width ~ alpha for alpha > 0;
 //  - at mu = eta (eta < 1), where the critical angle's theta_h break theta_o + acos(mu_c) reaches
-//    the horizon (sin theta_o = mu_c): found in session 24, when the rescaled estimates below fell
-//    up to 10.9 times under the error at r = 1, eta = 1/1.5 and 0.4 without a break there;
+//    the horizon (sin theta_o = mu_c): without a break there the rescaled estimates below fall up
+//    to 10.9 times under the error at r = 1, eta = 1/1.5 and 0.4;
 //  - at mu -> 0: E_T of smith-correlated behaves like mu^Lambda_o (btdf.h), a non-integer power,
 //    and within mu ~ alpha the Smith G1(i) changes, a layer whose poles lie that close to the real
-//    axis: one panel over [0, 1/2] sampled it with two nodes and missed 1.5e-7 of E_R,avg (beckmann
+//    axis: one panel over [0, 1/2] samples it with two nodes and misses 1.5e-7 of E_R,avg (beckmann
 //    + smith, r = 0.03, eta = 1.5) under a |K15 - G7| of 4.7e-8, so a break at 16 alpha starts the
 //    rule there, as hemisphere.h's average does (host/cl/runner_avg.cpp).
 // So the rule splits [0, 1] at mu_c, eta and 16 alpha and maps every panel [a, b] by the smoothstep
@@ -23,18 +23,17 @@ namespace brdfbake {
 // towards both ends; each panel is GK15 in y (value K15; estimate |K15 - G7| rescaled as QUADPACK's
 // qk15 does, gk_error, except in the two layers where E is smooth only on the scale alpha: panels
 // starting below 16 alpha, and panels of the critical cosine's break starting within 16 alpha above
-// it, keep |K15 - G7|). That second layer was found in session 25: E_R is F's square root there,
-// smoothed over ~alpha, which a panel from mu_c sees as a feature near its end that GK15 does not
-// resolve; rescaled, its estimate fell 32 and 24 times below its error (ggx + smith-correlated, r =
+// it, keep |K15 - G7|). In that second layer E_R is F's square root, smoothed over ~alpha, which a
+// panel from mu_c sees as a feature near its end that GK15 does not resolve; rescaled, its
+// estimate falls 32 and 24 times below its error (ggx + smith-correlated, r =
 // 0.0625, eta = 0.898: error 2.8e-7, estimate 8.9e-9; r = 0.2, eta = 0.6: 1.1e-7 against 4.8e-9).
 // Panels are then halved in y where their estimate is largest (the ones within a factor 4 of the
 // worst, all at once) until the entry's bound is under the target; the nodes thus grade towards the
 // breaks and 0 as E demands, per (r, eta). Bound of each lobe: the sum of the panels' estimates plus
 // sum_k w_k 2 mu_k err(mu_k) (the node bounds); of E_R,avg + E_T,avg, the two summed. The nodes come
 // back from the device in double, unrounded. Measured against the same rule run tight (nodes to
-// 2e-9, entries to 1e-8; README "Rough glass" has the figures and commands): every value within its
-// bound. Before session 24 the estimates were the bare |K15 - G7| with a target of 6e-6, 30 times
-// the error.
+// 2e-9, entries to 1e-8; docs/rough-glass.md has the figures and commands): every value within its
+// bound. The bare |K15 - G7| with a target of 6e-6 would claim 30 times the error.
 namespace {
 constexpr int kMaxPanels = 48, kMaxRounds = 24;
 

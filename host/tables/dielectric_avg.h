@@ -31,8 +31,8 @@ struct DielectricAverages {
 constexpr double kDielectricAvgTarget = 8e-8;
 // The target of each node's E_R and E_T (kernels/integrate/dielectric.h). The nodes' bounds enter an
 // entry's weighted by 2 mu dmu and run ~10 times their errors, so a tighter target buys little:
-// 15 entries of a 16^2 table (target 8e-8) took 25 s at 1e-7 and 31 s at 2.5e-8, the largest
-// entry bound 6.5e-8 and 6.7e-8 (session 25, a scratch run).
+// 15 entries of a 16^2 table (target 8e-8) take 25 s at 1e-7 and 31 s at 2.5e-8, the largest
+// entry bound 6.5e-8 and 6.7e-8 (a scratch run).
 constexpr float kDielectricAvgNodeTarget = 1e-7f;
 
 // The critical cosine sqrt(1 - eta^2) for eta < 1 (where E(mu) has its TIR kink), else -1.

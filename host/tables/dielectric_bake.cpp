@@ -20,7 +20,7 @@ namespace brdfbake {
 namespace {
 // The device program runs in double (cl_khr_fp64; PoCL has it). Its arithmetic, measured: the
 // device's float values equal the host's double rule rounded to float at every one of 2048 texels
-// (16^2 at 8 etas from 0.4 to 2.5, session 24), so the two differ by far less than a float's
+// (16^2 at 8 etas from 0.4 to 2.5), so the two differ by far less than a float's
 // half-ulp; 1e-9 covers that with room. Without fp64 it runs in float, for which the 2D tables' unmeasured 1e-6 allowance is kept.
 constexpr double kDoubleAllowance = 1e-9, kFloatAllowance = 1e-6;
 // The 3D table's storage: the device rounds E_R and E_T to float, 2^-25 for values below 1, and

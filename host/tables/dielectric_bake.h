@@ -19,10 +19,10 @@ double dielectricEta(double s);
 // eta of samples z0 .. z0 + n - 1 of the job's eta axis (texel centres or nodes in s).
 std::vector<double> dielectricEtas(const DielectricJob& job, int z0, int n);
 
-// The estimate each texel's quadrature aims at, per lobe (kernels/integrate/dielectric.h). 2e-6 until
-// session 24, when the estimates were the bare |K15 - G7|; rescaled, 5e-8 makes the 32^3 table take
-// 141 s where it took 110 s (brdfbake-bench --dielectric, README "Rough glass"), and with the
-// storage rounding a float table claims about 2e-7.
+// The estimate each texel's quadrature aims at, per lobe (kernels/integrate/dielectric.h). With the
+// rescaled estimates, 5e-8 makes the 32^3 table take 141 s, against 110 s for the bare |K15 - G7|
+// at 2e-6 (brdfbake-bench --dielectric, docs/rough-glass.md), and with the storage rounding a
+// float table claims about 2e-7.
 constexpr float kDielectricTarget = 5e-8f;
 
 // The averages' rule's E(mu) on the device (KernelRunner::dielectricPoints) with its nodes to

@@ -22,16 +22,15 @@
 // at most 4.55 u for ggx (with gaf none, mu = 0.47, r = 255/256), 3.91 u for beckmann, 4.44 u for
 // blinn-phong, 6.2 u for the gaussian (smith-exact, mu = 1/256). The models (3.5 s + 3) u,
 // (2.5 s + 3) u, (3.5 s + 3) u and (6 s + 3) u are at least 1.43, 1.41, 1.46 and 1.35 times the
-// error at every one of those texels. Fresnel-weighted moments (E_F, F82-tint's C) keep the
-// (6 s + 3) u every NDF had before (not measured per NDF; tests/fresnel_test.cpp checks ggx +
-// smith-correlated's whole claims against the reference). The
-// charlie NDF with charlie-smith reached 29 u before session 23 (its G/(n.o) grows without bound
-// towards grazing views; mu = 1/256), with its other visibilities 6.5 u (none, s = 0.55). Re-measured in session 23
-// (the rescaled estimates' panels: charlie-smith's kink breaks and horizon substitution), every
+// error at every one of those texels. Fresnel-weighted moments (E_F, F82-tint's C) take the
+// largest of those, (6 s + 3) u (not measured per NDF; tests/fresnel_test.cpp checks ggx +
+// smith-correlated's whole claims against the reference). The charlie NDF is measured the same way
+// on the rescaled estimates' panels (charlie-smith's kink breaks and horizon substitution), every
 // texel of a 32x32 and a 128x128 table against the same rule in double at the closer budget:
-// charlie-smith 36.5 u (mu = 3/256, r = 0.14), so (48 s + 4) u, at least 1.42 times; none 8.9 u,
-// (10 s + 4) u at least 1.43 times; neubelt 3.9 u and implicit 1.5 u, (4 s + 3) u at least 1.78
-// times (they had none's model, 3.3 to 5 times their error). tests/accuracy_test.cpp and
+// charlie-smith 36.5 u (mu = 3/256, r = 0.14; its G/(n.o) grows without bound towards grazing
+// views), so (48 s + 4) u, at least 1.42 times; none 8.9 u, (10 s + 4) u at least 1.43 times;
+// neubelt 3.9 u and implicit 1.5 u, (4 s + 3) u at least 1.78 times (none's model would be 3.3 to
+// 5 times their error). tests/accuracy_test.cpp and
 // tests/sheen_test.cpp check the models at every such texel. Another OpenCL device with less
 // accurate built-ins (OpenCL 1.2 allows up to 4 ulp for exp and cos) may exceed them:
 // `brdfbake-bench --bounds --device NAME` measures the float part there.
@@ -66,8 +65,8 @@ inline bool sheenGBounded(int gaf) { return gaf == GAF_NEUBELT || gaf == GAF_IMP
 // most 2.3 u min(1, |v|) on the 9-node and 32-texel grids of the four NDFs.
 constexpr FloatModel kKpFloat{4, 0};
 // The diffuse albedo kernel (kernels/integrate/diffuse_albedo.h; its |K15 - G7| bounds cover the
-// quadrature, not rounding). It had a flat allowance of 1e-6, 5 times its largest error. Measured
-// (session 23) as the others: the device against the same rule in double, every texel of 32x32 and
+// quadrature, not rounding); a flat allowance of 1e-6 would be 5 times its largest error. Measured
+// as the others: the device against the same rule in double, every texel of 32x32 and
 // 128x128 centre grids and 33x33 and 64x64 node grids, over each model's parameter axis and [0, 1]:
 // at most 3.0 u (lambert), 4.1 (shirley), 3.1 (ashikhmin-shirley, 3.1 u at E = 0.81), 4.2
 // (oren-nayar), 5.5 (burley, mu = 0.96, r = 0.80) and 4.6 (oren-nayar-as-printed) u; (6 s + 4) u
@@ -114,10 +113,8 @@ inline double floatArithmeticError(double scale, FloatModel m = kHemiFloat) {
 // at most 1.70 u (ggx + none), 1.59 u (beckmann + none), 1.77 u (blinn-phong + none), 4.26 u
 // (gaussian + none; integrated on GGX's grid with the weight D_gauss/D_ggx, more float operations
 // per node); the pairs other than none at most 1.54, 1.51, 1.66 and 3.97 u. The models
-// hold the largest with a margin of 1.35. (Until session 22 none, cook-torrance, kelemen and
-// neumann kept |K15 - G7| and a model of their own, 2.55 and 5.75 u; their estimates are rescaled
-// now, their averages run the same rule as the others', and one model per NDF covers all.)
-// Fresnel-weighted averages keep the summed bound. Charlie's (session 23; it had the summed bound,
+// hold the largest with a margin of 1.35, so one model per NDF covers every GAF.
+// Fresnel-weighted averages take the summed bound. Charlie's is measured (the summed bound would be
 // 22 u for charlie-smith at E_avg ~ 0.3): the bake's table against its rule in double at the same
 // nodes, every entry of 16-, 32- and 64-entry tables and a 33-node grid: at most 2.10 u
 // (charlie-smith, r = 0.90; the stored value's rounding included) and 2.01 u (none): 3 u; 0.50 u

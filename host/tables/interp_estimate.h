@@ -8,7 +8,7 @@
 // --mu-axis sqrt table (brdf.mu.index sqrt) that is u = sqrt(mu), the coordinate the lookup
 // interpolates in (u = sqrt(mu), then bilinear), so the estimate is of that lookup. Its limit, on
 // every axis: what no texel holds it cannot see, as the dip of E where mu ~ alpha = r^2 towards the
-// corner (0, 0), up to 0.11 off at 64^2 (tests/mu_axis_test.cpp measures it; README "The sqrt(mu) axis").
+// corner (0, 0), up to 0.11 off at 64^2 (tests/mu_axis_test.cpp measures it; docs/layouts.md "The sqrt(mu) axis").
 #pragma once
 #include "formats/table_image.h"
 
