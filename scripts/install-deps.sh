@@ -9,7 +9,7 @@ PACKAGES=(
   # OpenCL: the PoCL CPU device, the ICD loader, the Khronos C and C++ headers
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo
   # libraries the binary links
-  libopenexr-dev libpng-dev libboost-math-dev libglm-dev libtomlplusplus-dev libtinygltf-dev
+  libopenexr-dev libpng-dev libboost-math-dev libglm-dev libtomlplusplus-dev nlohmann-json3-dev
   # tests: GoogleTest, other readers of our files, a real GL pipeline, the shader compiler, plots
   libgtest-dev libfreeimage-dev libopenimageio-dev python3-pil
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri glslang-tools gnuplot-nox

@@ -3,6 +3,7 @@
 // file:line:column messages and exit 65 (66 when missing) and write nothing; shards are
 // deterministic and cover the plan once; glTF files (written here) plan glTF's tables.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -232,12 +233,53 @@ TEST(Scene, GltfFilesPlanGltfTables) {
   write(d / "broken.gltf", "{\"asset\":{\"version\":\"2.0\"},\"materials\":[{\"name\":\"m\"");
   CmdResult r = run("plan '" + (d / "broken.gltf").string() + "'");
   EXPECT_EQ(r.code, 65) << r.out;
-  EXPECT_NE(r.out.find("not a glTF 2.0 file tinygltf can parse"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("broken.gltf: byte "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(": not valid JSON: "), std::string::npos) << r.out;
   // no materials: glTF's default material
   write(d / "empty.gltf", R"({"asset":{"version":"2.0"}})");
   r = run("plan '" + (d / "empty.gltf").string() + "' --list");
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(names(lines(r.out)), (std::set<std::string>{"splitsum_ggx_smith-correlated.exr"}));
+}
+
+// glTF: materials only. Buffers and images are never opened: here each names a FIFO (opening it
+// would block; `timeout 20` turns a hang into a failure) and a path outside the file's folder.
+// Every material field is type- and range-checked, naming its JSON path.
+TEST(Scene, GltfReadsMaterialsOnlyAndChecksEveryField) {
+  fs::path d = freshDir("gltf-hostile");
+  ASSERT_EQ(::mkfifo((d / "buffer.bin").c_str(), 0600), 0);
+  ASSERT_EQ(::mkfifo((d / "image.png").c_str(), 0600), 0);
+  write(d / "model.gltf", R"({"asset":{"version":"2.0"},
+    "buffers":[{"uri":"buffer.bin","byteLength":12},{"uri":"../../../../../../etc/passwd","byteLength":3}],
+    "images":[{"uri":"image.png"}],
+    "materials":[{"name":"m","pbrMetallicRoughness":{"roughnessFactor":0.5}}]})");
+  CmdResult r = run("plan model.gltf --list", d.string(), "timeout 20");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(r.out.find("passwd"), std::string::npos) << r.out;
+  struct Case {
+    std::string material, says;
+  } cases[] = {
+      {R"({"pbrMetallicRoughness":{"roughnessFactor":"high"}})",
+       "materials[0].pbrMetallicRoughness.roughnessFactor: expected a number in [0, 1], got \"high\""},
+      {R"({"pbrMetallicRoughness":{"roughnessFactor":1.5}})", "roughnessFactor: expected a number in [0, 1], got 1.5"},
+      {R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1]}})", "materials[0].pbrMetallicRoughness.baseColorFactor"},
+      {R"({"name":7})", "materials[0].name: expected a string, got 7"},
+      {R"({"extensions":{"KHR_materials_ior":{"ior":0.5}}})", "KHR_materials_ior.ior: expected 0 or a number >= 1"},
+      {R"({"extensions":{"KHR_materials_sheen":{"sheenRoughnessFactor":-1}}})", "sheenRoughnessFactor: expected a number in [0, 1]"},
+      {R"({"extensions":{"KHR_materials_transmission":[]}})", "KHR_materials_transmission: expected an object"},
+      {R"(3)", "materials[0]: expected an object, got 3"},
+  };
+  for (const Case& c : cases) {
+    write(d / "bad.gltf", R"({"asset":{"version":"2.0"},"materials":[)" + c.material + "]}");
+    r = run("plan bad.gltf", d.string(), "timeout 20");
+    EXPECT_EQ(r.code, 65) << c.material << "\n" << r.out;
+    EXPECT_NE(r.out.find("bad.gltf: materials[0]"), std::string::npos) << c.material << "\n" << r.out;
+    EXPECT_NE(r.out.find(c.says), std::string::npos) << c.material << "\n" << r.out;
+  }
+  write(d / "v1.gltf", R"({"asset":{"version":"1.0"}})");
+  r = run("plan v1.gltf", d.string());
+  EXPECT_EQ(r.code, 65) << r.out;
+  EXPECT_NE(r.out.find("asset.version: expected \"2.x\""), std::string::npos) << r.out;
 }
 
 // The fuzzer's corpus (tools/fuzz_manifest.sh, libFuzzer): every input parses or is rejected with

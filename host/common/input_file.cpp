@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -64,6 +65,22 @@ uint64_t checkInputFile(const std::string& path, const std::string& what, uint64
   uint64_t size = 0;
   ::close(openChecked(path, what, cap, &size));
   return size;
+}
+
+std::string readInputPrefix(const std::string& path, const std::string& what, uint64_t n) {
+  uint64_t size = 0;
+  const int fd = openChecked(path, what, UINT64_MAX, &size);
+  std::string out(static_cast<size_t>(std::min(n, size)), '\0');
+  size_t done = 0;
+  while (done < out.size()) {
+    const ssize_t r = ::read(fd, &out[done], out.size() - done);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) break;
+    done += static_cast<size_t>(r);
+  }
+  ::close(fd);
+  out.resize(done);
+  return out;
 }
 
 std::string readInputFile(const std::string& path, const std::string& what, uint64_t cap) {

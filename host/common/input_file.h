@@ -23,6 +23,10 @@ uint64_t checkInputFile(const std::string& path, const std::string& what, uint64
 // for the path to change between the check and the read).
 std::string readInputFile(const std::string& path, const std::string& what, uint64_t cap);
 
+// The file's first `n` bytes (fewer if it is shorter), after the same checks with no cap on the
+// file's size: for a container whose header says how much of it to read (a .glb's JSON chunk).
+std::string readInputPrefix(const std::string& path, const std::string& what, uint64_t n);
+
 // What a file type is, for messages: "a directory", "a FIFO (named pipe)", "a character device", ...
 std::string fileTypeName(unsigned mode);
 

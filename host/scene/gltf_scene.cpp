@@ -1,49 +1,113 @@
-// A glTF 2.0 file as a scene (tinygltf, Debian libtinygltf-dev): its materials, and the tables
-// glTF's reference shading needs for them. glTF's metallic-roughness model is GGX with the
-// height-correlated Smith visibility and Schlick's Fresnel (glTF 2.0 specification, appendix B), lit
-// by image-based lighting and punctual lights (KHR_lights_punctual) in the reference viewer.
-#include <tiny_gltf.h>
+// A glTF 2.0 file as a scene: its materials, and the tables glTF's reference shading needs for
+// them. glTF's metallic-roughness model is GGX with the height-correlated Smith visibility and
+// Schlick's Fresnel (glTF 2.0 specification, appendix B), lit by image-based lighting and punctual
+// lights (KHR_lights_punctual) in the reference viewer.
+//
+// Materials only: the JSON (a .gltf, or a .glb's first chunk; nothing past it is read) is parsed
+// with nlohmann/json (Debian nlohmann-json3-dev) and only `asset` and `materials` are looked at.
+// Buffers and images are never opened, so no URI in the file reaches outside it. Every material
+// field brdfbake reads or that glTF bounds is checked for its type and range (glTF 2.0 schema and
+// the KHR_materials_* extensions), exit 65 naming its JSON path.
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 
 #include "common/brdf_host.h"
 #include "common/errors.h"
-#include "common/input_file.h"
 #include "common/format.h"
+#include "common/input_file.h"
 #include "scene/scene.h"
 
 namespace brdfbake {
 
 namespace {
-// The number at `key` of an extension object, or `fallback`.
-double extNumber(const tinygltf::Value& ext, const char* key, double fallback) {
-  if (!ext.IsObject() || !ext.Has(key)) return fallback;
-  const tinygltf::Value& v = ext.Get(key);
-  return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+
+using Json = nlohmann::json;
+
+[[noreturn]] void bad(const std::string& path, const std::string& where, const std::string& what) {
+  throw Error(kExitDataErr, path + ": " + where + ": " + what);
 }
+
+std::string shown(const Json& v) {
+  std::string t = v.dump();
+  return t.size() > 40 ? t.substr(0, 37) + "..." : t;
+}
+
+// The number at `key` of `obj` (absent: fallback), within [lo, hi].
+double number(const std::string& path, const Json& obj, const std::string& where, const char* key, double fallback,
+              double lo, double hi) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return fallback;
+  const std::string at = where + "." + key;
+  if (!it->is_number()) bad(path, at, "expected a number in [" + fmtG(lo) + ", " + fmtG(hi) + "], got " + shown(*it));
+  const double v = it->get<double>();
+  if (!(v >= lo && v <= hi)) bad(path, at, "expected a number in [" + fmtG(lo) + ", " + fmtG(hi) + "], got " + fmtG(v));
+  return v;
+}
+
+// An array of `n` numbers in [lo, hi] at `key`, if present.
+void numbers(const std::string& path, const Json& obj, const std::string& where, const char* key, size_t n, double lo,
+             double hi) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return;
+  const std::string at = where + "." + key;
+  const std::string want = "an array of " + std::to_string(n) + " numbers in [" + fmtG(lo) + ", " + fmtG(hi) + "]";
+  if (!it->is_array() || it->size() != n) bad(path, at, "expected " + want + ", got " + shown(*it));
+  for (size_t i = 0; i < n; ++i) {
+    const Json& x = (*it)[i];
+    if (!x.is_number() || !(x.get<double>() >= lo && x.get<double>() <= hi))
+      bad(path, at + "[" + std::to_string(i) + "]", "expected " + want + ", got " + shown(x));
+  }
+}
+
+const Json& object(const std::string& path, const Json& obj, const std::string& where, const char* key) {
+  static const Json empty = Json::object();
+  auto it = obj.find(key);
+  if (it == obj.end()) return empty;
+  if (!it->is_object()) bad(path, where + "." + key, "expected an object, got " + shown(*it));
+  return *it;
+}
+
+// The JSON text of a .gltf, or of a .glb's JSON chunk (the binary chunk after it is not read).
+std::string gltfJson(const std::string& path, bool glb) {
+  if (!glb) return readInputFile(path, "scene", kCapGltfJson);
+  const uint64_t size = checkInputFile(path, "scene", kCapGlb);
+  std::string head = readInputPrefix(path, "scene", 20);
+  auto u32 = [&](size_t at) {
+    return uint32_t(uint8_t(head[at])) | uint32_t(uint8_t(head[at + 1])) << 8 | uint32_t(uint8_t(head[at + 2])) << 16 |
+           uint32_t(uint8_t(head[at + 3])) << 24;
+  };
+  if (head.size() < 20 || head.compare(0, 4, "glTF") != 0)
+    bad(path, "header", "not a binary glTF (.glb): it does not start with \"glTF\"");
+  if (u32(4) != 2) bad(path, "header", "glTF binary version " + std::to_string(u32(4)) + "; brdfbake reads version 2");
+  const uint64_t len = u32(12);
+  if (head.compare(16, 4, "JSON") != 0) bad(path, "chunk 0", "the first chunk is not JSON");
+  if (len > kCapGltfJson || 20 + len > size)
+    bad(path, "chunk 0", "JSON chunk of " + std::to_string(len) + " bytes does not fit the file or the " +
+                             std::to_string(kCapGltfJson >> 20) + " MiB cap");
+  return readInputPrefix(path, "scene", 20 + len).substr(20);
+}
+
 }  // namespace
 
 Scene readGltfScene(const std::string& path) {
   const bool glb = path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
-  checkInputFile(path, "scene", glb ? kCapGlb : kCapGltfJson);
-  tinygltf::Model model;
-  tinygltf::TinyGLTF loader;
-  // materials only: images are neither needed nor loaded
-  loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
-                           void*) { return true; },
-                        nullptr);
-  std::string err, warn;
-  bool binary = path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
-  bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                   : loader.LoadASCIIFromFile(&model, &err, &warn, path);
-  if (!ok) {
-    while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
-    throw Error(kExitDataErr, path + ": not a glTF 2.0 file tinygltf can parse: " + (err.empty() ? "unknown error" : err));
+  const std::string text = gltfJson(path, glb);
+  Json doc;
+  try {
+    doc = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    bad(path, "byte " + std::to_string(e.byte), std::string("not valid JSON: ") + e.what());
   }
+  if (!doc.is_object()) bad(path, "$", "a glTF file is a JSON object");
+  const Json& asset = object(path, doc, "$", "asset");
+  auto version = asset.find("version");
+  if (version == asset.end() || !version->is_string() || version->get<std::string>().rfind("2.", 0) != 0)
+    bad(path, "asset.version", "expected \"2.x\" (a glTF 2.0 file)");
+  auto mats = doc.find("materials");
+  if (mats != doc.end() && !mats->is_array()) bad(path, "materials", "expected an array, got " + shown(*mats));
   Scene s;
   s.path = path;
   size_t slash = path.find_last_of('/');
@@ -53,44 +117,70 @@ Scene readGltfScene(const std::string& path) {
   // glTF's reference viewer: image-based lighting and punctual lights, no multiple-scattering term
   s.lighting = SceneLighting{};
   s.output.dir = "out";
-  for (size_t i = 0; i < model.materials.size(); ++i) {
-    const tinygltf::Material& gm = model.materials[i];
+  const size_t count = mats == doc.end() ? 0 : mats->size();
+  for (size_t i = 0; i < count; ++i) {
+    const Json& gm = (*mats)[i];
+    const std::string at = "materials[" + std::to_string(i) + "]";
+    if (!gm.is_object()) bad(path, at, "expected an object, got " + shown(gm));
     SceneMaterial m;
-    m.name = gm.name.empty() ? "material_" + std::to_string(i) : gm.name;
+    auto name = gm.find("name");
+    if (name != gm.end() && !name->is_string()) bad(path, at + ".name", "expected a string, got " + shown(*name));
+    m.name = name == gm.end() || name->get<std::string>().empty() ? "material_" + std::to_string(i) : name->get<std::string>();
     m.pos = SourcePos{path, 0, 0};
     m.ndf = NDF_GGX;
     m.gaf = GAF_SMITH_CORRELATED;
-    double r = gm.pbrMetallicRoughness.roughnessFactor;
+    const std::string pbrAt = at + ".pbrMetallicRoughness";
+    const Json& pbr = object(path, gm, at, "pbrMetallicRoughness");
+    const double r = number(path, pbr, pbrAt, "roughnessFactor", 1.0, 0, 1);
+    number(path, pbr, pbrAt, "metallicFactor", 1.0, 0, 1);
+    numbers(path, pbr, pbrAt, "baseColorFactor", 4, 0, 1);
+    numbers(path, gm, at, "emissiveFactor", 3, 0, 1);
+    number(path, gm, at, "alphaCutoff", 0.5, 0, 1e300);
     m.roughnessLo = 0;  // a roughness texture can reach any value up to the factor
-    m.roughnessHi = std::clamp(r, 0.0, 1.0);
+    m.roughnessHi = r;
     m.diffuse = DIFFUSE_LAMBERT;
     m.fresnel.model = FRESNEL_SCHLICK;
+    const std::string extAt = at + ".extensions";
+    const Json& exts = object(path, gm, at, "extensions");
     double ior = 1.5;
-    auto ext = [&](const char* name) -> const tinygltf::Value* {
-      auto it = gm.extensions.find(name);
-      return it == gm.extensions.end() ? nullptr : &it->second;
-    };
-    if (const tinygltf::Value* e = ext("KHR_materials_ior")) {
-      ior = extNumber(*e, "ior", 1.5);
+    if (exts.contains("KHR_materials_ior")) {
+      const Json& e = object(path, exts, extAt, "KHR_materials_ior");
+      ior = number(path, e, extAt + ".KHR_materials_ior", "ior", 1.5, 0, 1e300);
+      if (ior != 0 && ior < 1) bad(path, extAt + ".KHR_materials_ior.ior", "expected 0 or a number >= 1, got " + fmtG(ior));
       m.notes.push_back("KHR_materials_ior: ior " + fmtG(ior) + " -> Schlick F0 ((ior-1)/(ior+1))^2");
     }
     double f0 = ior > 0 ? std::pow((ior - 1) / (ior + 1), 2) : 0.04;
-    if (const tinygltf::Value* e = ext("KHR_materials_specular")) {
-      double k = extNumber(*e, "specularFactor", 1.0);
+    if (exts.contains("KHR_materials_specular")) {
+      const Json& e = object(path, exts, extAt, "KHR_materials_specular");
+      const double k = number(path, e, extAt + ".KHR_materials_specular", "specularFactor", 1.0, 0, 1);
+      numbers(path, e, extAt + ".KHR_materials_specular", "specularColorFactor", 3, 0, 1e300);
       f0 = std::min(1.0, f0 * k);
       m.notes.push_back("KHR_materials_specular: F0 scaled by " + fmtG(k) + " (Schlick, the same split-sum table)");
     }
     m.fresnel.f0 = {std::clamp(f0, 0.0, 1.0)};
     validateFresnel(m.fresnel);
-    if (ext("KHR_materials_clearcoat"))
+    if (exts.contains("KHR_materials_clearcoat")) {
+      const Json& e = object(path, exts, extAt, "KHR_materials_clearcoat");
+      number(path, e, extAt + ".KHR_materials_clearcoat", "clearcoatFactor", 0, 0, 1);
+      number(path, e, extAt + ".KHR_materials_clearcoat", "clearcoatRoughnessFactor", 0, 0, 1);
       m.notes.push_back("KHR_materials_clearcoat: a second GGX lobe, served by the same split-sum table");
-    if (ext("KHR_materials_transmission")) m.transmission = true;
-    if (ext("KHR_materials_sheen")) m.sheen = true;
-    for (const auto& [name, v] : gm.extensions) {
+    }
+    if (exts.contains("KHR_materials_transmission")) {
+      const Json& e = object(path, exts, extAt, "KHR_materials_transmission");
+      number(path, e, extAt + ".KHR_materials_transmission", "transmissionFactor", 0, 0, 1);
+      m.transmission = true;
+    }
+    if (exts.contains("KHR_materials_sheen")) {
+      const Json& e = object(path, exts, extAt, "KHR_materials_sheen");
+      number(path, e, extAt + ".KHR_materials_sheen", "sheenRoughnessFactor", 0, 0, 1);
+      numbers(path, e, extAt + ".KHR_materials_sheen", "sheenColorFactor", 3, 0, 1);
+      m.sheen = true;
+    }
+    for (const auto& [extName, v] : exts.items()) {
       (void)v;
-      if (name != "KHR_materials_ior" && name != "KHR_materials_specular" && name != "KHR_materials_clearcoat" &&
-          name != "KHR_materials_transmission" && name != "KHR_materials_sheen")
-        m.notes.push_back(name + ": no table of its own (shaded analytically or not a BRDF extension)");
+      if (extName != "KHR_materials_ior" && extName != "KHR_materials_specular" && extName != "KHR_materials_clearcoat" &&
+          extName != "KHR_materials_transmission" && extName != "KHR_materials_sheen")
+        m.notes.push_back(extName + ": no table of its own (shaded analytically or not a BRDF extension)");
     }
     s.materials.push_back(m);
   }
