@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
       case Command::Kind::ScenePlan:
         return runScenePlan(cmd.scene);
       case Command::Kind::SceneBake:
-        if (!cmd.scene.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.scene.cacheDir.c_str(), 1);
+        if (!cmd.scene.cacheDir.empty()) usePoclCache(cmd.scene.cacheDir);
         return runSceneBake(cmd.scene);
       case Command::Kind::Shader: {
         std::string code = shaderForFiles(cmd.files, cmd.hlsl ? ShaderLang::Hlsl : ShaderLang::Glsl);
@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
         std::cout << sampleReport(cmd.file, cmd.at);
         return kExitOk;
       case Command::Kind::Energy: {
-        if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);
+        if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
         std::vector<EnergyResult> res = checkEnergy(cmd.bake);
         std::cout << formatEnergy(res);
         for (const auto& r : res)
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
         return kExitOk;
       }
       case Command::Kind::Verify: {
-        if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);
+        if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
         std::string pageLine;
         std::vector<VerifyResult> res = runVerify(cmd.bake, &pageLine);
         bool ok = true;
@@ -83,7 +83,7 @@ int main(int argc, char** argv) {
         return ok ? kExitOk : 1;
       }
       case Command::Kind::Stress: {
-        if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);
+        if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
         std::string pageLine;
         std::vector<StressPoint> pts = runStress(cmd.bake, &pageLine);
         std::cout << formatStress(pts) << pageLine;
@@ -92,15 +92,14 @@ int main(int argc, char** argv) {
         return kExitOk;
       }
       case Command::Kind::Convergence: {
-        if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);
+        if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
         std::string pageLine;
         ConvergenceResult res = runConvergence(cmd.bake, &pageLine);
         std::cout << formatConvergence(res) << pageLine;
         return kExitOk;
       }
       case Command::Kind::Bake: {
-        // before the first OpenCL call: PoCL reads its cache location when the platform starts
-        if (!cmd.bake.cacheDir.empty()) ::setenv("POCL_CACHE_DIR", cmd.bake.cacheDir.c_str(), 1);
+        if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
         std::cout << formatReport(bakeToDirectory(cmd.bake));
         return kExitOk;
       }

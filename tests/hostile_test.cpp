@@ -6,7 +6,9 @@
 #include <sys/stat.h>
 
 #include <filesystem>
+#include <cstdint>
 #include <fstream>
+#include <vector>
 
 #include "cli_run.h"
 
@@ -79,4 +81,52 @@ TEST(Hostile, StampThatIsNotAFileIsRefusedBeforeBaking) {
   struct stat st {};
   ASSERT_EQ(::lstat((d / "stamp").c_str(), &st), 0);
   EXPECT_TRUE(S_ISFIFO(st.st_mode)) << "the FIFO was replaced";
+}
+
+// The device layer says what is wrong: --cache-dir is made absolute before PoCL sees it (PoCL
+// passes it to its linker, which took "-1/..." for an option and aborted), and a cache that
+// cannot be written is named as such, not as a missing OpenCL platform.
+TEST(Hostile, CacheDirIsCheckedAndNamed) {
+  const fs::path d = freshDir("hostile", "cache");
+  CmdResult r = runBounded("--table kp --size 4 --cache-dir -1 -o out", d.string());
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(fs::is_directory(d / "-1")) << "the cache is where it was asked to be";
+  std::ofstream(d / "file") << "x";
+  expectRefused(runBounded("--table kp --cache-dir file -o out2", d.string()), 73, "--cache-dir file: '" + (d / "file").string() + "' is not a directory", "cache dir is a file");
+  expectRefused(runBounded("--table kp --cache-dir /proc/brdfbake -o out2", d.string()), 73,
+                "--cache-dir /proc/brdfbake: '/proc/brdfbake' is in /proc, a kernel file system", "cache in /proc");
+  EXPECT_FALSE(fs::exists(d / "out2"));
+  // PoCL's own cache location unwritable ($POCL_CACHE_DIR in /proc): named, exit 73, not 69
+  r = run("--table kp --size 4 -o out3", d.string(), "timeout 20 env POCL_CACHE_DIR=/proc/brdfbake-cache");
+  EXPECT_EQ(r.code, 73) << r.out;
+  EXPECT_NE(r.out.find("PoCL's kernel cache /proc/brdfbake-cache cannot be written"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("install an OpenCL driver"), std::string::npos) << r.out;
+}
+
+// A MERL file that measures (almost) nothing is refused, not baked into zero tables with a tiny
+// claimed error; a measured one's share is in the tables' metadata.
+TEST(Hostile, MerlFileWithoutMeasurementsIsRefused) {
+  const fs::path d = freshDir("hostile", "merl");
+  {
+    std::ofstream f(d / "empty.binary", std::ios::binary);
+    const int32_t dims[3] = {90, 90, 180};
+    f.write(reinterpret_cast<const char*>(dims), sizeof dims);
+    const std::vector<double> unmeasured(90 * 90 * 180, -1.0);
+    for (int c = 0; c < 3; ++c) f.write(reinterpret_cast<const char*>(unmeasured.data()), unmeasured.size() * 8);
+  }
+  expectRefused(runBounded("bake --brdf merl:empty.binary -o out", d.string()), 65,
+                "MERL file empty.binary: channel R measures 0 of the", "all bins unmeasured");
+  EXPECT_FALSE(fs::exists(d / "out"));
+  // an analytic material in MERL's layout measures every lit bin, and its tables say so
+  ASSERT_EQ(runBounded("bake --table brdf3d --format merl -o m", d.string()).code, 0);
+  CmdResult r = run("bake --brdf merl:m/brdf3d_ggx_smith-correlated.binary --table albedo --size 2 -o out", d.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  r = run("info out/albedo_merl-brdf3d_ggx_smith-correlated.exr", d.string());
+  EXPECT_NE(r.out.find("brdf.merl.measured (string): R 1, G 1, B 1"), std::string::npos) << r.out;
+}
+
+// Errors name the option as it was spelt.
+TEST(Hostile, ErrorsNameTheOptionAsSpelt) {
+  expectRefused(run("energy -o x"), 64, "-o: not an energy option", "energy -o");
+  expectRefused(run("energy --output x"), 64, "--output: not an energy option", "energy --output");
 }

@@ -1,5 +1,13 @@
 #include "cl/device.h"
 
+#include <limits.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
 #include "common/errors.h"
 
 namespace brdfbake {
@@ -10,6 +18,26 @@ std::string typeName(cl_device_type t) {
   if (t & CL_DEVICE_TYPE_GPU) return "GPU";
   if (t & CL_DEVICE_TYPE_ACCELERATOR) return "ACCELERATOR";
   return "OTHER";
+}
+
+// Why a directory cannot serve as PoCL's cache, or "" when it can: it, or the nearest existing
+// ancestor it would be created under, is a writable directory.
+std::string cacheProblem(const std::string& dir) {
+  // root passes access() checks there, but nothing can be created in them
+  for (const char* fs : {"/proc", "/sys"})
+    if (dir == fs || dir.rfind(std::string(fs) + "/", 0) == 0) return "'" + dir + "' is in " + fs + ", a kernel file system";
+  std::string cur = dir;
+  while (true) {
+    struct stat st {};
+    if (::stat(cur.c_str(), &st) == 0) {
+      if (!S_ISDIR(st.st_mode)) return "'" + cur + "' is not a directory";
+      if (::access(cur.c_str(), W_OK | X_OK) != 0) return "cannot write in '" + cur + "': " + std::strerror(errno);
+      return "";
+    }
+    const size_t slash = cur.find_last_of('/');
+    if (slash == std::string::npos || slash == 0) return "";
+    cur = cur.substr(0, slash);
+  }
 }
 
 const char* kInstallHint =
@@ -44,7 +72,15 @@ std::vector<DeviceEntry> listDevices() {
       out.push_back(e);
     }
   }
-  if (out.empty()) throw Error(kExitUnavailable, std::string(kInstallHint) + " (platforms exist but list no device)");
+  if (out.empty()) {
+    // PoCL lists no device when it cannot write its kernel cache: say that, not "install a driver"
+    const std::string cache = poclCacheDir(), why = cacheProblem(cache);
+    if (!why.empty())
+      throw Error(kExitCantCreat, "PoCL's kernel cache " + cache + " cannot be written (" + why +
+                                      "), so PoCL lists no device; give --cache-dir DIR or set POCL_CACHE_DIR to a "
+                                      "writable directory");
+    throw Error(kExitUnavailable, std::string(kInstallHint) + " (platforms exist but list no device)");
+  }
   return out;
 }
 
@@ -72,6 +108,26 @@ std::string describeDevices() {
          "\n";
   }
   return s;
+}
+
+std::string poclCacheDir() {
+  if (const char* d = std::getenv("POCL_CACHE_DIR"); d && *d) return d;
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::string(x) + "/pocl";
+  const char* home = std::getenv("HOME");
+  return std::string(home && *home ? home : ".") + "/.cache/pocl";
+}
+
+void usePoclCache(const std::string& dir) {
+  if (dir.empty()) throw Error(kExitUsage, "--cache-dir: empty directory name");
+  std::string abs = dir;
+  if (abs[0] != '/') {
+    char cwd[PATH_MAX];
+    if (!::getcwd(cwd, sizeof cwd)) throw Error(kExitCantCreat, "--cache-dir " + dir + ": " + std::strerror(errno));
+    abs = std::string(cwd) + "/" + dir;
+  }
+  const std::string why = cacheProblem(abs);
+  if (!why.empty()) throw Error(kExitCantCreat, "--cache-dir " + dir + ": " + why);
+  ::setenv("POCL_CACHE_DIR", abs.c_str(), 1);
 }
 
 }  // namespace brdfbake

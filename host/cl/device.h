@@ -26,4 +26,12 @@ DeviceEntry selectDevice(const std::string& substring);
 // `brdfbake devices` output.
 std::string describeDevices();
 
+// --cache-dir DIR, before the first OpenCL call (PoCL reads POCL_CACHE_DIR when its platform
+// starts): made absolute (PoCL passes it to its linker, which reads "-1/..." as an option), and it
+// must be a writable directory or creatable under one. Throws Error(kExitCantCreat) naming it.
+void usePoclCache(const std::string& dir);
+// The directory PoCL caches its kernels in: $POCL_CACHE_DIR, else $XDG_CACHE_HOME/pocl, else
+// ~/.cache/pocl.
+std::string poclCacheDir();
+
 }  // namespace brdfbake

@@ -68,6 +68,9 @@ OutputFile formatWriter(const std::string& path, FileFormat f, Precision p, cons
   OutputFile o;
   o.path = path;
   const int out = binaryChannels(src.channels);
+  const uint64_t texels = uint64_t(src.width) * src.height * src.depth;
+  // header: .h and .mjs, at most 18 characters per value ("-1.23456789e-05f, "); else texels and a header
+  o.bytesBound = f == FileFormat::Header ? 2 * (texels * out * 18 + 65536) : texels * out * 4 + 65536;
   const std::string name = "brdf_" + stem.substr(stem.find_last_of('/') + 1);
   o.write = [f, p, meta, src, out, name, js, path](const std::string& tmp) {
     if (f == FileFormat::Ktx2) writeKtx2Temporary(tmp, path, meta, src, out, p);
@@ -134,6 +137,7 @@ std::vector<PlannedFile> tableOutputs(const FileSpec& job, const TableImage& bak
       const std::string path = stem + ".png";
       OutputFile o;
       o.path = path;
+      o.bytesBound = uint64_t(m.width) * m.height * 4 * 2 + 65536;  // 16-bit RGBA at most, and chunks
       o.write = [&m, path, scale, offset](const std::string& tmp) { writePng16Temporary(tmp, path, m, scale, offset); };
       files.push_back({o, m.floats["brdf.error"]});
       continue;

@@ -12,6 +12,7 @@
 #include <cstring>
 
 #include "common/errors.h"
+#include "common/format.h"
 #include "common/input_file.h"
 #include "formats/exr/table_file.h"  // temporaryPathFor
 #include "formats/storage.h"  // TempFileWriter
@@ -101,7 +102,12 @@ void writeMerlTemporary(const std::string& tmp, const std::string& path, const s
 
 void writeMerl(const std::string& path, const std::vector<std::vector<float>>& planes) {
   const std::string tmp = temporaryPathFor(path);
-  writeMerlTemporary(tmp, path, planes);
+  try {
+    writeMerlTemporary(tmp, path, planes);
+  } catch (...) {
+    ::unlink(tmp.c_str());  // temporaryPathFor created it
+    throw;
+  }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int err = errno;
     ::unlink(tmp.c_str());
@@ -251,6 +257,17 @@ MerlData readMerl(const std::string& path) {
       d.negative[c] += raw < 0;
       d.usable[c][i] = raw >= 0 && above[i];
     }
+  }
+  const size_t lit = kMerlBins - d.belowHorizon;
+  for (int c = 0; c < 3; ++c) {
+    size_t measured = 0;
+    for (size_t i = 0; i < kMerlBins; ++i) measured += d.usable[c][i];
+    d.measuredShare[c] = lit ? double(measured) / double(lit) : 0.0;
+    if (d.measuredShare[c] < kMerlMinMeasured)
+      throw Error(kExitDataErr, "MERL file " + path + ": channel " + "RGB"[c] + " measures " + std::to_string(measured) +
+                                    " of the " + std::to_string(lit) + " bins above the horizon (" +
+                                    fmtG(100 * d.measuredShare[c], 3) + "%); a material needs at least " +
+                                    fmtG(100 * kMerlMinMeasured, 3) + "% (negative values mark unmeasured bins)");
   }
   return d;
 }

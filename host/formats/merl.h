@@ -47,6 +47,11 @@ void writeMerl(const std::string& path, const std::vector<std::vector<float>>& p
 // writeMerlTemporary takes. For tests and checks (the bake fills them on the device).
 std::vector<std::vector<float>> merlPlanesFromSpec(const Brdf3dSpec& s);
 
+// The least share of the lit bins (both directions above the horizon) a MERL file must measure,
+// per channel: below a half, the albedo would integrate more of the interpolation's guesses than
+// of the measurement. The tables record the share (brdf.merl.measured).
+constexpr double kMerlMinMeasured = 0.5;
+
 // A MERL file in memory: the BRDF (stored values times kMerlScale) in MERL's bin order.
 struct MerlData {
   std::string path;
@@ -56,6 +61,9 @@ struct MerlData {
   std::array<std::vector<uint8_t>, 3> usable;
   std::array<size_t, 3> negative{};         // bins holding a negative value (not measured)
   size_t belowHorizon = 0;                  // bins whose sample configuration is below the horizon
+  // The share of the bins above the horizon that are measured, per channel (readMerl refuses a
+  // file where it is below kMerlMinMeasured in any channel).
+  std::array<double, 3> measuredShare{};
 
   // Fractional bin coordinates of an angle triple: u = sqrt(theta_h/(pi/2)) 90, v = theta_d/(pi/2)
   // 90, w = (phi_d mod pi)/pi 180, so that bin k's sample is at coordinate k.

@@ -3,10 +3,12 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -170,6 +172,20 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
     }
   }
 
+  // the set fits in the free space (streamed writers that know no bound check their own)
+  uint64_t need = 0;
+  for (const auto& f : files)
+    need += f.bytesBound ? f.bytesBound
+                         : f.image ? uint64_t(f.image->width) * f.image->height * f.image->planes.size() * 4 + 65536 : 0;
+  struct statvfs vfs {};
+  if (need > 0 && ::statvfs(p.c_str(), &vfs) == 0 && need > uint64_t(vfs.f_bavail) * vfs.f_frsize) {
+    cleanUp({}, created);
+    char msg[512];
+    std::snprintf(msg, sizeof msg, "-o %s: not enough space: the %zu file(s) may need up to %.2f MB, %.2f MB free; "
+                  "nothing was written", dir.c_str(), files.size(), need / 1e6, uint64_t(vfs.f_bavail) * vfs.f_frsize / 1e6);
+    throw Error(kExitIoErr, msg);
+  }
+
   // one writer at a time; then finish or sweep what a killed writer left
   std::vector<std::string> temps;
   std::unique_ptr<DirLock> lock;
@@ -207,9 +223,11 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
       else writeTableExrTemporary(tmp, f.path, *f.image, f.half);
     }
   } catch (const Error& e) {
+    lock.reset();  // its holder line goes first, so that a directory we created is empty again
     cleanUp(temps, created);
     throw Error(e.code(), std::string(e.what()) + "; nothing was written");
   } catch (...) {
+    lock.reset();
     cleanUp(temps, created);
     throw;
   }
@@ -296,7 +314,11 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
 void writeTextFile(const std::string& path, const std::string& text) {
   std::string tmp = temporaryPathFor(path);
   int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) throw Error(kExitCantCreat, "cannot create " + path + ": " + errnoText(errno));
+  if (fd < 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    throw Error(kExitCantCreat, "cannot create " + path + ": " + errnoText(err));
+  }
   size_t done = 0;
   bool ok = true;
   while (ok && done < text.size()) {

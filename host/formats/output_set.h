@@ -19,6 +19,9 @@ struct OutputFile {
   // large to hold whole (3D tables, streamed slab by slab) and other formats. It throws Error, and
   // the set then removes every temporary as for any other failure.
   std::function<void(const std::string& tmp)> write;
+  // The most bytes the file can take, checked against the free space before anything is written;
+  // 0: from `image` (raw texels plus 64 KiB), or unknown (a writer that checks its own, brdf3d).
+  uint64_t bytesBound = 0;
 };
 
 // Before any work: `dir` is a directory we can write into, or can be created (mkdir -p) under the

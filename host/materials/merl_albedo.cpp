@@ -261,6 +261,9 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
   img.strings["brdf.schema"] = "brdfbake/1";
   img.strings["brdf.table"] = tableName(kind);
   img.strings["brdf.material"] = "merl:" + name;
+  // the share of the lit bins the file measures, per channel (formats/merl.h kMerlMinMeasured)
+  img.strings["brdf.merl.measured"] = "R " + fmtG(d.measuredShare[0], 4) + ", G " + fmtG(d.measuredShare[1], 4) +
+                                      ", B " + fmtG(d.measuredShare[2], 4);
   img.strings["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
   auto listOf = [](const auto& ladder) {
     std::string text;

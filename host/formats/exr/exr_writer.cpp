@@ -101,7 +101,12 @@ std::string temporaryPathFor(const std::string& path) { return makeTemporaryFor(
 
 void writeTableExr(const std::string& path, const TableImage& img, bool half) {
   const std::string tmp = temporaryPathFor(path);
-  writeTableExrTemporary(tmp, path, img, half);
+  try {
+    writeTableExrTemporary(tmp, path, img, half);
+  } catch (...) {
+    ::unlink(tmp.c_str());  // temporaryPathFor created it
+    throw;
+  }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int err = errno;
     ::unlink(tmp.c_str());
