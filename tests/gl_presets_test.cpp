@@ -178,11 +178,14 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
     const std::string ext = name == "unreal" ? ".dds" : name == "gltf-sample-viewer" ? ".png" : name.rfind("unity-hdrp", 0) == 0 ? ".exr" : ".ktx2";
     // 32^2, but HDRP's sqrt lookup at its own FGDTEXTURE_RESOLUTION (the preset's 64), built into its expression
     const std::string size = name == "unity-hdrp-sqrt" ? "" : " --size 32";
-    ASSERT_EQ(bake("--layout " + name + size + (name == "unreal" ? " --format dds,ktx2" : "") + " -o '" +
+    // the DDS preset writes its KTX2 twin itself
+    ASSERT_EQ(bake("--layout " + name + size + " -o '" +
                    (dir() / name).string() + "'"),
               0)
         << name;
-    File f = load((dir() / name / "splitsum_ggx_smith-correlated").string() + ext);
+    File f = load((dir() / name / ("splitsum_ggx_smith-correlated_" + name)).string() + ext);
+    EXPECT_EQ(f.header.strings["brdf.layout"], name) << "info names the preset";
+    EXPECT_NE(f.header.strings["brdf.layout.sampling"].find(name == "unreal" ? "EnvBRDF" : ""), std::string::npos);
     Figures fig = run(f, expr);
     std::printf("%-19s %-6d %-9s %.2e    %.2e    %.2e   %.1e\n", name.c_str(), f.tex.width,
                 f.path.substr(f.path.rfind('.') + 1).c_str(), fig.engine, fig.generated, fig.predicted, fig.agree);
@@ -192,7 +195,7 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
   }
   // the older HDRP lookup (linear NdotV at texel centres) of the sqrt file: the axis matters
   {
-    File f = load((dir() / "unity-hdrp-sqrt" / "splitsum_ggx_smith-correlated.exr").string());
+    File f = load((dir() / "unity-hdrp-sqrt" / "splitsum_ggx_smith-correlated_unity-hdrp-sqrt.exr").string());
     Figures fig = run(f, engines[2].second);
     std::printf("%-19s %-6d %-9s %.2e    %.2e    %.2e   (the older linear-NdotV lookup of it: off by %.2f)\n",
                 "unity-hdrp-sqrt", f.tex.width, "exr", fig.engine, fig.generated, fig.predicted, fig.agree);
@@ -200,7 +203,7 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
   }
   // without a preset: transposed, flipped, (B, A+B); the engines' plain expression must then fail
   ASSERT_EQ(bake("--axes r,mu --flip-y --channels B,A+B --size 32 --format exr -o '" + (dir() / "flags").string() + "'"), 0);
-  File f = load((dir() / "flags" / "splitsum_ggx_smith-correlated.exr").string());
+  File f = load((dir() / "flags" / "splitsum_ggx_smith-correlated_r-mu_flip-y_B-AB.exr").string());
   EXPECT_EQ(f.header.strings["brdf.axes"], "r,mu");
   EXPECT_EQ(f.header.strings["brdf.layout.flip"], "y");
   Figures fig = run(f, "vec2 ab = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * ab.x + ab.y;");

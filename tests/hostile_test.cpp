@@ -130,3 +130,20 @@ TEST(Hostile, ErrorsNameTheOptionAsSpelt) {
   expectRefused(run("energy -o x"), 64, "-o: not an energy option", "energy -o");
   expectRefused(run("energy --output x"), 64, "--output: not an energy option", "energy --output");
 }
+
+// Presets never overwrite each other: each preset's file carries its name; info names the preset;
+// the DDS preset writes the KTX2 twin that shader reads its layout from.
+TEST(Hostile, LayoutPresetsNeverOverwriteEachOther) {
+  const fs::path d = freshDir("hostile", "presets");
+  ASSERT_EQ(run("--layout filament --size 8 -o o", d.string()).code, 0);
+  ASSERT_EQ(run("--layout bevy --size 8 -o o", d.string()).code, 0);
+  ASSERT_EQ(run("--layout unreal --size 8 -o o", d.string()).code, 0);
+  for (const char* f : {"splitsum_ggx_smith-correlated_filament.ktx2", "splitsum_ggx_smith-correlated_bevy.ktx2",
+                        "splitsum_ggx_smith-correlated_unreal.dds", "splitsum_ggx_smith-correlated_unreal.ktx2"})
+    EXPECT_TRUE(fs::exists(d / "o" / f)) << f;
+  CmdResult r = run("info o/splitsum_ggx_smith-correlated_filament.ktx2", d.string());
+  EXPECT_NE(r.out.find("brdf.layout (text): filament"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("brdf.layout.sampling (text): google/filament"), std::string::npos) << r.out;
+  r = run("shader --lang glsl o/splitsum_ggx_smith-correlated_unreal.dds", d.string());
+  EXPECT_EQ(r.code, 0) << r.out;
+}

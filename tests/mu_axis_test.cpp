@@ -152,7 +152,7 @@ TEST(MuAxis, SqrtTexelsHoldTheTableAtMuSquared) {
   }
   // the preset: HDRP's node grid and sqrt axis, 64^2 float16 EXR, (B, A + B)
   ASSERT_EQ(run("--layout unity-hdrp-sqrt -o '" + (d / "hdrp").string() + "'").code, 0);
-  TableImage h = readTableExrHeader((d / "hdrp" / "splitsum_ggx_smith-correlated.exr").string());
+  TableImage h = readTableExrHeader((d / "hdrp" / "splitsum_ggx_smith-correlated_unity-hdrp-sqrt.exr").string());
   EXPECT_TRUE(sqrtIndex(h));
   EXPECT_EQ(h.strings["brdf.grid"], "node");
   EXPECT_EQ(h.width, 64);

@@ -6,7 +6,7 @@
 // usage: brdfbake-bench [--size N] [--samples S] [--stride K] [--repeat R] [--device TEXT] [--times-only]
 //                       [--pair NDF+GAF]... [--all-pairs] [--albedo-avg] [--cold-start [--build-threads N] [--skip-all]] [--materials]
 //                       [--dielectric [--mc-log2 K]] [--dielectric-avg [--size N] [--pair NDF+GAF]]
-//                       [--merl FILE [--size N]]
+//                       [--merl FILE [--size N]] [--commit]
 //   --stride K: reference on every K-th texel per axis plus the first/last rows and columns
 //               (default 1: every texel; the reference takes a few seconds for all 16384).
 //   --times-only: skip the errors; times and ratio only.
@@ -43,6 +43,9 @@
 //   --dielectric-avg [--size N] [--pair NDF+GAF]: the N x N dielectric-avg table (default 8, ggx +
 //               smith-correlated) baked as brdfbake bakes it, every stored value against the same
 //               rule run tight: the largest error against brdf.error. ~4 minutes at 8 (3 s an entry).
+//   --commit [--repeat R]: what the output directory's lock and the commit record cost: their
+//               steps timed against a warm default bake, both medians of R runs (at least 21), in
+//               the same run (host/bench/commit_bench.cpp). A few seconds.
 //   --merl FILE [--size N]: a measured material's albedo (N texel centres, default 16) and
 //               albedo-avg tables baked as brdfbake bakes them, each claim against a rule above the
 //               ones it climbs (host/bench/merl_bench.cpp). ~2 minutes at 16.
@@ -77,6 +80,7 @@ int volumeBench(KernelRunner& runner, int repeat, int bigSize);  // volume_bench
 int dielectricBench(KernelRunner& runner, int samplesLog2);     // dielectric_bench.cpp
 int dielectricAvgBench(KernelRunner& runner, int n, int ndf, int gaf);  // dielectric_bench.cpp
 int merlBench(const std::string& file, int size);                       // merl_bench.cpp
+int commitBench(const std::string& device, int repeat);                 // commit_bench.cpp
 int allPairs(KernelRunner& runner, int n, int stride, const std::vector<std::pair<int, int>>& only);  // pairs_bench.cpp
 int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pairs, int size, int stride,
                 const std::string& csv);  // bounds_bench.cpp
@@ -288,6 +292,7 @@ int main(int argc, char** argv) {
   int mcLog2 = 23;
   int buildThreads = 0, volumeSize = 256;
   std::string child, merlFile;
+  bool commit = false;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     auto next = [&]() -> std::string {
@@ -309,6 +314,7 @@ int main(int argc, char** argv) {
     else if (a == "--dielectric-avg") dielectricAvg = true;
     else if (a == "--bounds") bounds = true;
     else if (a == "--merl") merlFile = next();
+    else if (a == "--commit") commit = true;
     else if (a == "--csv") csv = next();
     else if (a == "--pair") {
       std::string v = next();
@@ -334,6 +340,7 @@ int main(int argc, char** argv) {
   try {
     if (!child.empty()) return bakeChild(device, child == "all", buildThreads);
     if (cold) return coldStart(device, samples, repeat, buildThreads, skipAll);
+    if (commit) return commitBench(device, std::max(repeat, 21));
     if (!merlFile.empty()) return merlBench(merlFile, sizeSet ? n : 16);  // on the host: no device
     DeviceEntry dev = selectDevice(device);
     KernelRunner runner(dev.device);

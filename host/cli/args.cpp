@@ -50,6 +50,8 @@ void checkFormatOptions(BakeRequest& req) {
   if (req.layoutPreset) {  // a layout preset's format and precision, where the request gives none
     const LayoutPreset& lp = layoutPreset(*req.layoutPreset);
     if (req.formats.empty()) req.formats = {lp.format};
+    // a DDS holds no metadata: its KTX2 twin (the same texels) is what info and shader read
+    if (req.formats == std::vector<FileFormat>{FileFormat::Dds}) req.formats.push_back(FileFormat::Ktx2);
     if (!req.precision && formatHolds(req.formats[0], lp.precision))
       req.precision = lp.precision, req.half = lp.precision == Precision::Float16;
   }

@@ -83,7 +83,16 @@ OutputFile formatWriter(const std::string& path, FileFormat f, Precision p, cons
 
 std::vector<PlannedFile> tableOutputs(const FileSpec& job, const TableImage& baked, std::deque<TableImage>& keep) {
   // the engine's layout (formats/layout.h): every file of the set holds the same arrangement
-  const TableImage& img = job.layout.identity() ? baked : keep.emplace_back(applyLayout(baked, job.layout));
+  const TableImage* arranged = &baked;
+  if (!job.layout.identity() || !job.layoutName.empty()) {
+    TableImage& l = keep.emplace_back(job.layout.identity() ? baked : applyLayout(baked, job.layout));
+    // the preset by name, and how the engine samples it (`info` prints both)
+    l.strings["brdf.layout"] = job.layoutName;
+    for (const LayoutPreset& p : layoutPresets())
+      if (p.name == job.layoutName) l.strings["brdf.layout.sampling"] = p.citation;
+    arranged = &l;
+  }
+  const TableImage& img = *arranged;
   const std::string stem = pathStem(job.path);
   const Precision exrPrecision = job.half ? Precision::Float16 : Precision::Float32;
   double exrStorage = 0;

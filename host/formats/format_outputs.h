@@ -36,6 +36,7 @@ struct FileSpec {
   Precision precision = Precision::Float32;
   bool half = false;
   TableLayout layout = {};
+  std::string layoutName;  // recorded as brdf.layout (with the preset's sampling recipe)
 };
 
 // The files of a 2D table `img` as its family made it, whose brdf.error includes the storage

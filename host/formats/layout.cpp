@@ -60,6 +60,19 @@ const std::vector<LayoutPreset>& layoutPresets() {
   return presets;
 }
 
+std::string layoutName(const std::optional<std::string>& preset, const TableLayout& layout) {
+  if (preset) return *preset;
+  if (layout.identity()) return "";
+  std::string n = layout.rAlongX ? "r-mu" : "mu-r";
+  if (layout.flipX) n += "_flip-x";
+  if (layout.flipY) n += "_flip-y";
+  if (!layout.channels.empty()) {
+    n += "_";
+    for (size_t c = 0; c < layout.channels.size(); ++c) n += (c ? "-" : "") + (layout.channels[c] == "A+B" ? std::string("AB") : layout.channels[c]);
+  }
+  return n;
+}
+
 const LayoutPreset& layoutPreset(const std::string& name) {
   std::vector<std::string> names;
   for (const auto& p : layoutPresets()) {

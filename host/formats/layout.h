@@ -36,6 +36,10 @@ struct LayoutPreset {
 };
 
 const std::vector<LayoutPreset>& layoutPresets();
+// The layout's name in file names and brdf.layout: the preset's, else one spelling the custom
+// arrangement ("r-mu_flip-y_B-A"), else "" (the table as baked). Presets and custom layouts thus
+// never share a file name with each other or with the plain table.
+std::string layoutName(const std::optional<std::string>& preset, const TableLayout& layout);
 // The preset named `name`; throws Error(kExitUsage) listing the presets when there is none.
 const LayoutPreset& layoutPreset(const std::string& name);
 // "A,B" -> {"A", "B"}; throws Error(kExitUsage) for a name other than A, B, A+B, a repeat, or

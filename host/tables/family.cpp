@@ -51,7 +51,7 @@ void TableFamily::addBakedFiles(const Job& job, BakedTable& t, FileSet& set) con
     for (const auto& [k, v] : it->second) t.image.strings[k] = v;
   TableReport r = reportOf(tj);
   r.seconds = t.seconds;
-  for (PlannedFile& pf : tableOutputs(FileSpec{tj.path, tj.formats, tj.precision, tj.half, tj.layout}, t.image, set.keep)) {
+  for (PlannedFile& pf : tableOutputs(FileSpec{tj.path, tj.formats, tj.precision, tj.half, tj.layout, tj.layoutName}, t.image, set.keep)) {
     r.path = pf.file.path;
     r.errorBound = pf.errorBound;
     set.reports.push_back(r);
@@ -63,6 +63,7 @@ void applyFormats(const BakeRequest& req, TableJob& job) {
   job.precision = req.precision ? *req.precision : req.half ? Precision::Float16 : Precision::Float32;
   job.formats = req.formats.empty() ? std::vector<FileFormat>{FileFormat::Exr} : req.formats;
   job.layout = req.layout;
+  job.layoutName = job.layout.identity() && !req.layoutPreset ? "" : layoutName(req.layoutPreset, req.layout);
 }
 
 std::string tableJobKey(const TableJob& j) {

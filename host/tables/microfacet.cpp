@@ -38,8 +38,10 @@ std::string microfacetFileName(const TableJob& job) {
   if (job.kind == TableKind::Kp) return t + "_" + ndfNames()[job.ndf] + ".exr";
   // a Fresnel other than the table's own default (F = 1; splitsum: Schlick's split) is named
   bool plain = job.fresnel.isOne() || (job.kind == TableKind::SplitSum && job.fresnel.model == FRESNEL_SCHLICK);
+  // an engine's layout is its own file: two presets in one directory never replace each other
   return t + "_" + ndfNames()[job.ndf] + "_" + gafNames()[job.gaf] +
-         (plain ? "" : "_" + fresnelNames()[job.fresnel.model]) + ".exr";
+         (plain ? "" : "_" + fresnelNames()[job.fresnel.model]) + (job.layoutName.empty() ? "" : "_" + job.layoutName) +
+         ".exr";
 }
 
 TableImage computeTable(KernelRunner& runner, const TableJob& job, double* seconds, std::vector<double>* texelBounds) {
@@ -282,8 +284,8 @@ class Microfacet final : public TableFamily {
   }
 
   Job add(const BakeRequest& req, TableJob job) const {
-    job.path = req.outDir + "/" + microfacetFileName(job);
     applyFormats(req, job);
+    job.path = req.outDir + "/" + microfacetFileName(job);
     return makeJob(this, job.kind, job);
   }
 
