@@ -13,6 +13,8 @@ PACKAGES=(
   # tests: GoogleTest, other readers of our files, a real GL pipeline, the shader compiler, plots
   libgtest-dev libfreeimage-dev libopenimageio-dev python3-pil
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri glslang-tools gnuplot-nox
+  # tests: libFuzzer (clang's -fsanitize=fuzzer) for the scene readers
+  clang libclang-rt-14-dev
 )
 if [ "${1:-}" = "--list" ]; then
   printf '%s\n' "${PACKAGES[@]}"

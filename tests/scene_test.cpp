@@ -282,7 +282,24 @@ TEST(Scene, GltfReadsMaterialsOnlyAndChecksEveryField) {
   EXPECT_NE(r.out.find("asset.version: expected \"2.x\""), std::string::npos) << r.out;
 }
 
-// The fuzzer's corpus (tools/fuzz_manifest.sh, libFuzzer): every input parses or is rejected with
+// The glTF fuzzer's seeds (tools/fuzz.sh gltf): each plans or is rejected with a message.
+TEST(Scene, GltfFuzzCorpusParsesOrIsRejected) {
+  fs::path corpus = fs::path(BRDFBAKE_SOURCE_DIR) / "tests" / "fuzz" / "gltf_corpus";
+  size_t files = 0, parsed = 0;
+  for (const auto& e : fs::directory_iterator(corpus)) {
+    ++files;
+    try {
+      parseGltf(read(e.path()), e.path().filename().string());
+      ++parsed;
+    } catch (const Error& err) {
+      EXPECT_EQ(err.code(), kExitDataErr) << e.path() << ": " << err.what();
+    }
+  }
+  EXPECT_GE(files, 3u);
+  EXPECT_GE(parsed, 3u);  // the seeds are valid files
+}
+
+// The fuzzer's corpus (tools/fuzz.sh manifest, libFuzzer): every input parses or is rejected with
 // a message (brdfbake::Error), never anything else; crashers found while fuzzing stay in it.
 TEST(Scene, FuzzCorpusParsesOrIsRejected) {
   fs::path corpus = fs::path(BRDFBAKE_SOURCE_DIR) / "tests" / "fuzz" / "corpus";

@@ -1,5 +1,6 @@
 #include "bake/bake.h"
 
+#include <chrono>
 #include <map>
 
 #include "formats/output_set.h"
@@ -36,12 +37,15 @@ std::vector<TableReport> runPlan(const Plan& plan) {
   const bool device = usesDevice(plan);
   if (device) ctx.runner();  // a missing device is reported before the interrupt guard
   guardInterrupts("abandoned " + std::to_string(plan.jobs.size()) + " table(s) for " + plan.outDir + "/");
+  const auto built0 = std::chrono::steady_clock::now();
   if (device) buildKernels(ctx, plan);
+  const double buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - built0).count();
   FileSet set;
   set.extraStrings = plan.extraStrings;
   for (const Job& j : plan.jobs) j.family->addFiles(ctx, j, set);
   commitOutputs(plan.outDir, set.files, !plan.noWait);
   for (auto& after : set.afterCommit) after();
+  for (TableReport& r : set.reports) r.buildSeconds = device ? buildSeconds : 0;
   return set.reports;
 }
 

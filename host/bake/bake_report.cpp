@@ -27,6 +27,12 @@ std::string formatReport(const std::vector<TableReport>& reports) {
                   size.c_str(), r.errorBound, r.seconds);
     s += line;
   }
+  // what the user also waited for: the seconds column is each table's own kernel time
+  if (!reports.empty() && reports[0].buildSeconds > 0) {
+    std::snprintf(line, sizeof line, "  + %.3f s building the OpenCL programs before the first table (PoCL caches them: "
+                  "a second run skips most of it)\n", reports[0].buildSeconds);
+    s += line;
+  }
   return s;
 }
 

@@ -157,7 +157,7 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
     if (::mkdir(it->c_str(), 0777) != 0 && errno != EEXIST) {
       int err = errno;
       cleanUp({}, created);
-      throw Error(kExitCantCreat, "-o: cannot create directory '" + *it + "': " + errnoText(err));
+      throwFileError(err, "-o: cannot create directory '" + *it + "'");  // no space or inodes: 74
     }
     created.push_back(*it);
   }

@@ -94,7 +94,15 @@ std::string gltfJson(const std::string& path, bool glb) {
 
 Scene readGltfScene(const std::string& path) {
   const bool glb = path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
-  const std::string text = gltfJson(path, glb);
+  Scene s = parseGltf(gltfJson(path, glb), path);
+  size_t slash = path.find_last_of('/');
+  s.baseDir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
+  std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  s.name = base.substr(0, base.find_last_of('.'));
+  return s;
+}
+
+Scene parseGltf(const std::string& text, const std::string& path) {
   Json doc;
   try {
     doc = Json::parse(text);
@@ -110,10 +118,8 @@ Scene readGltfScene(const std::string& path) {
   if (mats != doc.end() && !mats->is_array()) bad(path, "materials", "expected an array, got " + shown(*mats));
   Scene s;
   s.path = path;
-  size_t slash = path.find_last_of('/');
-  s.baseDir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
-  std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-  s.name = base.substr(0, base.find_last_of('.'));
+  s.baseDir = ".";
+  s.name = "gltf";
   // glTF's reference viewer: image-based lighting and punctual lights, no multiple-scattering term
   s.lighting = SceneLighting{};
   s.output.dir = "out";

@@ -65,6 +65,8 @@ struct Scene {
 Scene readScene(const std::string& path);
 Scene readManifest(const std::string& path);
 Scene readGltfScene(const std::string& path);
+// Parses a glTF file's JSON (for the fuzzer and tests); `name` stands for the file in messages.
+Scene parseGltf(const std::string& json, const std::string& name);
 // Parses manifest text (for the fuzzer and tests); `name` stands for the file in messages.
 Scene parseManifest(const std::string& text, const std::string& name);
 

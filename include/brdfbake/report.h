@@ -12,6 +12,10 @@ struct TableReport {
   int width = 0, height = 0, depth = 1;
   double errorBound = 0;  // brdf.error
   double seconds = 0;     // kernel time for this table
+  // The OpenCL program builds (and, on PoCL, kernel compiles) the bake waited for before its first
+  // table, shared by its tables: the same on each report of one bake. 0 when every program came
+  // from PoCL's cache in a fraction of a millisecond, or no table needed the device.
+  double buildSeconds = 0;
 };
 
 }  // namespace brdfbake

@@ -1,8 +1,8 @@
 // libFuzzer target for the scene manifest reader (host/scene/manifest.cpp): any input must either
 // parse or be rejected with brdfbake::Error, never crash, hang or throw anything else.
-// Built and run by tools/fuzz_manifest.sh (clang's -fsanitize=fuzzer,address,undefined); the
-// corpus it grows lives in tests/fuzz/corpus and is replayed by every test run
-// (tests/scene_fuzz_corpus_test.cpp).
+// Built and run by tools/fuzz.sh manifest (clang's -fsanitize=fuzzer,address,undefined), for a
+// bounded time in every test run (ctest Fuzz.ManifestBounded); the corpus it grows with --grow lives
+// in tests/fuzz/corpus and is replayed by every test run (Scene.FuzzCorpusParsesOrIsRejected).
 #include <cstddef>
 #include <cstdint>
 #include <string>
