@@ -529,6 +529,14 @@ TEST(CliEvidence, VerifyPassesTheDefaultPairAndWritesItsPage) {
   EXPECT_NE(html.find("<img src=\"furnace_ggx_smith-correlated.svg\""), std::string::npos);
   EXPECT_NE(bytes(d / "verify/furnace_ggx_smith-correlated.svg").find("<svg"), std::string::npos);
   EXPECT_EQ(countFiles(d), 8u) << "the page, its CSV, two data files, scripts and plots; no temporaries";
+  // the page opens with its summary; a passing pair's heat map has no failure legend, and its
+  // colour scale marks E = 1
+  const size_t summary = html.find("<h2>Summary: all 1 pair(s) pass"), pair = html.find("<h2>ggx+smith-correlated");
+  EXPECT_NE(summary, std::string::npos) << html;
+  EXPECT_LT(summary, pair) << html;
+  const std::string gp = bytes(d / "verify/furnace_ggx_smith-correlated.gp");
+  EXPECT_EQ(gp.find("E > 1 + bound"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set cbtics add ('E = 1' 1)"), std::string::npos) << gp;
 }
 
 TEST(CliEvidence, VerifyFlagsBrokenModels) {
@@ -539,6 +547,11 @@ TEST(CliEvidence, VerifyFlagsBrokenModels) {
   EXPECT_NE(r.out.find("FAIL  blinn-phong+smith: white furnace FAILS (max E = 1.3445"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("weak furnace FAILS (max |W(mu)/mu - 1| = 0.7076"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("FAIL  ggx+none: white furnace FAILS"), std::string::npos) << r.out;
+  // a failing pair's map marks the texels over their bound; the summary counts the failures
+  EXPECT_NE(bytes(d / "verify/furnace_blinn-phong_smith.gp").find("E > 1 + bound"), std::string::npos);
+  const std::string html = bytes(d / "verify/index.html");
+  EXPECT_NE(html.find(" of 4 pair(s) FAIL"), std::string::npos);
+  EXPECT_LT(html.find("<h2>Summary: "), html.find("<h2>blinn-phong+smith"));
   EXPECT_NE(r.out.find("pass  ggx+smith:"), std::string::npos) << r.out;
 }
 

@@ -147,3 +147,26 @@ TEST(Hostile, LayoutPresetsNeverOverwriteEachOther) {
   r = run("shader --lang glsl o/splitsum_ggx_smith-correlated_unreal.dds", d.string());
   EXPECT_EQ(r.code, 0) << r.out;
 }
+
+// No inodes left: the commit's temporaries cannot be created; that is a full file system (74, a
+// write error), not "cannot create" (73). A tmpfs of 5 inodes (its root, -o, the lock's holder
+// line and two files), mounted in a private mount namespace (needs root, as CI has).
+TEST(Hostile, NoInodesLeftIsAWriteError) {
+  const fs::path d = freshDir("hostile", "inodes");
+  fs::create_directories(d / "disk");
+  const std::string disk = (d / "disk").string();
+  std::ofstream(d / "t.sh") << "set -u\n"
+                               "mount -t tmpfs -o size=10m,nr_inodes=5 tmpfs '" << disk << "' || { echo 'cannot mount a tmpfs (root needed)'; exit 99; }\n"
+                               "'" BRDFBAKE_EXE "' --table kp,albedo,albedo-avg,splitsum --size 4 -o '" << disk << "/out'; echo \"rc=$?\"\n"
+                               "ls -A '" << disk << "/out' 2>/dev/null | wc -l\n";
+  CmdResult r{0, ""};
+  FILE* p = popen(("unshare -m sh '" + (d / "t.sh").string() + "' 2>&1").c_str(), "r");
+  char buf[4096];
+  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
+  r.code = pclose(p);
+  ASSERT_EQ(r.out.find("cannot mount"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("rc=74"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("No space left on device"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("nothing was written"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\n0\n"), std::string::npos) << "the failed bake left files behind: " << r.out;
+}
