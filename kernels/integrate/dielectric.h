@@ -33,10 +33,10 @@
  * panels exist. Each panel's estimate is |K15 - G7| rescaled as QUADPACK does (gk_error,
  * quadrature.h), which assumes the integrand analytic near the panel: every non-analytic point
  * sits on a break, and the near-singular ones (TIR's square root just off an arc, theta_h = 0
- * just before a break) are graded towards. Session 24 found three breaks missing by comparing each
- * texel's rescaled estimate with its error, in double against the same rule converged: x = ck
- * meeting the reflected edge, x* meeting ck, and x*'s crossings at grazing views, which the scan
- * stepped over. Until then every estimate was the bare |K15 - G7|, 20 times the error or more.
+ * just before a break) are graded towards. Three of the breaks (x = ck meeting the reflected edge,
+ * x* meeting ck, and x*'s crossings at grazing views, which a scan steps over) are where comparing
+ * each texel's rescaled estimate with its error, in double against the same rule converged, shows
+ * the estimate falling short without them; the bare |K15 - G7| runs 20 times the error or more.
  */
 /* Once per pass (compat.h "Passes"). */
 #if defined(BRDF_SECOND_PASS) ? !defined(BRDF_DIELECTRIC_H_2) : !defined(BRDF_DIELECTRIC_H)
