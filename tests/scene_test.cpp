@@ -282,32 +282,17 @@ TEST(Scene, GltfReadsMaterialsOnlyAndChecksEveryField) {
   EXPECT_NE(r.out.find("asset.version: expected \"2.x\""), std::string::npos) << r.out;
 }
 
-// The glTF fuzzer's seeds (tools/fuzz.sh gltf): each plans or is rejected with a message.
-TEST(Scene, GltfFuzzCorpusParsesOrIsRejected) {
-  fs::path corpus = fs::path(BRDFBAKE_SOURCE_DIR) / "tests" / "fuzz" / "gltf_corpus";
+// Replays a fuzzer's corpus: every input parses or is rejected with a message (brdfbake::Error,
+// exit 65, naming the file), never anything else; crashers found while fuzzing stay in it.
+// Returns how many inputs parsed.
+template <class Parse>
+size_t replayCorpus(const std::string& folder, Parse parse) {
+  fs::path corpus = fs::path(BRDFBAKE_SOURCE_DIR) / "tests" / "fuzz" / folder;
   size_t files = 0, parsed = 0;
   for (const auto& e : fs::directory_iterator(corpus)) {
     ++files;
     try {
-      parseGltf(read(e.path()), e.path().filename().string());
-      ++parsed;
-    } catch (const Error& err) {
-      EXPECT_EQ(err.code(), kExitDataErr) << e.path() << ": " << err.what();
-    }
-  }
-  EXPECT_GE(files, 3u);
-  EXPECT_GE(parsed, 3u);  // the seeds are valid files
-}
-
-// The fuzzer's corpus (tools/fuzz.sh manifest, libFuzzer): every input parses or is rejected with
-// a message (brdfbake::Error), never anything else; crashers found while fuzzing stay in it.
-TEST(Scene, FuzzCorpusParsesOrIsRejected) {
-  fs::path corpus = fs::path(BRDFBAKE_SOURCE_DIR) / "tests" / "fuzz" / "corpus";
-  size_t files = 0, parsed = 0;
-  for (const auto& e : fs::directory_iterator(corpus)) {
-    ++files;
-    try {
-      parseManifest(read(e.path()), e.path().filename().string());
+      parse(read(e.path()), e.path().filename().string());
       ++parsed;
     } catch (const Error& err) {
       EXPECT_EQ(err.code(), kExitDataErr) << e.path() << ": " << err.what();
@@ -317,8 +302,19 @@ TEST(Scene, FuzzCorpusParsesOrIsRejected) {
       ADD_FAILURE() << e.path() << ": not a brdfbake::Error: " << x.what();
     }
   }
-  EXPECT_GE(files, 3u);
-  EXPECT_GE(parsed, 2u);  // the example scenes at least
+  EXPECT_GE(files, 3u) << folder;
+  return parsed;
+}
+
+// The glTF fuzzer's seeds (tools/fuzz.sh gltf): valid files, each plans.
+TEST(Scene, GltfFuzzCorpusParsesOrIsRejected) {
+  EXPECT_GE(replayCorpus("gltf_corpus", [](const std::string& t, const std::string& n) { parseGltf(t, n); }), 3u);
+}
+
+// The manifest fuzzer's corpus (tools/fuzz.sh manifest, libFuzzer).
+TEST(Scene, FuzzCorpusParsesOrIsRejected) {
+  // the example scenes at least parse
+  EXPECT_GE(replayCorpus("corpus", [](const std::string& t, const std::string& n) { parseManifest(t, n); }), 2u);
 }
 
 TEST(Scene, ClosestNameSuggestsTypos) {
