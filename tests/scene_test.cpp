@@ -276,6 +276,12 @@ TEST(Scene, GltfReadsMaterialsOnlyAndChecksEveryField) {
     EXPECT_NE(r.out.find("bad.gltf: materials[0]"), std::string::npos) << c.material << "\n" << r.out;
     EXPECT_NE(r.out.find(c.says), std::string::npos) << c.material << "\n" << r.out;
   }
+  // a number beyond a double's range is a JSON error with a message, not an abort
+  write(d / "huge.gltf", R"({"asset":{"version":"2.0"},"materials":[{"pbrMetallicRoughness":{"roughnessFactor":1e999}}]})");
+  r = run("plan huge.gltf", d.string(), "timeout 20");
+  EXPECT_EQ(r.code, 65) << r.out;
+  EXPECT_NE(r.out.find("huge.gltf: $: not valid JSON"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("number overflow"), std::string::npos) << r.out;
   write(d / "v1.gltf", R"({"asset":{"version":"1.0"}})");
   r = run("plan v1.gltf", d.string());
   EXPECT_EQ(r.code, 65) << r.out;

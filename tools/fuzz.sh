@@ -8,6 +8,9 @@
 # With --grow they join the seed corpus. A crash fails the run; its input (crash-*) is printed
 # and kept in the scratch directory: fix the reader, then add the input to the seeds so that
 # every test run replays it (tests/scene_test.cpp, Scene.*FuzzCorpus*).
+# FUZZ_RUNS=N stops after N inputs instead of after SECONDS, and FUZZ_SEED=S fixes libFuzzer's
+# seed: the test run sets both, so that it tries the same inputs on every machine and a landing
+# does not depend on the luck of a random seed. Exploration (a bare call) uses a fresh seed.
 # FUZZ_BUILD (default build/fuzz) holds the fuzzers, rebuilt when a source is newer; BUILD_DIR
 # (default build) a configured build, for generated/version.h.
 # -DNDEBUG as in Debian's libtomlplusplus: toml++ 3.3 asserts an internal precondition on "[." (a
@@ -42,9 +45,11 @@ fi
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/brdfbake-fuzz-$target.XXXXXX")
 if [ "$grow" = --grow ]; then first="$seeds"; else first="$scratch/new"; mkdir -p "$first"; fi
 cd "$scratch"
-if "$bin" -max_total_time="$seconds" -max_len=4096 -timeout=5 -rss_limit_mb=2048 -print_final_stats=0 \
+bound="-max_total_time=$seconds"
+[ -n "${FUZZ_RUNS:-}" ] && bound="-runs=$FUZZ_RUNS"
+if "$bin" $bound -seed="${FUZZ_SEED:-0}" -max_len=4096 -timeout=5 -rss_limit_mb=2048 -print_final_stats=0 \
      "$first" "$seeds" $extra > "$scratch/log" 2>&1; then
-  echo "fuzz $target: no crash, hang or foreign exception in $seconds s: $(tail -1 "$scratch/log")"
+  echo "fuzz $target: no crash, hang or foreign exception ($bound, seed ${FUZZ_SEED:-random}): $(tail -1 "$scratch/log")"
   rm -rf "$scratch"
 else
   tail -40 "$scratch/log"

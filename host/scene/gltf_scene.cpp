@@ -108,6 +108,9 @@ Scene parseGltf(const std::string& text, const std::string& path) {
     doc = Json::parse(text);
   } catch (const Json::parse_error& e) {
     bad(path, "byte " + std::to_string(e.byte), std::string("not valid JSON: ") + e.what());
+  } catch (const Json::exception& e) {
+    // nlohmann reports a number beyond a double's range (1e999) as out_of_range, not parse_error
+    bad(path, "$", std::string("not valid JSON: ") + e.what());
   }
   if (!doc.is_object()) bad(path, "$", "a glTF file is a JSON object");
   const Json& asset = object(path, doc, "$", "asset");
