@@ -472,6 +472,11 @@ TEST(CliMaterials, EnergyGateExitStatuses) {
   // a specular lobe alone: blinn-phong borrowing Beckmann's Lambda exceeds 1
   r = run("energy --ndf blinn-phong --gaf smith --size 9");
   EXPECT_EQ(r.code, 1) << r.out;
+  // sheen: its albedo is infinite at mu = 0, so the check samples texel centres (as verify does)
+  r = run("energy --ndf charlie --gaf charlie-smith --size 9");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(r.out.rfind("conserves: charlie+charlie-smith, fresnel one", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("at mu=0.05556 r=0.05556"), std::string::npos) << "the first texel centre of 9:\n" << r.out;
 }
 
 TEST(CliMaterials, BadMaterialInputNamesTheFlagAndWritesNothing) {

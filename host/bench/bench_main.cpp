@@ -81,7 +81,7 @@ int dielectricBench(KernelRunner& runner, int samplesLog2);     // dielectric_be
 int dielectricAvgBench(KernelRunner& runner, int n, int ndf, int gaf);  // dielectric_bench.cpp
 int merlBench(const std::string& file, int size);                       // merl_bench.cpp
 int commitBench(const std::string& device, int repeat);                 // commit_bench.cpp
-int allPairs(KernelRunner& runner, int n, int stride, const std::vector<std::pair<int, int>>& only);  // pairs_bench.cpp
+int allPairs(const std::string& device, int n, int stride, const std::vector<std::pair<int, int>>& only);  // pairs_bench.cpp
 int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pairs, int size, int stride,
                 const std::string& csv);  // bounds_bench.cpp
 }
@@ -342,14 +342,14 @@ int main(int argc, char** argv) {
     if (cold) return coldStart(device, samples, repeat, buildThreads, skipAll);
     if (commit) return commitBench(device, std::max(repeat, 21));
     if (!merlFile.empty()) return merlBench(merlFile, sizeSet ? n : 16);  // on the host: no device
-    DeviceEntry dev = selectDevice(device);
-    KernelRunner runner(dev.device);
     if (everyPair) {
       for (const auto& pr : pairs)
         if (isSheenNdf(pr.first))
           throw Error(kExitUsage, "--all-pairs --pair: charlie's pairs have their own reference (tests/sheen_test.cpp)");
-      return allPairs(runner, n, stride, pairs);
+      return allPairs(device, n, stride, pairs);
     }
+    DeviceEntry dev = selectDevice(device);
+    KernelRunner runner(dev.device);
     if (avgCheck) return albedoAvgCheck(runner, strideSet ? stride : 8, repeat);
     if (materials) return materialsBench(runner, samples, repeat, strideSet ? stride : 4);
     if (bounds) {

@@ -1,14 +1,14 @@
 // brdfbake-bench --all-pairs [--pair NDF+GAF]...: every pair's split-sum table (or the given
-// pairs') against the reference on the sampled texels, with the claim as the bake makes it.
+// pairs') against the reference on the sampled texels, with the bake's own per-texel claims: each
+// table is baked through the library (brdfbake::bake), as `brdfbake bake --table splitsum` makes it.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <utility>
 #include <vector>
 
-#include "tables/error_model.h"
 #include "bench/bench_util.h"
-#include "cl/runner.h"
+#include "brdfbake/brdfbake.h"
 #include "common/models.h"
 #include "reference/reference.h"
 
@@ -17,7 +17,7 @@ using namespace bench;
 
 // Every pair's n x n texel-centre split-sum table against the reference on the sampled texels
 // (only the --pair ones where any are given). Returns 0 if every error is within its bound.
-int allPairs(KernelRunner& runner, int n, int stride, const std::vector<std::pair<int, int>>& only) {
+int allPairs(const std::string& device, int n, int stride, const std::vector<std::pair<int, int>>& only) {
   std::vector<std::pair<int, int>> texels = sampledTexels(n, stride);
   std::printf("split-sum %dx%d, %s, errors on %zu texels (stride %d + edges)\n", n, n,
               only.empty() ? "every NDF/GAF pair" : "the given pairs", texels.size(), stride);
@@ -29,7 +29,13 @@ int allPairs(KernelRunner& runner, int n, int stride, const std::vector<std::pai
       // (the sheen pairs' reference is reference/sheen_reference.h: tests/sheen_test.cpp)
       if (!pairSupported(ndf, gaf) || isSheenNdf(ndf)) continue;
       if (!only.empty() && std::find(only.begin(), only.end(), std::pair{ndf, gaf}) == only.end()) continue;
-      KernelTable t = runner.hemisphere(ndf, gaf, n, n, false);
+      BakeRequest req;
+      req.ndfs = {ndf};
+      req.gafs = {gaf};
+      req.tables = {TableKind::SplitSum};
+      req.size = n;
+      req.device = device;
+      Table t = std::move(bake(req).at(0));  // R = A, G = B, B = A + B = E
       std::vector<double> err(texels.size());
       onTwoThreads(texels.size(), [&](size_t k) {
         auto [i, j] = texels[k];
@@ -41,9 +47,7 @@ int allPairs(KernelRunner& runner, int n, int stride, const std::vector<std::pai
       int bad = 0;
       for (size_t k = 0; k < texels.size(); ++k) {
         size_t x = static_cast<size_t>(texels[k].second) * n + texels[k].first;
-        // the claim as the bake makes it: the estimate + the float model (tables/error_model.h)
-        double scale = std::max({std::fabs(t.planes[0][x]), std::fabs(t.planes[1][x]), std::fabs(t.planes[2][x])});
-        double b = t.err[x] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf));
+        double b = t.texelBounds[x];
         worst = std::max(worst, err[k]);
         bound = std::max(bound, b);
         if (err[k] > b) ++bad;

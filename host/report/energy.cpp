@@ -7,6 +7,7 @@
 
 #include "cl/device.h"
 #include "cl/runner.h"
+#include "brdfbake/brdfbake.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"
@@ -60,6 +61,12 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
                      (orenNayar && req.sigma ? " sigma=" + fmtG(*req.sigma) : "") + ", coupling " +
                      req.coupling;
       std::vector<EnergyPoint> pts;
+      // the node grid (edges included), or texel centres for the sheen GAFs, whose albedo is
+      // infinite at mu = 0 (as verify's white furnace samples them)
+      const bool nodes = !isSheenGaf(gaf);
+      auto at = [nodes](int i, int count, double lo, double hi) {
+        return nodes ? node(i, count, lo, hi) : lo + (hi - lo) * (i + 0.5) / count;
+      };
       if (req.transmission) {
         // rough glass: reflected plus transmitted albedo at the material's eta, node grid of (mu, r)
         if ((ndf != NDF_GGX && ndf != NDF_BECKMANN) || (gaf != GAF_SMITH && gaf != GAF_SMITH_CORRELATED))
@@ -78,17 +85,22 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
             }
         }
       }
+      // the specular lobe's albedo with its Fresnel over (mu, r) on the node grid, as `brdfbake bake
+      // --table albedo --fresnel ...` makes it, with the table's per-texel claims
+      Table spec;
+      if (!req.transmission) {
+        BakeRequest b;
+        b.ndfs = {ndf};
+        b.gafs = {gaf};
+        b.tables = {TableKind::Albedo};
+        b.size = n;
+        b.nodeGrid = nodes;
+        b.fresnel = fc;
+        b.fresnelGiven = req.fresnelGiven;
+        b.device = req.device;
+        spec = std::move(bake(b).at(0));
+      }
       for (int c = 0; c < (req.transmission ? 0 : fc.channels()); ++c) {
-        // the specular lobe's albedo with its Fresnel over (mu, r), node grid
-        KernelTable spec;
-        if (fc.isOne()) {
-          spec = runner.hemisphere(ndf, gaf, n, n, true);
-          spec.planes[1] = spec.planes[2];
-        } else {
-          auto [x, y] = fc.kernelParams(c);
-          spec = runner.hemisphere(ndf, gaf, n, n, true,
-                                   HemiWeight{HEMI_FRESNEL, fc.model, static_cast<float>(x), static_cast<float>(y)});
-        }
         // the diffuse lobe's albedo over (mu, its parameter): burley follows r, oren-nayar sigma
         // (swept unless --sigma), the Shirley forms the Fresnel's F0 (swept when F = 1)
         KernelTable dif;
@@ -104,18 +116,18 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
             if (!fc.isOne()) plo = phi = normalReflectance(fc, c);
             else np = n, plo = 0, phi = 1, res.paramName = "F0";
           }
-          dif = runner.diffuseAlbedo(d, n, np, static_cast<float>(plo), static_cast<float>(phi), true);
+          dif = runner.diffuseAlbedo(d, n, np, static_cast<float>(plo), static_cast<float>(phi), nodes);
           // the diffuse lobe on its own: Burley's and Oren-Nayar's exceed 1 by themselves
           size_t worst = 0;
           for (size_t k = 0; k < dif.planes[0].size(); ++k)
             if (dif.planes[0][k] > dif.planes[0][worst]) worst = k;
           double ed = dif.planes[0][worst];
-          std::string at = "mu=" + fmtG(node(static_cast<int>(worst % n), n, 0, 1), 4) +
-                           (np > 1 ? " " + (res.paramName.empty() ? std::string("r") : res.paramName) + "=" +
-                                         fmtG(node(static_cast<int>(worst / n), np, plo, phi), 4)
-                                   : "");
+          std::string where = "mu=" + fmtG(at(static_cast<int>(worst % n), n, 0, 1), 4) +
+                              (np > 1 ? " " + (res.paramName.empty() ? std::string("r") : res.paramName) + "=" +
+                                            fmtG(at(static_cast<int>(worst / n), np, plo, phi), 4)
+                                      : "");
           if (c == 0)
-            res.diffuseAlone = "diffuse " + diffuseNames()[d] + " alone: largest albedo " + fmtG(ed) + " at " + at +
+            res.diffuseAlone = "diffuse " + diffuseNames()[d] + " alone: largest albedo " + fmtG(ed) + " at " + where +
                                (ed > 1 + dif.err[worst] + kAllowance
                                     ? ", above 1 by " + fmtG(ed - 1, 3) + " (a property of the model itself)"
                                     : ", at most 1");
@@ -124,9 +136,7 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
         for (int j = 0; j < n; ++j)
           for (int i = 0; i < n; ++i) {
             size_t k = static_cast<size_t>(j) * n + i;
-            double sscale = std::max({std::fabs(spec.planes[0][k]), std::fabs(spec.planes[1][k]), std::fabs(spec.planes[2][k])});
-            double es = spec.planes[1][k],
-                   bs = (spec.err[k] + floatArithmeticError(sscale, hemiFloatModel(ndf, gaf, !fc.isOne()))) * std::max(1.0, std::fabs(es));
+            double es = spec.planes[static_cast<size_t>(c)][k], bs = spec.texelBounds[k] * std::max(1.0, std::fabs(es));
             int q0 = followsR ? j : 0, q1 = followsR ? j + 1 : np;
             for (int q = d >= 0 ? q0 : 0; q < (d >= 0 ? q1 : 1); ++q) {
               double ed = 0, bd = 0;
@@ -140,8 +150,8 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
               double w = req.coupling == "albedo-scaling" ? 1 - es : 1;
               double total = es + w * ed;
               double bound = bs * (1 + (req.coupling == "albedo-scaling" ? std::fabs(ed) : 0)) + std::fabs(w) * bd;
-              double param = res.paramName.empty() ? NAN : node(q, np, plo, phi);
-              pts.push_back({node(i, n, 0, 1), node(j, n, 0, 1), param, c, es, w * ed, total, bound});
+              double param = res.paramName.empty() ? NAN : at(q, np, plo, phi);
+              pts.push_back({at(i, n, 0, 1), at(j, n, 0, 1), param, c, es, w * ed, total, bound});
             }
           }
       }

@@ -5,11 +5,14 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <memory>
 #include <vector>
 #include <random>
 
 #include "cl/device.h"
 #include "cl/runner.h"
+#include "brdfbake/brdfbake.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"
@@ -34,7 +37,7 @@ bool isSmith(int gaf) { return gafNames()[gaf].rfind("smith", 0) == 0; }
 
 // White furnace: E(mu, r) <= 1 + bound everywhere; node grid (texel centres for gaf none, whose E
 // is infinite at mu = 0). Writes the heat map data.
-VerifyCheck whiteFurnace(const KernelTable& t, int n, bool node, ReportPage& page, int ndf, int gaf) {
+VerifyCheck whiteFurnace(const Table& t, int n, bool node, ReportPage& page, int ndf, int gaf) {
   VerifyCheck c{"white furnace", true, true, 0, "", ""};
   double maxE = -1;
   std::string csv = "# mu r E bound\n";
@@ -42,10 +45,8 @@ VerifyCheck whiteFurnace(const KernelTable& t, int n, bool node, ReportPage& pag
     for (int i = 0; i < n; ++i) {
       size_t k = static_cast<size_t>(j) * n + i;
       double mu = node ? i / (n - 1.0) : (i + 0.5) / n, r = node ? j / (n - 1.0) : (j + 0.5) / n;
-      // the claim as the bake makes it: the estimate + the float model of the texel's largest moment
-      double scale = std::max({std::fabs(t.planes[0][k]), std::fabs(t.planes[1][k]), std::fabs(t.planes[2][k])});
-      double arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf));
-      double e = t.planes[2][k], bound = (t.err[k] + arith) * std::max(1.0, std::fabs(e));
+      // the bake's own claim for the texel, relative to max(1, |E|)
+      double e = t.planes[0][k], bound = t.texelBounds[k] * std::max(1.0, std::fabs(e));
       csv += fmt4(mu) + " " + fmt4(r) + " " + std::to_string(e) + " " + fmt4(bound) + "\n";
       if (e > maxE) {
         maxE = e;
@@ -79,7 +80,7 @@ VerifyCheck whiteFurnace(const KernelTable& t, int n, bool node, ReportPage& pag
 }
 
 // The energy a single-scattering lobe loses, 1 - E, against r: at mu = 1, 1/2, 1/8 and averaged.
-void energyLoss(const KernelTable& t, const KernelTable& avg, int n, bool node, ReportPage& page, int ndf, int gaf) {
+void energyLoss(const Table& t, const Table& avg, int n, bool node, ReportPage& page, int ndf, int gaf) {
   auto col = [&](double mu) {
     int i = static_cast<int>(std::lround(node ? mu * (n - 1) : mu * n - 0.5));
     return std::clamp(i, 0, n - 1);
@@ -88,7 +89,7 @@ void energyLoss(const KernelTable& t, const KernelTable& avg, int n, bool node, 
   for (int j = 0; j < n; ++j) {
     double r = node ? j / (n - 1.0) : (j + 0.5) / n;
     csv += fmt4(r) + " " + fmt4(1 - avg.planes[0][j]);
-    for (double mu : {1.0, 0.5, 0.125}) csv += " " + fmt4(1 - t.planes[2][static_cast<size_t>(j) * n + col(mu)]);
+    for (double mu : {1.0, 0.5, 0.125}) csv += " " + fmt4(1 - t.planes[0][static_cast<size_t>(j) * n + col(mu)]);
     csv += "\n";
   }
   std::string stem = fileStem(ndf, gaf);
@@ -168,7 +169,7 @@ VerifyCheck reciprocity(int ndf, int gaf) {
 
 // The rough dielectric (--table dielectric): E_R + E_T <= 1 + bound on a node grid of (mu, r), edges
 // included, over etas from TIR-dominated to dense glass and around 1; every value finite.
-VerifyCheck dielectricEnergy(KernelRunner& runner, int ndf, int gaf) {
+VerifyCheck dielectricEnergy(KernelRunner* runner, int ndf, int gaf) {
   VerifyCheck c{"dielectric energy", true, (ndf == NDF_GGX || ndf == NDF_BECKMANN) && isSmith(gaf), 0, "", ""};
   if (!c.applies) {
     c.detail = "no rough dielectric for this pair";
@@ -176,7 +177,7 @@ VerifyCheck dielectricEnergy(KernelRunner& runner, int ndf, int gaf) {
   }
   const int n = 9;
   const std::vector<double> etas = {0.2, 0.6667, 0.99, 0.9999, 1.0, 1.0001, 1.01, 1.5, 2.5, 5.0};
-  auto t = runner.dielectricSlab(ndf, gaf, n, n, etas, true, 2e-6f);
+  auto t = runner->dielectricSlab(ndf, gaf, n, n, etas, true, 2e-6f);
   double maxSum = -1;
   for (size_t k = 0; k < t[0].size(); ++k) {
     size_t x = k % n, y = (k / n) % n, z = k / (static_cast<size_t>(n) * n);
@@ -224,12 +225,31 @@ std::string VerifyResult::summary() const {
 std::vector<VerifyResult> runVerify(const BakeRequest& req, std::string* pageLine) {
   const int n = req.size ? *req.size : 33;
   if (n < 2) throw Error(kExitUsage, "--size must be at least 2 for verify (grid nodes per axis), got " + std::to_string(n));
-  DeviceEntry dev = selectDevice(req.device);
-  KernelRunner runner(dev.device);
   std::vector<std::pair<int, int>> pairs;
   for (int ndf : req.ndfs)
     for (int gaf : req.gafs) pairs.push_back({ndf, gaf});
-  runner.prepareAll(pairs);
+  // E(mu, r) and E_avg(r) as `brdfbake bake --table albedo,albedo-avg` makes them, with their
+  // per-texel claims: on the node grid (edges included), or on texel centres where E(0, r) is
+  // infinite (gaf none) or the sheen's grid starts (sheen GAFs). One library bake per grid.
+  auto onNodes = [](int gaf) { return gaf != GAF_NONE && !isSheenGaf(gaf); };
+  std::map<std::pair<int, int>, Table> albedo, avg;
+  std::fprintf(stderr, "verify: baking the albedo tables of %zu pair(s)\n", pairs.size());
+  for (bool node : {true, false}) {
+    BakeRequest b;
+    b.ndfs = req.ndfs;
+    for (int gaf : req.gafs)
+      if (onNodes(gaf) == node) b.gafs.push_back(gaf);
+    if (b.gafs.empty()) continue;
+    b.tables = {TableKind::Albedo, TableKind::AlbedoAvg};
+    b.size = n;
+    b.nodeGrid = node;
+    b.device = req.device;
+    for (Table& t : bake(b)) {
+      std::pair<int, int> pair{ndfId(t.metadata.at("brdf.ndf")), gafId(t.metadata.at("brdf.gaf"))};
+      (t.kind == tableName(TableKind::Albedo) ? albedo : avg)[pair] = std::move(t);
+    }
+  }
+  std::unique_ptr<KernelRunner> runner;  // the rough dielectric's check, for the pairs that have one
   ReportPage page("brdfbake verify");
   const std::string checksText = ("White furnace (E <= 1 + bound), weak white furnace for Smith GAFs (|W(mu)/mu - 1| <= 1e-6), "
                  "NDF normalisation (|int D (n.h) dw - 1| <= 1e-6), reciprocity (relative 1e-12 at " +
@@ -237,26 +257,20 @@ std::vector<VerifyResult> runVerify(const BakeRequest& req, std::string* pageLin
                  "bound (ggx, beckmann with smith GAFs). Grid: " +
                  std::to_string(n) + " x " + std::to_string(n) + " nodes of (mu, r), edges included.");
   // the checks first, then the page: the summary opens it, the pairs' sections follow
-  struct Tables {
-    KernelTable t, avg;
-    bool node;
-  };
   std::vector<VerifyResult> out;
-  std::vector<Tables> tables;
   ReportPage scratch("");  // whiteFurnace's plot goes to the page in the second pass
   size_t done = 0;
   for (auto [ndf, gaf] : pairs) {
     std::fprintf(stderr, "verify: %s (%zu/%zu)\n", pairName(ndf, gaf).c_str(), ++done, pairs.size());
-    bool node = gaf != GAF_NONE && !isSheenGaf(gaf);  // E(0, r) infinite: texel centres
     VerifyResult res{ndf, gaf, {}};
-    Tables tb{runner.hemisphere(ndf, gaf, n, n, node), runner.albedoAvg(ndf, gaf, n, node), node};
-    res.checks.push_back(whiteFurnace(tb.t, n, node, scratch, ndf, gaf));
+    res.checks.push_back(whiteFurnace(albedo.at({ndf, gaf}), n, onNodes(gaf), scratch, ndf, gaf));
     res.checks.push_back(weakFurnace(ndf, gaf));
     res.checks.push_back(normalisation(ndf, gaf));
     res.checks.push_back(reciprocity(ndf, gaf));
-    res.checks.push_back(dielectricEnergy(runner, ndf, gaf));
+    if (!runner && (ndf == NDF_GGX || ndf == NDF_BECKMANN) && isSmith(gaf))
+      runner = std::make_unique<KernelRunner>(selectDevice(req.device).device);
+    res.checks.push_back(dielectricEnergy(runner.get(), ndf, gaf));
     out.push_back(res);
-    tables.push_back(std::move(tb));
   }
   std::string summary;
   int failed = 0;
@@ -271,8 +285,9 @@ std::vector<VerifyResult> runVerify(const BakeRequest& req, std::string* pageLin
   for (size_t i = 0; i < out.size(); ++i) {
     const VerifyResult& res = out[i];
     page.heading(pairName(res.ndf, res.gaf));
-    whiteFurnace(tables[i].t, n, tables[i].node, page, res.ndf, res.gaf);
-    energyLoss(tables[i].t, tables[i].avg, n, tables[i].node, page, res.ndf, res.gaf);
+    const std::pair<int, int> pair{res.ndf, res.gaf};
+    whiteFurnace(albedo.at(pair), n, onNodes(res.gaf), page, res.ndf, res.gaf);
+    energyLoss(albedo.at(pair), avg.at(pair), n, onNodes(res.gaf), page, res.ndf, res.gaf);
     std::string lines;
     for (const auto& c : res.checks)
       lines += (c.applies ? (c.pass ? "pass  " : "FAIL  ") : "n/a   ") + c.name + ": " + c.detail + "\n";
