@@ -14,6 +14,7 @@
 #include "shader/shader_gen.h"
 #include "cl/device.h"
 #include "cli/args.h"
+#include "cli/console.h"
 #include "cli/commands.h"
 #include "common/errors.h"
 #include "formats/exr/table_file.h"
@@ -40,7 +41,9 @@ int main(int argc, char** argv) {
         std::cout << "brdfbake " << BRDFBAKE_VERSION << " (git " << BRDFBAKE_GIT_REV << ")\n";
         return kExitOk;
       case Command::Kind::Devices:
-        std::cout << describeDevices();
+        if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
+        if (!cmd.file.empty()) std::cout << preparePrograms(cmd.file, cmd.bake.device);
+        else std::cout << describeDevices();
         return kExitOk;
       case Command::Kind::Info: {
         const TableFile file = readTableFile(cmd.file);  // any format the baker writes
@@ -50,9 +53,14 @@ int main(int argc, char** argv) {
       }
       case Command::Kind::ScenePlan:
         return runScenePlan(cmd.scene);
-      case Command::Kind::SceneBake:
+      case Command::Kind::SceneBake: {
         if (!cmd.scene.cacheDir.empty()) usePoclCache(cmd.scene.cacheDir);
-        return runSceneBake(cmd.scene);
+        std::shared_ptr<ConsoleObserver> console = consoleObserver(cmd.timings, cmd.quiet);
+        cmd.scene.observer = console;
+        const int code = runSceneBake(cmd.scene);
+        if (console) console->finish();
+        return code;
+      }
       case Command::Kind::Shader: {
         std::string code = shaderForFiles(cmd.files, cmd.hlsl ? ShaderLang::Hlsl : ShaderLang::Glsl);
         if (cmd.file.empty()) std::cout << code;
@@ -100,7 +108,11 @@ int main(int argc, char** argv) {
       }
       case Command::Kind::Bake: {
         if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
-        std::cout << formatReport(bakeToDirectory(cmd.bake));
+        std::shared_ptr<ConsoleObserver> console = consoleObserver(cmd.timings, cmd.quiet);
+        cmd.bake.observer = console;
+        const std::string report = formatReport(bakeToDirectory(cmd.bake));
+        if (console) console->finish();
+        std::cout << report;
         return kExitOk;
       }
     }

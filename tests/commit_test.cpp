@@ -102,3 +102,23 @@ TEST(Commit, KilledCommitIsFinishedByTheNextBake) {
   ASSERT_EQ(run(std::string(kSmall) + " -o o", d.string()).code, 0);
   EXPECT_EQ(hidden(d / "o"), std::vector<std::string>{".mine"});
 }
+
+// A killed bake's temporaries are swept by `bake SCENE --prune` even when every table is up to
+// date and nothing else is written (under the directory's lock, as a bake sweeps them).
+TEST(Commit, PruneSweepsAKilledBakesTemporaries) {
+  const fs::path d = freshDir("commit", "prune");
+  const std::string scene = (fs::path(BRDFBAKE_SOURCE_DIR) / "examples/scenes/forward-mobile.toml").string();
+  CmdResult r = run("bake '" + scene + "' -o o", d.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  // a bake killed with every temporary written, before its commit record
+  CmdResult killed = run("bake '" + scene + "' -o o --force", d.string(), "BRDFBAKE_TEST_KILL_AT=record");
+  EXPECT_NE(killed.code, 0) << killed.out;
+  ASSERT_FALSE(hidden(d / "o").empty()) << "the kill left no temporary";
+  r = run("bake '" + scene + "' -o o", d.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("nothing written"), std::string::npos) << r.out;
+  EXPECT_FALSE(hidden(d / "o").empty()) << "a bake that writes nothing leaves the directory alone";
+  r = run("bake '" + scene + "' -o o --prune", d.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(hidden(d / "o").empty()) << r.out;
+}

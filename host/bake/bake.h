@@ -17,6 +17,12 @@ void preflight(BakeContext& ctx, const Plan& plan, const std::string& outDir);
 bool usesDevice(const Plan& plan);
 void buildKernels(BakeContext& ctx, const Plan& plan);
 
+// Builds from source the programs a first bake most often needs (the default set's pair, and the
+// program every pair shares when a bake names three or more) on `device`, and stores their
+// binaries in `dir` (cl/program_cache.h). The build runs it (`brdfbake devices --prepare DIR`), so
+// that a fresh checkout's first bake loads them. Returns one line per program.
+std::string preparePrograms(const std::string& dir, const std::string& device);
+
 // Runs the plan and writes the files. Returns one report per file.
 std::vector<TableReport> runPlan(const Plan& plan);
 

@@ -29,8 +29,9 @@ std::string formatReport(const std::vector<TableReport>& reports) {
   }
   // what the user also waited for: the seconds column is each table's own kernel time
   if (!reports.empty() && reports[0].buildSeconds > 0) {
-    std::snprintf(line, sizeof line, "  + %.3f s building the OpenCL programs before the first table (PoCL caches them: "
-                  "a second run skips most of it)\n", reports[0].buildSeconds);
+    std::snprintf(line, sizeof line, "  + %.3f s making the OpenCL programs ready before the first table%s\n",
+                  reports[0].buildSeconds,
+                  reports[0].buildHow.empty() ? "" : (" (" + reports[0].buildHow + ")").c_str());
     s += line;
   }
   return s;

@@ -4,7 +4,7 @@
 // measured against the host reference (adaptive Gauss-Kronrod in double).
 //
 // usage: brdfbake-bench [--size N] [--samples S] [--stride K] [--repeat R] [--device TEXT] [--times-only]
-//                       [--pair NDF+GAF]... [--all-pairs] [--albedo-avg] [--cold-start [--build-threads N] [--skip-all]] [--materials]
+//                       [--pair NDF+GAF]... [--all-pairs] [--albedo-avg] [--cold-start [--skip-all]] [--materials]
 //                       [--dielectric [--mc-log2 K]] [--dielectric-avg [--size N] [--pair NDF+GAF]]
 //                       [--merl FILE [--size N]] [--commit]
 //   --stride K: reference on every K-th texel per axis plus the first/last rows and columns
@@ -21,12 +21,12 @@
 //               table it averages, then every pair's albedo-avg against the reference: the
 //               largest bound over all 32 entries, the error at every --stride-th r (default 8)
 //               plus r = 3/64, 5/64, 63/64 and the node-grid r = 0, 1/2, 1. ~10 minutes.
-//   --cold-start: build + bake times of the default set and of every pair's tables, cold (fresh
-//               empty POCL_CACHE_DIR) and warm (same cache again), each in a child process of
-//               this program, as ratios against the Karis MC baseline timed in this run; and
-//               the albedo-avg/albedo table time ratio. ~1 minute on 2 cores.
-//               --build-threads N: threads for the program builds (default: all cores; 1 shows
-//               the serial cost). --skip-all: only the default set.
+//   --cold-start [--skip-all]: what a user waits for: `brdfbake bake` of the default set and of
+//               every pair (56 pairs, 173 tables), run as processes with HOME a fresh empty
+//               directory: the first run (empty PoCL and program caches; the programs the build
+//               prepared are found), warm runs (best of --repeat), and a first run with nothing
+//               prepared; as ratios against the Karis MC baseline timed in this run and against
+//               the warm run. --skip-all: the default set only. ~1.5 minutes on 2 cores.
 //   --materials: 32x32 dielectric albedo (ggx + smith-correlated, eta 1.5 and 1/1.5) and diffuse
 //               albedo (burley, oren-nayar) tables, kernel vs an S-sample Monte Carlo estimator of
 //               the same quantity: times, errors against the reference (dielectric on every
@@ -49,6 +49,7 @@
 //   --merl FILE [--size N]: a measured material's albedo (N texel centres, default 16) and
 //               albedo-avg tables baked as brdfbake bakes them, each claim against a rule above the
 //               ones it climbs (host/bench/merl_bench.cpp). ~2 minutes at 16.
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -87,106 +88,52 @@ int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pa
 }
 
 namespace {
-// The tables of a bake: the default set (ggx + smith-correlated: split-sum 128, albedo 32,
-// albedo-avg 32, k_p 32), or every pair with every table (k_p once per NDF), as brdfbake bakes them.
-struct BenchTable {
-  TableKind kind;
-  int ndf, gaf, size;
-};
-std::vector<BenchTable> bakeSet(bool all) {
-  std::vector<BenchTable> v;
-  int ndfs = all ? static_cast<int>(ndfNames().size()) : 1, gafs = all ? static_cast<int>(gafNames().size()) : 1;
-  for (int n = 0; n < ndfs; ++n) {
-    for (int g = 0; g < gafs; ++g) {
-      int gaf = all ? g : 10;
-      if (!pairSupported(n, gaf)) continue;
-      v.push_back({TableKind::SplitSum, n, gaf, 128});
-      v.push_back({TableKind::Albedo, n, gaf, 32});
-      v.push_back({TableKind::AlbedoAvg, n, gaf, 32});
-    }
-    v.push_back({TableKind::Kp, n, 0, 32});
-  }
-  return v;
-}
-
-KernelTable bakeOne(KernelRunner& runner, const BenchTable& t) {
-  switch (t.kind) {
-    case TableKind::SplitSum:
-    case TableKind::Albedo:
-      return runner.hemisphere(t.ndf, t.gaf, t.size, t.size, false);
-    case TableKind::AlbedoAvg:
-      return runner.albedoAvg(t.ndf, t.gaf, t.size, false);
-    case TableKind::Kp:
-    case TableKind::FresnelAvg:  // not in the bench's sets (host-side, no kernel)
-    case TableKind::Brdf3d:      // --volume
-    case TableKind::AshikhminShirley:
-    case TableKind::Dielectric:  // --dielectric
-    case TableKind::DielectricAvg:
-      break;
-  }
-  return runner.kp(t.ndf, t.size, false);
-}
-
-// Child of --cold-start: prepares (builds) everything the set needs at once, then bakes it;
-// prints the times. The parent measures the whole process (start, platform, builds, bake).
-int bakeChild(const std::string& device, bool all, int buildThreads) {
-  auto t0 = std::chrono::steady_clock::now();
-  DeviceEntry dev = selectDevice(device);
-  KernelRunner runner(dev.device);
-  if (buildThreads > 0) runner.setBuildThreads(buildThreads);
-  std::vector<BenchTable> set = bakeSet(all);
-  std::vector<KernelNeed> needs;
-  for (const BenchTable& t : set)
-    needs.push_back({t.kind == TableKind::Kp ? KernelNeed::Kp : KernelNeed::Hemisphere, t.ndf, t.gaf});
-  double tInit = seconds(t0);
-  runner.prepareAll(needs);
-  double tPrep = seconds(t0) - tInit;
-  for (const BenchTable& t : set) {
-    KernelTable k = bakeOne(runner, t);
-    for (float v : k.planes[0])
-      if (!std::isfinite(v)) return 70;
-  }
-  double tAll = seconds(t0);
-  std::printf("init %.3f prepare %.3f bake %.3f\n", tInit, tPrep, tAll - tInit - tPrep);
-  return 0;
-}
-
-// Runs this program as `--bake-child` with POCL_CACHE_DIR = cacheDir; returns its wall time and
-// fills `detail` with its report line.
-double timeChild(const std::string& cacheDir, const std::string& device, bool all, int buildThreads,
-                 std::string* detail) {
-  int fds[2];
-  if (pipe(fds) != 0) throw Error(kExitSoftware, "pipe failed");
+// --cold-start runs the brdfbake next to this program, as a user does: `brdfbake bake` with HOME a
+// fresh empty directory and no cache variables set (PoCL's cache and the program cache both start
+// empty; the programs the build prepared, build/programs, are found as a fresh checkout finds
+// them), then again in the same HOME (warm). Returns the process's wall seconds.
+double timeBake(const std::string& exe, const std::string& home, const std::vector<std::string>& args,
+                const std::string& device, bool prepared) {
   auto t0 = std::chrono::steady_clock::now();
   pid_t pid = fork();
   if (pid == 0) {
-    dup2(fds[1], 1);
-    close(fds[0]);
-    setenv("POCL_CACHE_DIR", cacheDir.c_str(), 1);
-    std::string threads = std::to_string(buildThreads);
-    std::vector<const char*> args = {"brdfbake-bench", "--bake-child", all ? "all" : "default", "--build-threads",
-                                     threads.c_str()};
-    if (!device.empty()) {
-      args.push_back("--device");
-      args.push_back(device.c_str());
+    int null = ::open("/dev/null", O_WRONLY);
+    if (null >= 0) {
+      dup2(null, 1);
+      dup2(null, 2);
     }
-    args.push_back(nullptr);
-    execv("/proc/self/exe", const_cast<char* const*>(args.data()));
+    setenv("HOME", home.c_str(), 1);
+    for (const char* v : {"POCL_CACHE_DIR", "XDG_CACHE_HOME", "BRDFBAKE_PROGRAM_CACHE", "BRDFBAKE_PREPARED_PROGRAMS"})
+      unsetenv(v);
+    if (!prepared) setenv("BRDFBAKE_PREPARED_PROGRAMS", "off", 1);
+    if (chdir(home.c_str()) != 0) _exit(127);
+    std::vector<const char*> argv = {exe.c_str(), "bake"};
+    for (const auto& a : args) argv.push_back(a.c_str());
+    if (!device.empty()) {
+      argv.push_back("--device");
+      argv.push_back(device.c_str());
+    }
+    argv.push_back(nullptr);
+    execv(exe.c_str(), const_cast<char* const*>(argv.data()));
     _exit(127);
   }
-  close(fds[1]);
-  std::string out;
-  char buf[256];
-  for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) > 0;) out.append(buf, static_cast<size_t>(n));
-  close(fds[0]);
   int status = 0;
   waitpid(pid, &status, 0);
   double t = seconds(t0);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw Error(kExitSoftware, "--bake-child failed (status " + std::to_string(status) + ")");
-  while (!out.empty() && out.back() == '\n') out.pop_back();
-  *detail = out;
+    throw Error(kExitSoftware, exe + " bake failed (status " + std::to_string(status) + ")");
   return t;
+}
+
+std::string freshHome() {
+  char tmpl[] = "/tmp/brdfbake-bench-homeXXXXXX";
+  if (!mkdtemp(tmpl)) throw Error(kExitCantCreat, "cannot create a temporary HOME");
+  return tmpl;
+}
+
+void removeTree(const std::string& dir) {
+  std::string rm = "rm -rf '" + dir + "'";
+  if (std::system(rm.c_str()) != 0) std::fprintf(stderr, "could not remove %s\n", dir.c_str());
 }
 
 // albedo-avg against albedo (ggx + smith-correlated, size 32), best of `repeat`, interleaved.
@@ -199,35 +146,53 @@ void avgVsAlbedo(KernelRunner& runner, int repeat, double* tAvg, double* tAlb) {
   }
 }
 
-int coldStart(const std::string& device, int samples, int repeat, int buildThreads, bool skipAll) {
+int coldStart(const std::string& device, int samples, int repeat, bool skipAll) {
+  char self[4096];
+  ssize_t len = readlink("/proc/self/exe", self, sizeof self - 1);
+  if (len <= 0) throw Error(kExitSoftware, "cannot find this program's path");
+  const std::string here(self, static_cast<size_t>(len));
+  const std::string exe = here.substr(0, here.find_last_of('/')) + "/brdfbake";
+  if (access(exe.c_str(), X_OK) != 0) throw Error(kExitUnavailable, exe + ": not found (build the brdfbake target)");
   // the baseline, in this process
   double tm = best(repeat, [&] { karisSplitSumMC(128, samples, 2); });
-  char tmpl[] = "/tmp/brdfbake-bench-cacheXXXXXX";
-  std::printf("build + bake in a child process (brdfbake-bench --bake-child), POCL_CACHE_DIR fresh (cold) "
-              "then reused (warm); build threads: %s\n",
-              buildThreads > 0 ? std::to_string(buildThreads).c_str() : "all cores");
+  std::printf("%s bake, HOME a fresh empty directory: first run (cold: empty PoCL and program caches), then "
+              "warm (best of %d)\n", exe.c_str(), repeat);
   std::printf("baseline: Karis MC %d spp split-sum 128x128 (C++, 2 threads) %.4f s\n", samples, tm);
-  std::printf("%-34s %10s %10s   %s\n", "what", "seconds", "/ MC", "child: seconds in init, prepare (builds), bake");
-  for (bool all : {false, true}) {
-    if (all && skipAll) break;
-    if (!mkdtemp(tmpl)) throw Error(kExitCantCreat, "cannot create a temporary cache directory");
-    std::string dir = tmpl, detail;
-    for (const char* phase : {"cold", "warm"}) {
-      double t = timeChild(dir, device, all, buildThreads, &detail);
-      std::string name = std::string(all ? "all pairs (44 x 3 + 4 tables) " : "default set (4 tables) ") + phase;
-      std::printf("%-34s %10.3f %10.2f   %s\n", name.c_str(), t, t / tm, detail.c_str());
-    }
-    std::string rm = "rm -rf '" + dir + "'";
-    if (std::system(rm.c_str()) != 0) std::fprintf(stderr, "could not remove %s\n", dir.c_str());
-    std::snprintf(tmpl, sizeof tmpl, "%s", "/tmp/brdfbake-bench-cacheXXXXXX");
+  std::printf("%-46s %9s %8s %8s\n", "what", "seconds", "/ MC", "/ warm");
+  // every pair: the four microfacet NDFs with every GAF but the sheen ones, and charlie with its four
+  std::string gafs;
+  for (int g = 0; g < static_cast<int>(gafNames().size()); ++g)
+    if (!isSheenGaf(g)) gafs += (gafs.empty() ? "" : ",") + gafNames()[g];
+  struct Set {
+    std::string name;
+    std::vector<std::vector<std::string>> bakes;  // one process each
+  };
+  std::vector<Set> sets = {{"default set (4 tables)", {{"-o", "out"}}},
+                           {"every pair (56 pairs: 173 tables)",
+                            {{"--ndf", "ggx,beckmann,blinn-phong,gaussian", "--gaf", gafs, "-o", "all"},
+                             {"--ndf", "charlie", "--gaf", "none,implicit,charlie-smith,neubelt", "-o", "sheen"}}}};
+  for (const Set& set : sets) {
+    if (skipAll && set.bakes.size() > 1) break;
+    auto timeSet = [&](const std::string& home, bool prepared) {
+      double t = 0;
+      for (const auto& args : set.bakes) t += timeBake(exe, home, args, device, prepared);
+      return t;
+    };
+    const std::string home = freshHome(), bare = freshHome();
+    const double cold = timeSet(home, true);
+    double warm = 1e30;
+    for (int r = 0; r < repeat; ++r) warm = std::min(warm, timeSet(home, true));
+    const double source = timeSet(bare, false);
+    removeTree(home);
+    removeTree(bare);
+    auto row = [&](const std::string& what, double t) {
+      std::printf("%-46s %9.3f %8.2f %8.2f\n", what.c_str(), t, t / tm, t / warm);
+    };
+    row(set.name + ", warm", warm);
+    row(set.name + ", first run", cold);
+    row(set.name + ", first run, nothing prepared", source);
+    std::fflush(stdout);
   }
-  DeviceEntry dev = selectDevice(device);
-  KernelRunner runner(dev.device);
-  double tAvg, tAlb;
-  avgVsAlbedo(runner, std::max(repeat, 5), &tAvg, &tAlb);
-  std::printf("%-34s %10.4f %10.3f\n", "albedo-avg 32 (warm)", tAvg, tAvg / tm);
-  std::printf("%-34s %10.4f %10.3f\n", "albedo 32x32 (warm)", tAlb, tAlb / tm);
-  std::printf("time ratio albedo-avg/albedo: %.2f\n", tAvg / tAlb);
   return 0;
 }
 
@@ -290,8 +255,8 @@ int main(int argc, char** argv) {
   std::vector<std::pair<int, int>> pairs;
   std::string csv;
   int mcLog2 = 23;
-  int buildThreads = 0, volumeSize = 256;
-  std::string child, merlFile;
+  int volumeSize = 256;
+  std::string merlFile;
   bool commit = false;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
@@ -332,14 +297,11 @@ int main(int argc, char** argv) {
     else if (a == "--mc-log2") mcLog2 = std::atoi(next().c_str());
     else if (a == "--volume-size") volumeSize = std::atoi(next().c_str());
     else if (a == "--skip-all") skipAll = true;
-    else if (a == "--build-threads") buildThreads = std::atoi(next().c_str());
-    else if (a == "--bake-child") child = next();
     else { std::fprintf(stderr, "unknown option %s\n", a.c_str()); return 64; }
   }
   if (n < 1 || samples < 1 || stride < 1 || repeat < 1) { std::fprintf(stderr, "arguments must be >= 1\n"); return 64; }
   try {
-    if (!child.empty()) return bakeChild(device, child == "all", buildThreads);
-    if (cold) return coldStart(device, samples, repeat, buildThreads, skipAll);
+    if (cold) return coldStart(device, samples, repeat, skipAll);
     if (commit) return commitBench(device, std::max(repeat, 21));
     if (!merlFile.empty()) return merlBench(merlFile, sizeSet ? n : 16);  // on the host: no device
     if (everyPair) {

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "cl/program_cache.h"
 #include "common/errors.h"
 
 namespace brdfbake {
@@ -106,6 +107,17 @@ std::string describeDevices() {
     s += "[" + std::to_string(i++) + "] " + e.type + "  " + e.name + "\n      platform: " + e.platform +
          "\n      version: " + e.version + (e.fp64 ? "  (fp64: double accumulators)" : "  (no fp64: float accumulators)") +
          "\n";
+    // the program binaries ready for this device (cl/program_cache.h), where they are
+    bool any = false;
+    for (const std::string& dir : programCacheDirs()) {
+      std::vector<std::string> names = preparedPrograms(dir, e.device);
+      if (names.empty()) continue;
+      any = true;
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : "; ") + n;
+      s += "      programs ready in " + dir + ": " + std::to_string(names.size()) + " (" + list + ")\n";
+    }
+    if (!any) s += "      programs ready: none (each bake builds its programs from source, then keeps their binaries)\n";
   }
   return s;
 }

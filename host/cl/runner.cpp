@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <mutex>
 #include <thread>
 
+#include "cl/program_cache.h"
 #include "cl/programs.h"
 #include "cl/runner_internal.h"
 #include "common/brdf_host.h"
@@ -77,26 +79,63 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
 }
 }  // namespace
 
-void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* done) {
-  cl::Program prog(slot.context, programSource(w.key));
-  cl_int rc = CL_SUCCESS;
+namespace {
+// Builds `prog` for `device`; the build log when it fails, "" when it builds.
+std::string buildLog(cl::Program& prog, const cl::Device& device, cl_int* rc) {
   std::string log;
+  *rc = CL_SUCCESS;
   try {
-    rc = prog.build({device_}, kBuildOptions);
+    *rc = prog.build({device}, kBuildOptions);
   } catch (const cl::BuildError& e) {
     for (auto& l : e.getBuildLog()) log += l.second;
-    rc = e.err();
+    *rc = e.err();
   } catch (const cl::Error& e) {
-    rc = e.err();
+    *rc = e.err();
   }
-  if (rc != CL_SUCCESS) {
-    if (log.empty()) log = prog.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
-    throw Error(kExitSoftware, "OpenCL kernel build failed for " + programName(w.key) + " (" + std::to_string(rc) +
-                                   "); build log:\n" + log);
+  if (*rc != CL_SUCCESS && log.empty()) log = prog.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device);
+  return log;
+}
+}  // namespace
+
+// A program from its binary in the program cache (cl/program_cache.h) when one matches, else from
+// source; a source build's binary is stored once its kernels are compiled (on PoCL the binary
+// then holds their work-group functions too).
+void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* done) {
+  auto t0 = std::chrono::steady_clock::now();
+  const std::string source = programSource(w.key), name = programName(w.key);
+  const std::string identity = programIdentity(device_, name, kBuildOptions, source);
+  std::string where;
+  bool loaded = false;
+  cl::Program prog;
+  cl_int rc = CL_SUCCESS;
+  if (cacheUse_ == ProgramCacheUse::On)
+    if (std::optional<ProgramBinary> bin = loadProgram(identity, &where)) {
+      try {
+        prog = cl::Program(slot.context, {device_}, cl::Program::Binaries{*bin});
+        loaded = buildLog(prog, device_, &rc).empty() && rc == CL_SUCCESS;
+      } catch (const cl::Error&) {
+        loaded = false;  // a binary the driver refuses: built from source below
+      }
+    }
+  if (!loaded) {
+    prog = cl::Program(slot.context, source);
+    std::string log = buildLog(prog, device_, &rc);
+    if (rc != CL_SUCCESS)
+      throw Error(kExitSoftware, "OpenCL kernel build failed for " + name + " (" + std::to_string(rc) +
+                                     "); build log:\n" + log);
   }
   done->slot = slotIndex;
   done->program = prog;
   for (const std::string& k : w.kernels) compileKernel(*done, k);
+  std::string how = loaded ? "loaded " + where : "built from source";
+  if (!loaded && cacheUse_ != ProgramCacheUse::Off) {
+    cl::Program::Binaries bins = prog.getInfo<CL_PROGRAM_BINARIES>();
+    const std::string dir = cacheUse_ == ProgramCacheUse::Refresh ? cacheDir_ : programCacheWriteDir();
+    const std::string why = storeProgram(identity, bins.empty() ? ProgramBinary{} : bins.front(), dir);
+    how += why.empty() ? ", binary stored in " + dir : ", binary not stored: " + why;
+  }
+  std::lock_guard<std::mutex> lock(eventsMutex_);
+  events_.push_back({name, how, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), loaded});
 }
 
 void KernelRunner::compileKernel(Compiled& c, const std::string& name) {

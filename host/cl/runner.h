@@ -14,6 +14,8 @@
 //    same in all of them), so a bake builds no program for it alone.
 #pragma once
 #include <CL/opencl.hpp>
+#include <functional>
+#include <mutex>
 #include <map>
 #include <memory>
 #include <string>
@@ -122,6 +124,37 @@ class KernelRunner {
 
   // Threads prepareAll uses (default: hardware_concurrency; 1 = in order on this thread).
   void setBuildThreads(int n) { buildThreads_ = n; }
+  // Long launches report progress (done of total units) through `fn`, for the table named by
+  // setProgressLabel; a 2D table of more than kBandTexels texels then runs in bands of rows.
+  using Progress = std::function<void(const std::string& what, const std::string& unit, double done, double total)>;
+  void setProgress(Progress fn) { progress_ = std::move(fn); }
+  void setProgressLabel(std::string what) { progressLabel_ = std::move(what); }
+  // Reports progress of the labelled table (no-op without a callback); 3D tables call it per slab.
+  void progress(const std::string& unit, double done, double total) const {
+    if (progress_) progress_(progressLabel_, unit, done, total);
+  }
+  static constexpr size_t kBandTexels = 1 << 16;
+
+  // How programs use the program cache (cl/program_cache.h): On (default) loads a matching binary
+  // and stores a source build's; Off neither; Refresh builds from source and stores the binary in
+  // `dir` (`brdfbake devices --prepare DIR`).
+  enum class ProgramCacheUse { On, Off, Refresh };
+  void setProgramCache(ProgramCacheUse use, std::string dir = "") {
+    cacheUse_ = use;
+    cacheDir_ = std::move(dir);
+  }
+
+  // A program made ready: loaded from a cached binary or built from source, and what it cost
+  // (wall seconds, kernels' first compile included), in the order they finished.
+  struct ProgramEvent {
+    std::string program, how;
+    double seconds = 0;
+    bool loaded = false;
+  };
+  std::vector<ProgramEvent> programEvents() const {
+    std::lock_guard<std::mutex> lock(eventsMutex_);
+    return events_;
+  }
   // Directional albedo E(mu) of diffuse model `model` (kernels/brdf/diffuse.h, DIFFUSE_*) over
   // mu in [0, 1] (x, nx) and its parameter in [pLo, pHi] (y, ny); planes {E}, err relative to
   // max(1, |E|). Runs in any built program (the kernel is in all), else builds ggx + smith-correlated.
@@ -146,6 +179,7 @@ class KernelRunner {
   int pairPrograms() const;
   bool shareFor(int newPairs) const;
   void run(Compiled& c, cl::Kernel& k, size_t gx, size_t gy);
+  void runRows(Compiled& c, cl::Kernel& k, size_t gx, size_t gy);
 
   cl::Device device_;
   bool cpu_ = false;
@@ -156,6 +190,12 @@ class KernelRunner {
   std::vector<std::unique_ptr<Slot>> slots_;  // [0]: the main context
   // per program: in one context, or in several with different kernels compiled
   std::map<ProgramKey, std::vector<std::unique_ptr<Compiled>>> programs_;
+  ProgramCacheUse cacheUse_ = ProgramCacheUse::On;
+  Progress progress_;
+  std::string progressLabel_;
+  std::string cacheDir_;  // Refresh: where binaries go
+  mutable std::mutex eventsMutex_;  // builds run on several threads (prepareAll)
+  std::vector<ProgramEvent> events_;
 };
 
 }  // namespace brdfbake

@@ -37,6 +37,31 @@ void KernelRunner::run(Compiled& c, cl::Kernel& k, size_t gx, size_t gy) {
   }
 }
 
+// As run(), in bands of rows (global offset (0, y0)) with progress after each, when a progress
+// callback is set and the table has more than kBandTexels texels: the texels are independent, so
+// the values are the same bits either way; the bands cost a queue finish each (a 4096^2 split sum
+// runs 256 of them).
+void KernelRunner::runRows(Compiled& c, cl::Kernel& k, size_t gx, size_t gy) {
+  const size_t n = gx * gy;
+  if (!progress_ || gy < 2 || n <= kBandTexels) {
+    run(c, k, gx, gy);
+    return;
+  }
+  cl::CommandQueue& q = slots_[c.slot]->queue;
+  const size_t rows = std::max<size_t>(1, kBandTexels / gx);
+  progress("texels", 0, static_cast<double>(n));
+  for (size_t y0 = 0; y0 < gy; y0 += rows) {
+    const size_t h = std::min(rows, gy - y0);
+    if (cpu_)
+      q.enqueueNDRangeKernel(k, cl::NDRange(0, y0), cl::NDRange(roundUp(gx, kLocalX), roundUp(h, kLocalY)),
+                             cl::NDRange(kLocalX, kLocalY));
+    else
+      q.enqueueNDRangeKernel(k, cl::NDRange(0, y0), cl::NDRange(gx, h), cl::NullRange);
+    q.finish();
+    progress("texels", static_cast<double>((y0 + h) * gx), static_cast<double>(n));
+  }
+}
+
 KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid, const HemiWeight& w,
                                      bool muSqrt) {
   return hemisphereRange(ndf, gaf, nx, ny, 0.0f, 1.0f, 0.0f, 1.0f, nodeGrid, w, -1, muSqrt);
@@ -75,7 +100,7 @@ KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, floa
   k.setArg(16, 0);  // the grid's mu, not a list
   k.setArg(17, a);  // (unread)
   setPairArgs(k, 18, ndf, gaf);
-  run(c, k, nx, ny);
+  runRows(c, k, nx, ny);
   KernelTable t;
   t.width = nx;
   t.height = ny;
@@ -165,7 +190,7 @@ KernelTable KernelRunner::diffuseAlbedo(int model, int nx, int ny, float pLo, fl
   k.setArg(1, err);
   setGridArgs(k, 2, nx, ny, muLo, muHi, pLo, pHi, nodeGrid);
   k.setArg(9, model);
-  run(c, k, nx, ny);
+  runRows(c, k, nx, ny);
   KernelTable t;
   t.width = nx;
   t.height = ny;

@@ -118,8 +118,22 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     return cmd;
   }
   if (first == "devices") {
-    if (args.size() > 1) throw Error(kExitUsage, "devices: unexpected argument '" + args[1] + "'");
+    // devices [--prepare DIR] [--device TEXT] [--cache-dir DIR]
     cmd.kind = Command::Kind::Devices;
+    for (size_t k = 1; k < args.size(); ++k) {
+      const std::string& a = args[k];
+      if (a == "--prepare" || a == "--device" || a == "--cache-dir") {
+        if (k + 1 >= args.size() || args[k + 1].empty())
+          throw Error(kExitUsage, a + ": expected a " + (a == "--device" ? "device name" : "directory"));
+        std::string& into = a == "--prepare" ? cmd.file : a == "--device" ? cmd.bake.device : cmd.bake.cacheDir;
+        if (!into.empty()) throw Error(kExitUsage, a + ": give it once");
+        into = args[++k];
+      } else if (!a.empty() && a[0] == '-') {
+        refuseOption("devices", a);
+      } else {
+        throw Error(kExitUsage, "devices: unexpected argument '" + a + "'");
+      }
+    }
     return cmd;
   }
   if (parseSceneCommand(args, cmd)) return cmd;
@@ -263,6 +277,9 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     } else if (opt == "--no-wait") {
       once(opt, opt);
       req.noWait = true;
+    } else if (opt == "--timings" || opt == "--quiet") {
+      once(opt, opt);
+      (opt == "--timings" ? cmd.timings : cmd.quiet) = true;
     } else if (opt == "--device") {
       once(opt, "--device");
       req.device = value();

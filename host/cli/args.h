@@ -19,6 +19,8 @@ struct Command {
   std::vector<std::string> files;  // Shader: the tables
   bool hlsl = false;               // Shader: --lang hlsl (else glsl)
   std::string helpFor;             // Help: the command whose help to print ("" = the overview)
+  bool timings = false;            // Bake, SceneBake: --timings (each stage's seconds on stderr)
+  bool quiet = false;              // Bake, SceneBake: --quiet (no progress line)
 };
 
 // Throws Error(kExitUsage) with a message naming the option and the accepted values.

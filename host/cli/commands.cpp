@@ -14,7 +14,8 @@ namespace brdfbake {
 namespace {
 
 constexpr unsigned kTableCommands = kCmdBake | kCmdEnergy | kCmdVerify | kCmdConvergence;  // take --ndf, --gaf
-constexpr unsigned kDeviceCommands = kCmdBake | kCmdEnergy | kCmdVerify | kCmdStress | kCmdConvergence | kCmdSceneBake;
+constexpr unsigned kDeviceCommands =
+    kCmdBake | kCmdEnergy | kCmdVerify | kCmdStress | kCmdConvergence | kCmdSceneBake | kCmdDevices;
 
 std::vector<std::string> formatNames() {
   std::vector<std::string> v;
@@ -88,8 +89,13 @@ std::vector<CommandInfo> makeCommands() {
        "a brdf3d table's trilinear lookup next to the exact BRDF at a point, in degrees",
        "A,B,C: (theta_i, theta_o, phi) or (theta_h, theta_d, phi_d), as the table's --param.",
        {"brdfbake sample out/brdf3d_ggx_smith-correlated.exr --at 30,45,90"}, "sample takes FILE --at A,B,C"},
-      {"devices", kCmdDevices, "brdfbake devices", "the OpenCL platforms and devices", "", {"brdfbake devices"},
-       "devices takes no options"},
+      {"devices", kCmdDevices, "brdfbake devices [--prepare DIR]",
+       "the OpenCL platforms and devices, and the programs prepared for each",
+       "Lists each device with the programs whose binaries are ready for it (loaded instead of built).\n"
+       "--prepare DIR builds the default set's programs on --device and stores their binaries in DIR\n"
+       "(the build does this into build/programs; cmake --install ships them).",
+       {"brdfbake devices", "brdfbake devices --prepare build/programs"},
+       "devices lists devices and prepares programs: --prepare, --device, --cache-dir"},
       {"completion", kCmdCompletion, "brdfbake completion bash", "a bash completion script for brdfbake",
        "Load it in the current shell with: source <(brdfbake completion bash)", {"brdfbake completion bash"},
        "completion takes the shell's name"},
@@ -138,6 +144,10 @@ std::vector<OptionInfo> makeOptions() {
       {"--output", "-o", "DIR", B | V | S | C | P | SB, "Output", "output directory, created with its parents (default out)", {}},
       {"--no-wait", "", "", B | SB, "Output",
        "when another bake is writing into -o, exit 75 at once instead of waiting for it", {}},
+      {"--timings", "", "", B | SB, "Output",
+       "print each stage's seconds on stderr: device set-up, each program (loaded or compiled), each table, writing", {}},
+      {"--quiet", "", "", B | SB, "Output",
+       "no progress line (drawn on stderr for a table that runs over a second, when stderr is a terminal)", {}},
       {"--layout", "", "NAME", B, "Engine layout",
        "--table splitsum arranged as an engine samples it (axes, flips, channels, format, precision, "
        "size, grid): " + joinNames(layoutNames()) + "\n(unity-hdrp-sqrt: x = sqrt(NdotV), node grid; docs/layouts.md)",
@@ -183,6 +193,8 @@ std::vector<OptionInfo> makeOptions() {
       {"--device", "", "TEXT", kDeviceCommands, "Device",
        "the first OpenCL device whose name or platform contains TEXT (default: the first CPU device, e.g. PoCL)", {}},
       {"--cache-dir", "", "DIR", kDeviceCommands, "Device", "PoCL's kernel cache (default: $POCL_CACHE_DIR, else ~/.cache/pocl)", {}},
+      {"--prepare", "", "DIR", kCmdDevices, "Device",
+       "build the default set's programs and store their binaries in DIR (cl/program_cache.h)", {}},
       // shader
       {"--lang", "", "L", kCmdShader, "Shader", "glsl or hlsl", {"glsl", "hlsl"}},
       {"--output", "-o", "OUT", kCmdShader, "Shader", "write the code to OUT instead of stdout", {}},

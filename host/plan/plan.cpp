@@ -22,6 +22,7 @@ Plan makePlan(const BakeRequest& given) {
   plan.outDir = req.outDir;
   plan.device = req.device;
   plan.noWait = req.noWait;
+  plan.observer = req.observer;
   for (const TableFamily* f : families())
     for (Job& j : f->plan(req)) plan.jobs.push_back(std::move(j));
   return plan;

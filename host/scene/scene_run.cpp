@@ -9,8 +9,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include "bake/bake.h"
+#include "formats/commit_record.h"
 #include "formats/output_set.h"
 #include "common/errors.h"
 #include "formats/exr/table_file.h"
@@ -136,6 +138,7 @@ int runSceneBake(const SceneOptions& o) {
   todo.outDir = p.plan.outDir;
   todo.device = p.plan.device;
   todo.noWait = o.noWait;
+  todo.observer = o.observer;
   int upToDate = 0;
   for (const auto& t : p.tables) {
     if (!o.force && statusOf(t) == Status::UpToDate) {
@@ -155,6 +158,13 @@ int runSceneBake(const SceneOptions& o) {
     std::cout << label << ": baked " << reports.size() << " table(s)";
     if (upToDate) std::cout << ", " << upToDate << " up to date (not rewritten)";
     std::cout << "\n";
+  }
+  // --prune writes into the directory: under its lock, after finishing a killed bake's commit and
+  // sweeping the temporaries killed bakes left (formats/commit_record.h), as a bake does
+  std::unique_ptr<DirLock> lock;
+  if (o.prune && fs::is_directory(p.plan.outDir)) {
+    lock = std::make_unique<DirLock>(p.plan.outDir, !o.noWait);
+    recoverDirectory(p.plan.outDir);
   }
   std::vector<std::string> old = staleTables(l.whole);
   if (!old.empty()) {

@@ -1,6 +1,9 @@
 // `brdfbake plan SCENE` and `brdfbake bake SCENE`: print the plan, bake what changed.
 #pragma once
+#include <memory>
 #include <string>
+
+#include "brdfbake/observer.h"
 
 namespace brdfbake {
 
@@ -14,6 +17,7 @@ struct SceneOptions {
   std::string stamp;       // bake: written (atomically) after a successful bake, listing the outputs
   std::string device, cacheDir;
   bool noWait = false;     // bake: exit 75 instead of waiting when another bake writes into the directory
+  std::shared_ptr<BakeObserver> observer;  // bake: stages and progress (brdfbake/observer.h), or none
 };
 
 // Prints the plan: each table, why, its size and estimated cost, whether it is new, changed or up to

@@ -56,7 +56,7 @@ void node(const Panel& p, int m, double* mu, double* w) {
 double dielectricCriticalMu(double eta) { return eta < 1 ? std::sqrt((1 - eta) * (1 + eta)) : -1; }
 
 DielectricAverages dielectricAverages(const DielectricEval& eval, const std::vector<double>& r,
-                                      const std::vector<double>& eta, double target) {
+                                      const std::vector<double>& eta, double target, std::function<void(double, double)> progress) {
   const size_t n = r.size();
   std::vector<std::vector<Panel>> panels(n);
   std::vector<std::vector<size_t>> fresh(n);  // panels whose nodes are still to be evaluated
@@ -79,6 +79,11 @@ DielectricAverages dielectricAverages(const DielectricEval& eval, const std::vec
   DielectricAverages out;
   out.nodes.assign(n, 0);
   for (int round = 0;; ++round) {
+    if (progress) {  // entries with no panel left to evaluate: the rest refine in this round
+      size_t settled = 0;
+      for (size_t j = 0; j < n; ++j) settled += fresh[j].empty();
+      progress(static_cast<double>(settled), static_cast<double>(n));
+    }
     DielectricPoints pts;
     for (size_t j = 0; j < n; ++j)
       for (size_t q : fresh[j])
@@ -143,6 +148,7 @@ DielectricAverages dielectricAverages(const DielectricEval& eval, const std::vec
       }
     }
   }
+  if (progress) progress(static_cast<double>(n), static_cast<double>(n));
   for (size_t j = 0; j < n; ++j) {
     double val[2] = {0, 0}, bnd[2] = {0, 0};
     for (const Panel& p : panels[j])

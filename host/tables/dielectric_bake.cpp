@@ -91,7 +91,10 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
         es.push_back(etas[y]);
       }
     DielectricAverages av =
-        dielectricAverages(dielectricDeviceEval(runner, job.ndf, job.gaf, kDielectricAvgNodeTarget), rs, es);
+        dielectricAverages(dielectricDeviceEval(runner, job.ndf, job.gaf, kDielectricAvgNodeTarget), rs, es,
+                           kDielectricAvgTarget, [&runner](double settled, double total) {
+                             runner.progress("entries settled", settled, total);
+                           });
     // The averages are formed in double from the nodes' unrounded values (in float without fp64:
     // the float allowance covers that) and rounded once as stored, so each entry's storage term
     // is its own rounding, known exactly: a channel's claim is its bound plus that.
@@ -115,6 +118,7 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
       int zn = std::min(job.cols, job.nz - z0);
       auto p = runner.dielectricSlab(job.ndf, job.gaf, job.nx, job.ny, dielectricEtas(job, z0, zn), job.nodeGrid,
                                      kDielectricTarget);
+      runner.progress("eta slices", z0 + zn, job.nz);
       out.cube[0].insert(out.cube[0].end(), p[0].begin(), p[0].end());
       out.cube[1].insert(out.cube[1].end(), p[1].begin(), p[1].end());
       for (float b : p[2]) {

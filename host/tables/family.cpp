@@ -2,6 +2,7 @@
 #include "tables/family.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "formats/format_outputs.h"
@@ -12,8 +13,35 @@ namespace brdfbake {
 BakeContext::~BakeContext() = default;
 
 KernelRunner& BakeContext::runner() {
-  if (!runner_) runner_ = std::make_unique<KernelRunner>(selectDevice(device_).device);
+  if (runner_) return *runner_;
+  auto t0 = std::chrono::steady_clock::now();
+  DeviceEntry dev = selectDevice(device_);
+  runner_ = std::make_unique<KernelRunner>(dev.device);
+  if (observer_) {
+    observer_->stage("device", dev.platform + ": " + dev.name,
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    // progress at most every 0.2 s, and always the last; seconds since the table's first report
+    struct Clock {
+      std::string what;
+      std::chrono::steady_clock::time_point start, last;
+    };
+    auto clock = std::make_shared<Clock>();
+    BakeObserver* obs = observer_.get();
+    runner_->setProgress([obs, clock](const std::string& what, const std::string& unit, double done, double total) {
+      auto now = std::chrono::steady_clock::now();
+      if (what != clock->what) {
+        *clock = Clock{what, now, now - std::chrono::seconds(1)};
+      }
+      if (done < total && now - clock->last < std::chrono::milliseconds(200)) return;
+      clock->last = now;
+      obs->progress(what, unit, done, total, std::chrono::duration<double>(now - clock->start).count());
+    });
+  }
   return *runner_;
+}
+
+void BakeContext::working(const std::string& what) {
+  if (runner_) runner_->setProgressLabel(what);
 }
 
 StressPoint stressPoint(const std::string& sweep, const std::string& label, double value, double reference,

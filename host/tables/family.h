@@ -33,19 +33,25 @@ struct BakedTable {
   double seconds = 0;                       // compute time
 };
 
-// What a bake shares between its jobs: the device (made on first use), data read once.
+// What a bake shares between its jobs: the device (made on first use), data read once, the
+// request's observer (stages and progress, brdfbake/observer.h).
 class BakeContext {
  public:
-  explicit BakeContext(std::string device) : device_(std::move(device)) {}
+  explicit BakeContext(std::string device, std::shared_ptr<BakeObserver> observer = nullptr)
+      : device_(std::move(device)), observer_(std::move(observer)) {}
   ~BakeContext();
-  // The runner on the request's device; selected and created on first use.
+  // The runner on the request's device; selected and created on first use (a "device" stage).
   KernelRunner& runner();
   bool hasRunner() const { return runner_ != nullptr; }
+  BakeObserver* observer() const { return observer_.get(); }
+  // The table the runner's long launches report progress for (its file).
+  void working(const std::string& what);
   // Data a family reads once per bake (a MERL file), keyed by the family.
   std::map<std::string, std::shared_ptr<void>> cache;
 
  private:
   std::string device_;
+  std::shared_ptr<BakeObserver> observer_;
   std::unique_ptr<KernelRunner> runner_;
 };
 

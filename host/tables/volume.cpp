@@ -178,9 +178,11 @@ OutputFile volumeOutput(KernelRunner& runner, const VolumeJob& job, const TableI
   f.path = job.path;
   f.half = job.half;
   const Brdf3dSpec s = job.spec;
-  auto timed = [seconds, peakSlab, &runner, s](int z0, int zn) {
+  auto timed = [seconds, peakSlab, &runner, s, path = job.path](int z0, int zn) {
     auto t0 = std::chrono::steady_clock::now();
+    runner.setProgressLabel(path);
     auto planes = runner.brdf3dSlab(s, z0, zn);
+    runner.progress("slices", z0 + zn, s.nz);
     if (seconds) *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (peakSlab) *peakSlab = std::max<uint64_t>(*peakSlab, planes.size() * planes[0].size() * sizeof(float));
     return planes;
@@ -316,9 +318,11 @@ std::vector<PlannedFile> volumeFormatOutputs(KernelRunner& runner, const VolumeJ
   src.depth = s.nz;
   src.channels = 3;
   src.slicesPerBlock = std::max(1, job.cols);  // one atlas row's slices: the EXR path's slab
-  src.fill = [&runner, s, seconds](int z0, int zn, std::vector<std::vector<float>>& planes) {
+  src.fill = [&runner, s, seconds, path = job.path](int z0, int zn, std::vector<std::vector<float>>& planes) {
     auto t0 = std::chrono::steady_clock::now();
+    runner.setProgressLabel(path);
     planes = runner.brdf3dSlab(s, z0, zn);
+    runner.progress("slices", z0 + zn, s.nz);
     if (seconds) *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (planes.size() == 1) planes = {planes[0], planes[0], planes[0]};  // R=G=B tables
   };

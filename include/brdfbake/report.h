@@ -16,6 +16,8 @@ struct TableReport {
   // table, shared by its tables: the same on each report of one bake. 0 when every program came
   // from PoCL's cache in a fraction of a millisecond, or no table needed the device.
   double buildSeconds = 0;
+  // How the programs were made ready: "1 loaded from its binary", "2 compiled (binaries kept)"; "" when none was.
+  std::string buildHow;
 };
 
 }  // namespace brdfbake

@@ -3,11 +3,13 @@
 // reports build one. The planner (plan/plan.h) validates it and turns it into jobs.
 #pragma once
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "brdfbake/observer.h"
 #include "common/brdf3d_grid.h"
 #include "common/material.h"
 #include "common/models.h"
@@ -34,6 +36,7 @@ struct BakeRequest {
   std::string device;                // substring of the device (or platform) name; "" = first CPU
   std::string cacheDir;              // PoCL kernel cache (POCL_CACHE_DIR); "" = PoCL's default
   bool noWait = false;               // another bake writing into outDir: Error(kExitTempFail) instead of waiting
+  std::shared_ptr<BakeObserver> observer;  // stages and progress as the bake runs (brdfbake/observer.h); optional
   FresnelChoice fresnel;             // --fresnel and its parameters (validated)
   bool fresnelGiven = false;
   int diffuse = -1;                  // --diffuse: DIFFUSE_* id, or -1
