@@ -23,6 +23,7 @@
 #include "report/convergence.h"
 #include "report/energy.h"
 #include "report/stress.h"
+#include "render/render.h"
 #include "report/verify.h"
 #include "version.h"
 
@@ -106,6 +107,9 @@ int main(int argc, char** argv) {
         std::cout << formatConvergence(res) << pageLine;
         return kExitOk;
       }
+      case Command::Kind::Render:
+        if (!cmd.render.cacheDir.empty()) usePoclCache(cmd.render.cacheDir);
+        return runRender(cmd.render);
       case Command::Kind::Bake: {
         if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
         std::shared_ptr<ConsoleObserver> console = consoleObserver(cmd.timings, cmd.quiet);

@@ -11,7 +11,7 @@ root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file
 # include higher; clients first, the base last
 STAGES = {
     "main.cpp": 0, "cli": 0, "bench": 0,
-    "scene": 1, "report": 1, "shader": 1,
+    "scene": 1, "report": 1, "shader": 1, "render": 1,
     "api": 2, "brdfbake": 2,
     "bake": 3,
     "plan": 4,

@@ -1,6 +1,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/layout_args.h"
+#include "cli/render_args.h"
 #include "cli/scene_args.h"
 #include "cli/volume_args.h"
 
@@ -137,6 +138,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     return cmd;
   }
   if (parseSceneCommand(args, cmd)) return cmd;
+  if (parseRenderCommand(args, cmd)) return cmd;
   if (first == "shader") {
     // shader --lang glsl|hlsl FILE... [-o OUT]
     cmd.kind = Command::Kind::Shader;

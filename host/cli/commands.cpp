@@ -15,7 +15,7 @@ namespace {
 
 constexpr unsigned kTableCommands = kCmdBake | kCmdEnergy | kCmdVerify | kCmdConvergence;  // take --ndf, --gaf
 constexpr unsigned kDeviceCommands =
-    kCmdBake | kCmdEnergy | kCmdVerify | kCmdStress | kCmdConvergence | kCmdSceneBake | kCmdDevices;
+    kCmdBake | kCmdEnergy | kCmdVerify | kCmdStress | kCmdConvergence | kCmdSceneBake | kCmdDevices | kCmdRender;
 
 std::vector<std::string> formatNames() {
   std::vector<std::string> v;
@@ -89,6 +89,14 @@ std::vector<CommandInfo> makeCommands() {
        "a brdf3d table's trilinear lookup next to the exact BRDF at a point, in degrees",
        "A,B,C: (theta_i, theta_o, phi) or (theta_h, theta_d, phi_d), as the table's --param.",
        {"brdfbake sample out/brdf3d_ggx_smith-correlated.exr --at 30,45,90"}, "sample takes FILE --at A,B,C"},
+      {"render", kCmdRender, "brdfbake render [options]",
+       "the white furnace through GL: spheres over roughness, a material per row, measured",
+       "Bakes the tables into DIR/tables, shades every pixel on OpenGL ES 3.1 (EGL; llvmpipe without a GPU)\n"
+       "with the generated lookup code, writes DIR/furnace.exr (linear) and DIR/furnace.png (sRGB), and\n"
+       "prints each row's largest deviation: exit 1 when a row that should conserve energy does not.\n"
+       "Rows: single, kulla-conty, single-table, dielectric-lambert, gold, sheen (docs/reports.md).",
+       {"brdfbake render -o out/render", "brdfbake render --rows single,kulla-conty --columns 6 -o out/render"},
+       "render draws the furnace: -o, --cell, --columns, --rows, --device"},
       {"devices", kCmdDevices, "brdfbake devices [--prepare DIR]",
        "the OpenCL platforms and devices, and the programs prepared for each",
        "Lists each device with the programs whose binaries are ready for it (loaded instead of built).\n"
@@ -141,8 +149,8 @@ std::vector<OptionInfo> makeOptions() {
        "float32/float16, png16 always unorm16",
        precisionNames()},
       {"--half", "", "", B, "Output", "--precision float16", {}},
-      {"--output", "-o", "DIR", B | V | S | C | P | SB, "Output", "output directory, created with its parents (default out)", {}},
-      {"--no-wait", "", "", B | SB, "Output",
+      {"--output", "-o", "DIR", B | V | S | C | P | SB | kCmdRender, "Output", "output directory, created with its parents (default out)", {}},
+      {"--no-wait", "", "", B | SB | kCmdRender, "Output",
        "when another bake is writing into -o, exit 75 at once instead of waiting for it", {}},
       {"--timings", "", "", B | SB, "Output",
        "print each stage's seconds on stderr: device set-up, each program (loaded or compiled), each table, writing", {}},
@@ -195,6 +203,12 @@ std::vector<OptionInfo> makeOptions() {
       {"--cache-dir", "", "DIR", kDeviceCommands, "Device", "PoCL's kernel cache (default: $POCL_CACHE_DIR, else ~/.cache/pocl)", {}},
       {"--prepare", "", "DIR", kCmdDevices, "Device",
        "build the default set's programs and store their binaries in DIR (cl/program_cache.h)", {}},
+      // render
+      {"--cell", "", "PX", kCmdRender, "Render", "pixels per sphere's square, 16..256 (default 48)", {}},
+      {"--columns", "", "N", kCmdRender, "Render", "roughness steps from 0 to 1, 2..33 (default 11)", {}},
+      {"--rows", "", "R[,R..]", kCmdRender, "Render",
+       "single, kulla-conty, single-table, dielectric-lambert, gold, sheen (default: all, in this order)",
+       {"single", "kulla-conty", "single-table", "dielectric-lambert", "gold", "sheen"}},
       // shader
       {"--lang", "", "L", kCmdShader, "Shader", "glsl or hlsl", {"glsl", "hlsl"}},
       {"--output", "-o", "OUT", kCmdShader, "Shader", "write the code to OUT instead of stdout", {}},

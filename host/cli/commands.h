@@ -23,6 +23,7 @@ enum CommandBit : unsigned {
   kCmdDevices = 1u << 10,
   kCmdCompletion = 1u << 11,
   kCmdHelp = 1u << 12,
+  kCmdRender = 1u << 13,
 };
 
 struct CommandInfo {

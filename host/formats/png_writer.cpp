@@ -3,6 +3,7 @@
 // chunk per attribute; no tIME or other varying chunk, fixed zlib level: the same bytes each time.
 #include <png.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csetjmp>
 #include <cstdio>
@@ -40,14 +41,15 @@ extern "C" void pngWarn(png_structp, png_const_charp) {}
 
 // The libpng calls, apart: setjmp/longjmp here skip no C++ object's destructor.
 bool encode(png_structp png, png_infop info, PngSink* sink, int width, int height, int channels, png_textp chunks,
-            int numChunks, png_bytepp rows) {
+            int numChunks, png_bytepp rows, int bitDepth = 16) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_set_write_fn(png, sink, pngWrite, pngFlush);
   png_set_compression_level(png, 9);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 16,
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), bitDepth,
                channels == 4 ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_text(png, info, chunks, numChunks);
+  if (bitDepth == 8) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);  // a picture, not data
   png_write_info(png, info);
   png_write_image(png, rows);
   png_write_end(png, info);
@@ -97,6 +99,42 @@ void writePng16Temporary(const std::string& tmp, const std::string& path, const 
   png_infop info = png_create_info_struct(png);
   const bool ok = info && encode(png, info, &sink, img.width, img.height, channels, chunks.data(),
                                  static_cast<int>(chunks.size()), rowPointers.data());
+  png_destroy_write_struct(&png, &info);
+  if (!ok) throw Error(sink.code, "cannot write " + path + ": " + (sink.error.empty() ? "libpng failed" : sink.error));
+  out.finish();
+}
+
+// An 8-bit sRGB picture: each linear value clamped to [0, 1] and encoded with the sRGB transfer
+// function (IEC 61966-2-1), rounded; an sRGB chunk; tEXt chunks from `text`.
+void writePng8SrgbTemporary(const std::string& tmp, const std::string& path, int width, int height,
+                            const std::vector<std::vector<float>>& rgb,
+                            const std::vector<std::pair<std::string, std::string>>& text) {
+  const size_t w = static_cast<size_t>(width);
+  std::vector<std::vector<png_byte>> rows(static_cast<size_t>(height), std::vector<png_byte>(w * 3));
+  for (int y = 0; y < height; ++y)
+    for (size_t x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) {
+        double v = std::clamp(static_cast<double>(rgb[c][y * w + x]), 0.0, 1.0);
+        if (!(v == v)) v = 0;
+        const double s = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
+        rows[y][x * 3 + c] = static_cast<png_byte>(std::lround(s * 255));
+      }
+  std::vector<png_text> chunks(text.size());
+  for (size_t i = 0; i < text.size(); ++i) {
+    chunks[i].compression = PNG_TEXT_COMPRESSION_NONE;
+    chunks[i].key = const_cast<char*>(text[i].first.c_str());
+    chunks[i].text = const_cast<char*>(text[i].second.c_str());
+    chunks[i].text_length = text[i].second.size();
+  }
+  std::vector<png_bytep> rowPointers;
+  for (auto& r : rows) rowPointers.push_back(r.data());
+  TempFileWriter out(tmp, path);
+  PngSink sink{&out, {}};
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, pngFail, pngWarn);
+  if (!png) throw Error(kExitIoErr, "cannot write " + path + ": libpng could not start");
+  png_infop info = png_create_info_struct(png);
+  const bool ok = info && encode(png, info, &sink, width, height, 3, chunks.data(), static_cast<int>(chunks.size()),
+                                 rowPointers.data(), 8);
   png_destroy_write_struct(&png, &info);
   if (!ok) throw Error(sink.code, "cannot write " + path + ": " + (sink.error.empty() ? "libpng failed" : sink.error));
   out.finish();

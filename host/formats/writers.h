@@ -5,6 +5,8 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "formats/storage.h"
 
@@ -33,6 +35,11 @@ uint32_t ddsDxgiFormat(int channels, Precision p);  // 0 when DXGI has none
 // attributes go into tEXt chunks (one per attribute), brdf.mapping among them.
 void writePng16Temporary(const std::string& tmp, const std::string& path, const TableImage& img, double scale,
                          double offset);
+// An 8-bit sRGB picture of linear RGB planes (png_writer.cpp): clamped to [0, 1], sRGB-encoded, an
+// sRGB chunk and one tEXt chunk per (key, text).
+void writePng8SrgbTemporary(const std::string& tmp, const std::string& path, int width, int height,
+                            const std::vector<std::vector<float>>& rgb,
+                            const std::vector<std::pair<std::string, std::string>>& text);
 
 // A C/C++ header (header_writer.cpp) or an ECMAScript module (js == true) holding the table as
 // literals: float32 as float literals with 9 significant digits (exact), float16 as the half

@@ -1,0 +1,106 @@
+// brdfbake render: the white furnace through OpenGL ES 3.1 on Mesa's llvmpipe (CI installs Mesa's
+// EGL): the rows that should conserve vanish into the background, the single-scattering row loses
+// energy with roughness and matches the reference, the files carry what made them; a broken
+// compensation fails the measurement; no EGL and bad options are refused before anything is written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <regex>
+#include <string>
+
+#include "cli_run.h"
+#include "formats/exr/table_file.h"
+
+namespace fs = std::filesystem;
+using namespace brdfbake::testing_cli;
+
+namespace {
+const char* const kSmall = "render --cell 24 --columns 6";
+
+// The row's line of render's table: name, conserves, deviation, bound, pixels over.
+std::smatch rowLine(const std::string& out, const std::string& row) {
+  std::smatch m;
+  std::regex re("\\n" + row + " +(yes|no) +([-0-9.e+]+) [^\\n]*? ([-0-9.e+]+) +([0-9]+)\\n");
+  EXPECT_TRUE(std::regex_search(out, m, re)) << row << "\n" << out;
+  return m;
+}
+}  // namespace
+
+TEST(Render, FurnaceRowsVanishAndTheSingleRowLosesEnergy) {
+  const fs::path d = freshDir("render", "furnace");
+  CmdResult r = run(std::string(kSmall) + " -o out", d.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("on llvmpipe"), std::string::npos) << r.out;
+  for (const char* row : {"kulla-conty", "single-table", "dielectric-lambert", "single"}) {
+    std::smatch m = rowLine(r.out, row);
+    if (m.empty()) continue;
+    EXPECT_EQ(m[4].str(), "0") << row << ": pixels over their bound\n" << r.out;
+  }
+  // Kulla-Conty from the albedo and albedo-avg tables: within 2e-3 of 1 everywhere
+  std::smatch kc = rowLine(r.out, "kulla-conty");
+  if (!kc.empty()) EXPECT_LT(std::stod(kc[2].str()), 2e-3) << r.out;
+  // single scattering against the reference's E(mu, r): within 1e-2 at every sampled pixel
+  std::smatch single = rowLine(r.out, "single");
+  if (!single.empty()) EXPECT_LT(std::stod(single[2].str()), 1e-2) << r.out;
+
+  const brdfbake::TableImage img = brdfbake::readTableExr((d / "out/furnace.exr").string());
+  ASSERT_EQ(img.width, 6 * 24);
+  ASSERT_EQ(img.height, 6 * 24);
+  auto at = [&](int c, int col, int row) {  // a sphere's centre pixel
+    return img.planes[c][static_cast<size_t>(row * 24 + 12) * img.width + col * 24 + 12];
+  };
+  EXPECT_EQ(img.planes[0][0], 1.0f) << "the background is the furnace's white";
+  // single scattering: a mirror keeps its energy, rougher spheres lose more of it (at normal view
+  // about 0.69 of it at r = 1, where Kulla-Conty's lobe brings it back)
+  EXPECT_NEAR(at(0, 0, 0), 1.0f, 1e-4);
+  EXPECT_LT(at(0, 5, 0), at(0, 3, 0));
+  EXPECT_LT(at(0, 3, 0), at(0, 1, 0));
+  EXPECT_LT(at(0, 5, 0), 0.5f);
+  for (int col = 0; col < 6; ++col) EXPECT_NEAR(at(0, col, 1), 1.0f, 2e-3) << "kulla-conty, column " << col;
+  EXPECT_LT(at(2, 3, 4), at(0, 3, 4)) << "gold reflects less blue than red";
+  EXPECT_LT(at(0, 5, 5), 0.5f) << "the sheen's albedo alone";
+  EXPECT_EQ(img.strings.at("render.rows"), "single,kulla-conty,single-table,dielectric-lambert,gold,sheen");
+  EXPECT_NE(img.strings.at("render.tables").find("tables/albedo-avg_ggx_smith-correlated.exr"), std::string::npos);
+  // the PNG: 8-bit RGB (IHDR at byte 16: width, height, bit depth, colour type) with an sRGB chunk
+  const std::string png = bytes(d / "out/furnace.png");
+  ASSERT_GT(png.size(), 33u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  EXPECT_EQ(static_cast<int>(png[24]), 8);
+  EXPECT_EQ(static_cast<int>(png[25]), 2);
+  EXPECT_NE(png.find("sRGB"), std::string::npos);
+}
+
+// A compensation lobe at half its strength does not conserve: the measurement says so, exit 1.
+TEST(Render, ABrokenCompensationFailsTheMeasurement) {
+  const fs::path d = freshDir("render", "broken");
+  CmdResult r = run(std::string(kSmall) + " --rows kulla-conty -o out", d.string(), "BRDFBAKE_TEST_RENDER_LOBE_SCALE=0.5");
+  EXPECT_EQ(r.code, 1) << r.out;
+  std::smatch m = rowLine(r.out, "kulla-conty");
+  if (!m.empty()) EXPECT_NE(m[4].str(), "0") << r.out;
+  EXPECT_NE(r.out.find("FAIL: a row's pixels are off by more than the tables predict"), std::string::npos) << r.out;
+}
+
+TEST(Render, NoEglOrBadOptionsWriteNothing) {
+  const fs::path d = freshDir("render", "refused");
+  CmdResult r = run("render -o out", d.string(), "BRDFBAKE_EGL_LIBRARY=/nonexistent/libEGL.so.1");
+  EXPECT_EQ(r.code, 69) << r.out;
+  EXPECT_NE(r.out.find("render: no EGL library (/nonexistent/libEGL.so.1): install Mesa's EGL and GLES (Debian: "
+                       "apt-get install libegl1 libegl-mesa0 libgles2 libgl1-mesa-dri)"),
+            std::string::npos)
+      << r.out;
+  struct Case {
+    std::string args, says;
+  } cases[] = {
+      {"--cell 8", "--cell: pixels per sphere, 16..256, got 8"},
+      {"--columns 40", "--columns: roughness steps, 2..33, got 40"},
+      {"--rows single,glod", "--rows: unknown row 'glod' (did you mean 'gold'?); valid: single, kulla-conty"},
+      {"--cell x", "--cell: expected an integer, 16..256 (pixels per sphere), got 'x'"},
+      {"--table albedo", "--table: not a render option"},
+  };
+  for (const Case& c : cases) {
+    r = run("render " + c.args + " -o out", d.string());
+    EXPECT_EQ(r.code, 64) << c.args << "\n" << r.out;
+    EXPECT_NE(r.out.find(c.says), std::string::npos) << c.args << "\n" << r.out;
+  }
+  EXPECT_FALSE(fs::exists(d / "out"));
+}
