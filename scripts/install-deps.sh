@@ -15,6 +15,8 @@ PACKAGES=(
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri glslang-tools gnuplot-nox
   # tests: libFuzzer (clang's -fsanitize=fuzzer) for the scene readers
   clang libclang-rt-14-dev
+  # tests: the report pages opened in a real browser (headless)
+  chromium
 )
 if [ "${1:-}" = "--list" ]; then
   printf '%s\n' "${PACKAGES[@]}"

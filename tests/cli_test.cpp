@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string>
 
+#include "browser_check.h"
 #include "cli_run.h"
 #include "common/brdf_host.h"
 #include "formats/exr/table_file.h"
@@ -533,6 +534,7 @@ TEST(CliEvidence, VerifyPassesTheDefaultPairAndWritesItsPage) {
   std::string html = bytes(d / "verify/index.html");
   EXPECT_NE(html.find("<img src=\"furnace_ggx_smith-correlated.svg\""), std::string::npos);
   EXPECT_NE(bytes(d / "verify/furnace_ggx_smith-correlated.svg").find("<svg"), std::string::npos);
+  brdfbake::testing_browser::expectPageWorks(d / "verify/index.html", fs::path(d.string() + "-browser"), 2);
   EXPECT_EQ(countFiles(d), 8u) << "the page, its CSV, two data files, scripts and plots; no temporaries";
   // the page opens with its summary; a passing pair's heat map has no failure legend, and its
   // colour scale marks E = 1
@@ -588,6 +590,7 @@ TEST(CliEvidence, StressIsCleanAndWritesItsPage) {
     ASSERT_TRUE(fs::exists(d / "stress" / f)) << f;
     EXPECT_GT(fs::file_size(d / "stress" / f), 200u) << f;
   }
+  brdfbake::testing_browser::expectPageWorks(d / "stress/index.html", fs::path(d.string() + "-browser"), 1);
   r = run("stress --ndf ggx");
   EXPECT_EQ(r.code, 64) << r.out;
   EXPECT_NE(r.out.find("--ndf: not a stress option"), std::string::npos) << r.out;
@@ -599,6 +602,7 @@ TEST(CliEvidence, ConvergenceShowsEachMethodAgainstTheReference) {
   fs::path d = freshDir("conv");
   CmdResult r = run("convergence --size 4 -o " + d.string());
   ASSERT_EQ(r.code, 0) << r.out;
+  brdfbake::testing_browser::expectPageWorks(d / "convergence/index.html", fs::path(d.string() + "-browser"), 1);
   for (const char* m : {"quadrature (device, float)  ", "quadrature (host, double)  ", "Monte Carlo (Hammersley, float)  "})
     EXPECT_NE(r.out.find(m), std::string::npos) << m << "\n" << r.out;
   std::string out = r.out.substr(r.out.find("time to 1e-7"));  // the summary rows

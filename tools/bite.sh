@@ -1,0 +1,57 @@
+#!/bin/bash
+# Shows that a test bites: applies one named mutation to a source file in place, rebuilds, runs the
+# tests that must then fail, and restores the file (and the build) whatever happens.
+#   tools/bite.sh NAME     one mutation;  tools/bite.sh all   every one;  tools/bite.sh list
+# Exit 0 when every mutation's tests failed, 1 when one survived (its tests passed).
+# Uses ./build (configured); runs ctest with POCL_CACHE_DIR=build/pocl-cache.
+set -u
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+# each mutation: name, file, text, replacement, the ctest regex that must then fail
+mutation() {
+  case "$1" in
+    browser-image) set -- "$1" host/report/report_page.cpp '.svg\" alt=' '.svg-missing\" alt=' \
+                     "CliEvidence.VerifyPassesTheDefaultPair" ;;
+    program-identity) set -- "$1" host/cl/program_cache.cpp 'if (!id || *id != identity) continue;' \
+                        'if (!id) continue;' "FirstRun.StaleForeignOrTornEntries" ;;
+    program-checksum) set -- "$1" host/cl/program_cache.cpp 'sum != fnv1a(bin.data(), bin.size()) || ' 'false || ' \
+                        "FirstRun.StaleForeignOrTornEntries" ;;
+    progress-on-pipe) set -- "$1" host/cli/console.cpp 'const bool progress = !quiet && ::isatty(STDERR_FILENO);' \
+                        'const bool progress = !quiet;' "FirstRun.ProgressLineOnATerminalOnly" ;;
+    render-lobe) set -- "$1" host/render/render.cpp 'v = vec3(e + a);' 'v = vec3(e + 0.9 * a);' \
+                   "Render.FurnaceRowsVanish" ;;
+    *) return 64 ;;
+  esac
+  run_one "$@"
+}
+names="browser-image program-identity program-checksum progress-on-pipe render-lobe"
+run_one() {
+  local name=$1 file=$2 from=$3 to=$4 tests=$5
+  cp "$file" "$file.bite-orig"
+  trap 'mv "$file.bite-orig" "$file"' RETURN
+  python3 - "$file" "$from" "$to" <<'PY' || { echo "bite $name: the text to mutate is not in $file"; return 2; }
+import sys
+p, a, b = sys.argv[1:4]
+s = open(p).read()
+if a not in s: sys.exit(1)
+open(p, "w").write(s.replace(a, b, 1))
+PY
+  if ! cmake --build build -j2 >/tmp/bite-build.log 2>&1; then echo "bite $name: did not build"; tail -5 /tmp/bite-build.log; return 2; fi
+  if (cd build && POCL_CACHE_DIR=$PWD/pocl-cache ctest -R "$tests" >/tmp/bite-test.log 2>&1); then
+    echo "bite $name: SURVIVED ($tests passed)"; return 1
+  fi
+  echo "bite $name: caught by $tests"
+}
+case "${1:-}" in
+  list) echo "$names" | tr ' ' '\n' ;;
+  all|"")
+    status=0
+    for m in $names; do mutation "$m" || status=1; done
+    cmake --build build -j2 >/dev/null 2>&1
+    exit $status ;;
+  *)
+    mutation "$1"; s=$?
+    [ $s -eq 64 ] && { echo "unknown mutation $1 (tools/bite.sh list)" >&2; exit 64; }
+    cmake --build build -j2 >/dev/null 2>&1
+    exit $s ;;
+esac
