@@ -28,7 +28,8 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
-  trap 'mv "$file.bite-orig" "$file"; trap - RETURN' RETURN
+  # restored with a fresh time stamp, so that the next build recompiles it without the mutation
+  trap 'mv "$file.bite-orig" "$file"; touch "$file"; trap - RETURN' RETURN
   python3 - "$file" "$from" "$to" <<'PY' || { echo "bite $name: the text to mutate is not in $file"; return 2; }
 import sys
 p, a, b = sys.argv[1:4]

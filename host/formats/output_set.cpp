@@ -84,6 +84,22 @@ void cleanUp(const std::vector<std::string>& temps, const std::vector<std::strin
 
 }  // namespace
 
+uint64_t freeBytesAt(const std::string& dir, std::string* where) {
+  std::string cur = dir.empty() ? "." : dir;
+  struct statvfs st {};
+  while (::statvfs(cur.c_str(), &st) != 0) {
+    const size_t slash = cur.find_last_of('/');
+    if (slash == std::string::npos) {
+      cur = ".";
+      if (::statvfs(cur.c_str(), &st) != 0) return UINT64_MAX;
+      break;
+    }
+    cur = slash == 0 ? "/" : cur.substr(0, slash);
+  }
+  if (where) *where = cur;
+  return static_cast<uint64_t>(st.f_bavail) * st.f_frsize;
+}
+
 void checkOutputDir(const std::string& dir) {
   if (dir.empty()) throw Error(kExitUsage, "-o: empty directory name");
   std::string p = dir;
@@ -177,12 +193,12 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
   for (const auto& f : files)
     need += f.bytesBound ? f.bytesBound
                          : f.image ? uint64_t(f.image->width) * f.image->height * f.image->planes.size() * 4 + 65536 : 0;
-  struct statvfs vfs {};
-  if (need > 0 && ::statvfs(p.c_str(), &vfs) == 0 && need > uint64_t(vfs.f_bavail) * vfs.f_frsize) {
+  const uint64_t free = need > 0 ? freeBytesAt(p) : UINT64_MAX;
+  if (need > free) {
     cleanUp({}, created);
     char msg[512];
     std::snprintf(msg, sizeof msg, "-o %s: not enough space: the %zu file(s) may need up to %.2f MB, %.2f MB free; "
-                  "nothing was written", dir.c_str(), files.size(), need / 1e6, uint64_t(vfs.f_bavail) * vfs.f_frsize / 1e6);
+                  "nothing was written", dir.c_str(), files.size(), need / 1e6, free / 1e6);
     throw Error(kExitIoErr, msg);
   }
 

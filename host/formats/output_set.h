@@ -3,6 +3,7 @@
 // any point before the renames, leaves the output directory exactly as it was (no temporaries, no
 // directories created, earlier outputs untouched).
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -23,6 +24,10 @@ struct OutputFile {
   // 0: from `image` (raw texels plus 64 KiB), or unknown (a writer that checks its own, brdf3d).
   uint64_t bytesBound = 0;
 };
+
+// The bytes free to an unprivileged writer on the file system that holds `dir`, or its nearest
+// existing ancestor (named in `where`); UINT64_MAX when none can be asked.
+uint64_t freeBytesAt(const std::string& dir, std::string* where = nullptr);
 
 // Before any work: `dir` is a directory we can write into, or can be created (mkdir -p) under the
 // nearest existing ancestor. Throws Error(kExitCantCreat) naming -o otherwise. Creates nothing.

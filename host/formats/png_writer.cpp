@@ -56,6 +56,31 @@ bool encode(png_structp png, png_infop info, PngSink* sink, int width, int heigh
   return true;
 }
 
+// Encodes `rows` (bitDepth 16: big-endian samples; 8: an sRGB picture) with one tEXt chunk per
+// (key, text) into the temporary for `path`.
+void writeRows(const std::string& tmp, const std::string& path, int width, int height, int channels, int bitDepth,
+               std::vector<std::vector<png_byte>>& rows, const std::vector<std::pair<std::string, std::string>>& text) {
+  std::vector<png_text> chunks(text.size());
+  for (size_t i = 0; i < text.size(); ++i) {
+    chunks[i].compression = PNG_TEXT_COMPRESSION_NONE;
+    chunks[i].key = const_cast<char*>(text[i].first.c_str());
+    chunks[i].text = const_cast<char*>(text[i].second.c_str());
+    chunks[i].text_length = text[i].second.size();
+  }
+  std::vector<png_bytep> rowPointers;
+  for (auto& r : rows) rowPointers.push_back(r.data());
+  TempFileWriter out(tmp, path);
+  PngSink sink{&out, {}};
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, pngFail, pngWarn);
+  if (!png) throw Error(kExitIoErr, "cannot write " + path + ": libpng could not start");
+  png_infop info = png_create_info_struct(png);
+  const bool ok = info && encode(png, info, &sink, width, height, channels, chunks.data(),
+                                 static_cast<int>(chunks.size()), rowPointers.data(), bitDepth);
+  png_destroy_write_struct(&png, &info);
+  if (!ok) throw Error(sink.code, "cannot write " + path + ": " + (sink.error.empty() ? "libpng failed" : sink.error));
+  out.finish();
+}
+
 }  // namespace
 
 void writePng16Temporary(const std::string& tmp, const std::string& path, const TableImage& img, double scale,
@@ -82,26 +107,7 @@ void writePng16Temporary(const std::string& tmp, const std::string& path, const 
   for (const auto& [k, v] : text)
     if (k.size() > 79) throw Error(kExitDataErr, "cannot write " + path + ": attribute name '" + k + "' is longer than PNG's 79-byte keyword");
 
-  std::vector<png_text> chunks(text.size());
-  for (size_t i = 0; i < text.size(); ++i) {
-    chunks[i].compression = PNG_TEXT_COMPRESSION_NONE;
-    chunks[i].key = const_cast<char*>(text[i].first.c_str());
-    chunks[i].text = const_cast<char*>(text[i].second.c_str());
-    chunks[i].text_length = text[i].second.size();
-  }
-  std::vector<png_bytep> rowPointers;
-  for (auto& r : rows) rowPointers.push_back(r.data());
-
-  TempFileWriter out(tmp, path);
-  PngSink sink{&out, {}};
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, pngFail, pngWarn);
-  if (!png) throw Error(kExitIoErr, "cannot write " + path + ": libpng could not start");
-  png_infop info = png_create_info_struct(png);
-  const bool ok = info && encode(png, info, &sink, img.width, img.height, channels, chunks.data(),
-                                 static_cast<int>(chunks.size()), rowPointers.data());
-  png_destroy_write_struct(&png, &info);
-  if (!ok) throw Error(sink.code, "cannot write " + path + ": " + (sink.error.empty() ? "libpng failed" : sink.error));
-  out.finish();
+  writeRows(tmp, path, img.width, img.height, channels, 16, rows, text);
 }
 
 // An 8-bit sRGB picture: each linear value clamped to [0, 1] and encoded with the sRGB transfer
@@ -119,25 +125,7 @@ void writePng8SrgbTemporary(const std::string& tmp, const std::string& path, int
         const double s = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
         rows[y][x * 3 + c] = static_cast<png_byte>(std::lround(s * 255));
       }
-  std::vector<png_text> chunks(text.size());
-  for (size_t i = 0; i < text.size(); ++i) {
-    chunks[i].compression = PNG_TEXT_COMPRESSION_NONE;
-    chunks[i].key = const_cast<char*>(text[i].first.c_str());
-    chunks[i].text = const_cast<char*>(text[i].second.c_str());
-    chunks[i].text_length = text[i].second.size();
-  }
-  std::vector<png_bytep> rowPointers;
-  for (auto& r : rows) rowPointers.push_back(r.data());
-  TempFileWriter out(tmp, path);
-  PngSink sink{&out, {}};
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, pngFail, pngWarn);
-  if (!png) throw Error(kExitIoErr, "cannot write " + path + ": libpng could not start");
-  png_infop info = png_create_info_struct(png);
-  const bool ok = info && encode(png, info, &sink, width, height, 3, chunks.data(), static_cast<int>(chunks.size()),
-                                 rowPointers.data(), 8);
-  png_destroy_write_struct(&png, &info);
-  if (!ok) throw Error(sink.code, "cannot write " + path + ": " + (sink.error.empty() ? "libpng failed" : sink.error));
-  out.finish();
+  writeRows(tmp, path, width, height, 3, 8, rows, text);
 }
 
 }  // namespace brdfbake

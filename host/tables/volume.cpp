@@ -4,8 +4,6 @@
 
 #include "formats/format_outputs.h"
 
-#include <sys/statvfs.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,6 +16,7 @@
 #include "common/models.h"
 #include "formats/exr/table_file.h"
 #include "formats/merl.h"
+#include "formats/output_set.h"
 #include "version.h"
 
 namespace brdfbake {
@@ -123,18 +122,8 @@ void checkVolumeSpace(const std::string& dir, const std::vector<VolumeJob>& volu
   if (volumes.empty()) return;
   uint64_t need = 0;
   for (const auto& v : volumes) need += volumeBytesBound(v);
-  std::string cur = dir;
-  struct statvfs st {};
-  while (::statvfs(cur.c_str(), &st) != 0) {
-    size_t slash = cur.find_last_of('/');
-    if (slash == std::string::npos) {
-      cur = ".";
-      if (::statvfs(cur.c_str(), &st) != 0) return;  // checkOutputDir reports what is wrong
-      break;
-    }
-    cur = slash == 0 ? "/" : cur.substr(0, slash);
-  }
-  uint64_t free = static_cast<uint64_t>(st.f_bavail) * st.f_frsize;
+  std::string cur;
+  const uint64_t free = freeBytesAt(dir, &cur);  // UINT64_MAX when unknown: checkOutputDir reports what is wrong
   if (need > free) {
     char msg[512];
     std::snprintf(msg, sizeof msg, "not enough space for the brdf3d table(s) in %s: they may need up to %.1f MB, %.1f MB free "
