@@ -4,6 +4,7 @@
 // compensation fails the measurement; no EGL and bad options are refused before anything is written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <regex>
 #include <string>
@@ -61,6 +62,25 @@ TEST(Render, FurnaceRowsVanishAndTheSingleRowLosesEnergy) {
   EXPECT_LT(at(0, 5, 5), 0.5f) << "the sheen's albedo alone";
   EXPECT_EQ(img.strings.at("render.rows"), "single,kulla-conty,single-table,dielectric-lambert,gold,sheen");
   EXPECT_NE(img.strings.at("render.tables").find("tables/albedo-avg_ggx_smith-correlated.exr"), std::string::npos);
+  // the lobe picture: single scattering on top, the Kulla-Conty lobe added below, everywhere at
+  // least as bright; at r = 1 the lobe adds more than 0.1 somewhere, at r = 0.4 less than 0.05
+  const brdfbake::TableImage lobe = brdfbake::readTableExr((d / "out/lobe.exr").string());
+  ASSERT_EQ(lobe.width, 3 * 24);
+  ASSERT_EQ(lobe.height, 2 * 24);
+  double added[3] = {0, 0, 0};
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < lobe.width; ++x) {
+      const float top = lobe.planes[0][static_cast<size_t>(y) * lobe.width + x];
+      const float bottom = lobe.planes[0][static_cast<size_t>(y + 24) * lobe.width + x];
+      EXPECT_GE(bottom, top) << x << "," << y;
+      EXPECT_GE(top, 0.0f);
+      added[x / 24] = std::max(added[x / 24], static_cast<double>(bottom - top));
+    }
+  EXPECT_GT(added[2], 0.1) << "r = 1";
+  EXPECT_LT(added[0], 0.05) << "r = 0.4";
+  EXPECT_LT(added[0], added[1]);
+  EXPECT_NE(r.out.find("lobe picture (directional light): the Kulla-Conty lobe adds at most"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(d / "out/lobe.png"));
   // the PNG: 8-bit RGB (IHDR at byte 16: width, height, bit depth, colour type) with an sRGB chunk
   const std::string png = bytes(d / "out/furnace.png");
   ASSERT_GT(png.size(), 33u);

@@ -94,6 +94,8 @@ std::vector<CommandInfo> makeCommands() {
        "Bakes the tables into DIR/tables, shades every pixel on OpenGL ES 3.1 (EGL; llvmpipe without a GPU)\n"
        "with the generated lookup code, writes DIR/furnace.exr (linear) and DIR/furnace.png (sRGB), and\n"
        "prints each row's largest deviation: exit 1 when a row that should conserve energy does not.\n"
+       "DIR/lobe.exr, DIR/lobe.png: spheres under a directional light, single scattering above, the\n"
+       "Kulla-Conty lobe added below.\n"
        "Rows: single, kulla-conty, single-table, dielectric-lambert, gold, sheen (docs/reports.md).",
        {"brdfbake render -o out/render", "brdfbake render --rows single,kulla-conty --columns 6 -o out/render"},
        "render draws the furnace: -o, --cell, --columns, --rows, --device"},

@@ -7,7 +7,10 @@
 #include <cstdlib>
 #include <map>
 
+#include <glm/geometric.hpp>
+
 #include "brdfbake/brdfbake.h"
+#include "common/brdf3d_grid.h"
 #include "common/errors.h"
 #include "common/format.h"
 #include "common/models.h"
@@ -103,6 +106,54 @@ Budget budgetOf(const Table& t) {
   return b;
 }
 
+// The lobe picture: one sphere per roughness, lit by a directional light of irradiance 1 from
+// upper left (normalised (-0.5, 0.5, 0.7)), seen along +z; top row single scattering, bottom row
+// with the Kulla-Conty lobe added.
+constexpr double kLobeRoughness[3] = {0.4, 0.7, 1.0};
+constexpr double kLight[3] = {-0.5, 0.5, 0.7};
+
+struct LobeInput {
+  std::vector<float> geometry;  // per pixel: mu_o, mu_i, r, 1 (sphere) or 0 (background)
+  std::vector<float> single;    // f_ss(o, i) mu_i from kernels/brdf (host, double), per pixel
+};
+
+// The single-scattering term of the lobe picture from the BRDF code in kernels/brdf compiled for
+// the host (common/brdf3d_grid.h hostBrdf: ggx + smith-correlated, F = 1, times n.i), and each
+// pixel's cosines for the shader's Kulla-Conty lobe.
+LobeInput lobeInput(int cell) {
+  const int W = 3 * cell, H = 2 * cell;
+  LobeInput in;
+  in.geometry.assign(static_cast<size_t>(W) * H * 4, 0.0f);
+  in.single.assign(static_cast<size_t>(W) * H, 0.0f);
+  const double ll = std::sqrt(kLight[0] * kLight[0] + kLight[1] * kLight[1] + kLight[2] * kLight[2]);
+  const glm::dvec3 l(kLight[0] / ll, kLight[1] / ll, kLight[2] / ll), v(0, 0, 1);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const double cx = ((x % cell) + 0.5) / cell * 2 - 1, cy = -(((y % cell) + 0.5) / cell * 2 - 1);
+      const double d2 = (cx * cx + cy * cy) / (kSphere * kSphere);
+      if (d2 >= 1) continue;
+      const glm::dvec3 n(cx / kSphere, cy / kSphere, std::sqrt(1 - d2));
+      const double r = kLobeRoughness[x / cell], muO = glm::dot(n, v), muI = glm::dot(n, l);
+      const size_t k = static_cast<size_t>(y) * W + x;
+      in.geometry[k * 4 + 0] = static_cast<float>(muO);
+      in.geometry[k * 4 + 1] = static_cast<float>(std::max(muI, 0.0));
+      in.geometry[k * 4 + 2] = static_cast<float>(r);
+      in.geometry[k * 4 + 3] = 1.0f;
+      if (muI <= 0) continue;
+      // the local frame: n = z, its tangents from any vector not along n
+      const glm::dvec3 a = std::fabs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+      const glm::dvec3 t = glm::normalize(glm::cross(a, n)), b = glm::cross(n, t);
+      Brdf3dSpec s;
+      s.ndf = ndfId("ggx");
+      s.gaf = gafId("smith-correlated");
+      s.roughness = r;
+      s.timesCos = true;
+      const Directions dir{{glm::dot(l, t), glm::dot(l, b), muI}, {glm::dot(v, t), glm::dot(v, b), muO}};
+      in.single[k] = static_cast<float>(hostBrdf(s, dir, 0));
+    }
+  return in;
+}
+
 }  // namespace
 
 const std::vector<FurnaceRow>& furnaceRows() {
@@ -172,10 +223,10 @@ int runRender(const RenderOptions& o) {
   gaussLegendre(16, &x16, &w16);
   std::string rowList;
   for (int k : kinds) rowList += (rowList.empty() ? "" : ", ") + std::to_string(k);
-  std::string src = "#version 310 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
-                    "layout(local_size_x = 8, local_size_y = 8) in;\n"
-                    "layout(std430, binding = 0) buffer Pixels { vec4 px[]; };\n" +
-                    shaderForFiles(paths, ShaderLang::Glsl) + "\nuniform sampler2D sheen_tex;\n" + multiscatterBody();
+  const std::string head = "#version 310 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
+                           "layout(local_size_x = 8, local_size_y = 8) in;\n";
+  const std::string lookups = shaderForFiles(paths, ShaderLang::Glsl) + "\nuniform sampler2D sheen_tex;\n" + multiscatterBody();
+  std::string src = head + "layout(std430, binding = 0) buffer Pixels { vec4 px[]; };\n" + lookups;
   src += "const int W = " + std::to_string(W) + ", H = " + std::to_string(H) + ", CELL = " + std::to_string(o.cell) +
          ", COLS = " + std::to_string(cols) + ", NROWS = " + std::to_string(nrows) + ";\n";
   src += "const int ROW[NROWS] = int[NROWS](" + rowList + ");\n";
@@ -252,6 +303,7 @@ void main() {
 
   // the tables as RGBA32F textures, bilinear, clamped: what the generated code expects
   int unit = 0;
+  std::vector<std::pair<std::string, int>> samplers;
   auto bind = [&](const Table& t, const std::string& uniform) {
     std::vector<float> rgba(static_cast<size_t>(t.width) * t.height * 4, 1.0f);
     for (size_t i = 0; i < static_cast<size_t>(t.width) * t.height; ++i)
@@ -265,12 +317,19 @@ void main() {
     g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    const GLint loc = g.GetUniformLocation(prog, uniform.c_str());
-    if (loc >= 0) g.Uniform1i(loc, unit);
+    samplers.push_back({uniform, unit});
     ++unit;
+  };
+  auto setSamplers = [&](GLuint program) {
+    g.UseProgram(program);
+    for (const auto& [name, u] : samplers) {
+      const GLint loc = g.GetUniformLocation(program, name.c_str());
+      if (loc >= 0) g.Uniform1i(loc, u);
+    }
   };
   for (const std::string& p : {split, alb, avg}) bind(tables[p], shaderPrefix(p) + "_tex");
   if (sheen) bind(tables[sheenPath], "sheen_tex");
+  setSamplers(prog);
   GLuint buf = 0;
   const size_t n = static_cast<size_t>(W) * H;
   g.GenBuffers(1, &buf);
@@ -285,6 +344,62 @@ void main() {
   if (!mapped) throw Error(kExitSoftware, "render: could not read the pixels back (GL error " + std::to_string(g.GetError()) + ")");
   std::vector<float> px(mapped, mapped + n * 4);
   g.UnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+
+  // the lobe picture: single scattering from kernels/brdf on the host, the Kulla-Conty lobe from
+  // the generated lookups on GL, added in the bottom row
+  const int LW = 3 * o.cell, LH = 2 * o.cell;
+  const size_t ln = static_cast<size_t>(LW) * LH;
+  const LobeInput lin = lobeInput(o.cell);
+  const std::string lobeSrc = head + "layout(std430, binding = 1) buffer Geometry { vec4 geo[]; };\n"
+                              "layout(std430, binding = 2) buffer Lobe { float lobe[]; };\n" + lookups +
+                              "const int LW = " + std::to_string(LW) + ", LH = " + std::to_string(LH) + ";\n" + R"glsl(
+// The Kulla-Conty lobe times n.l at each pixel (mu_o, mu_i, r from the host): f_ms(o, l) (n.l) under
+// a directional light of irradiance 1.
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (p.x >= LW || p.y >= LH) return;
+  int k = p.y * LW + p.x;
+  vec4 g = geo[k];
+  lobe[k] = (g.w == 0.0 || g.y <= 0.0) ? 0.0 : kullaContyLobe(g.x, g.y, g.z) * g.y;
+}
+)glsl";
+  const GLuint lobeProg = gl.computeProgram(lobeSrc);
+  setSamplers(lobeProg);
+  GLuint lbuf[2] = {0, 0};
+  g.GenBuffers(2, lbuf);
+  g.BindBuffer(GL_SHADER_STORAGE_BUFFER, lbuf[0]);
+  g.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(ln * 4 * sizeof(float)), lin.geometry.data(), GL_STATIC_DRAW);
+  g.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, lbuf[0]);
+  g.BindBuffer(GL_SHADER_STORAGE_BUFFER, lbuf[1]);
+  g.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(ln * sizeof(float)), nullptr, GL_DYNAMIC_READ);
+  g.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, lbuf[1]);
+  g.DispatchCompute(static_cast<GLuint>((LW + 7) / 8), static_cast<GLuint>((LH + 7) / 8), 1);
+  g.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  g.Finish();
+  const float* lm = static_cast<const float*>(
+      g.MapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(ln * sizeof(float)), GL_MAP_READ_BIT));
+  if (!lm) throw Error(kExitSoftware, "render: could not read the lobe picture back (GL error " + std::to_string(g.GetError()) + ")");
+  std::vector<float> lobe(lm, lm + ln);
+  g.UnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+  TableImage lobeImg;
+  lobeImg.width = LW;
+  lobeImg.height = LH;
+  lobeImg.channels = {"R", "G", "B"};
+  lobeImg.planes.assign(3, std::vector<float>(ln, 0.0f));
+  double lobeMax[3] = {0, 0, 0}, singleAt[3] = {0, 0, 0};  // per roughness: the largest lobe, single there
+  for (int y = 0; y < LH; ++y)
+    for (int x = 0; x < LW; ++x) {
+      const size_t k = static_cast<size_t>(y) * LW + x, top = static_cast<size_t>(y % o.cell) * LW + x;
+      if (!std::isfinite(lobe[k]) || !std::isfinite(lin.single[k]))
+        throw Error(kExitSoftware, "render: a pixel of the lobe picture is not finite");
+      // top row: single scattering; bottom row: the same sphere's pixel with the lobe added
+      const float v = y < o.cell ? lin.single[k] : lin.single[top] + lobe[top];
+      for (int c = 0; c < 3; ++c) lobeImg.planes[c][k] = v;
+      if (y < o.cell && lobe[k] > lobeMax[x / o.cell]) {
+        lobeMax[x / o.cell] = lobe[k];
+        singleAt[x / o.cell] = lin.single[k];
+      }
+    }
 
   // the measurement: conserving rows against 1 within their predicted error; the single row against
   // the independent reference's E(mu, r) at sampled pixels, within the split sum's claim + interpolation
@@ -363,14 +478,30 @@ void main() {
   img.strings["render.generator"] = "brdfbake render";
   std::vector<std::pair<std::string, std::string>> text;
   for (const auto& [k, v] : img.strings) text.push_back({k, v});
+  lobeImg.strings = img.strings;
+  lobeImg.strings["render.kind"] = "one sphere per roughness (columns: r = 0.4, 0.7, 1) under a directional light of "
+                                   "irradiance 1 from (-0.5, 0.5, 0.7), black background";
+  lobeImg.strings["render.rows"] = "single scattering (kernels/brdf on the host), + the Kulla-Conty lobe (GL)";
+  lobeImg.strings["render.columns"] = "perceptual roughness 0.4, 0.7, 1";
+  std::vector<std::pair<std::string, std::string>> lobeText;
+  for (const auto& [k, v] : lobeImg.strings) lobeText.push_back({k, v});
   const std::string exr = o.outDir + "/furnace.exr", png = o.outDir + "/furnace.png";
-  std::vector<OutputFile> files(2);
+  const std::string lobeExr = o.outDir + "/lobe.exr", lobePng = o.outDir + "/lobe.png";
+  std::vector<OutputFile> files(4);
   files[0].path = exr;
   files[0].write = [&img, exr](const std::string& tmp) { writeTableExrTemporary(tmp, exr, img, false); };
   files[0].bytesBound = n * 12 + (1 << 16);
   files[1].path = png;
   files[1].write = [&img, &text, png, W, H](const std::string& tmp) { writePng8SrgbTemporary(tmp, png, W, H, img.planes, text); };
   files[1].bytesBound = n * 3 + (1 << 16);
+  files[2].path = lobeExr;
+  files[2].write = [&lobeImg, lobeExr](const std::string& tmp) { writeTableExrTemporary(tmp, lobeExr, lobeImg, false); };
+  files[2].bytesBound = ln * 12 + (1 << 16);
+  files[3].path = lobePng;
+  files[3].write = [&lobeImg, &lobeText, lobePng, LW, LH](const std::string& tmp) {
+    writePng8SrgbTemporary(tmp, lobePng, LW, LH, lobeImg.planes, lobeText);
+  };
+  files[3].bytesBound = ln * 3 + (1 << 16);
   commitOutputs(o.outDir, files, !o.noWait);
 
   std::printf("render: white furnace, %d x %d spheres (%d px each) on %s; tables in %s/\n", cols, nrows, o.cell,
@@ -387,7 +518,10 @@ void main() {
     }
     std::printf("%-19s %-9s %-34s %-12s %s\n", fr.name.c_str(), fr.conserves ? "yes" : "no", dev, bnd, over);
   }
-  std::printf("wrote %s (linear) and %s (sRGB)\n", exr.c_str(), png.c_str());
+  std::printf("lobe picture (directional light): the Kulla-Conty lobe adds at most");
+  for (int i = 0; i < 3; ++i)
+    std::printf("%s %.3g at r = %g (single scattering %.3g there)", i ? "," : "", lobeMax[i], kLobeRoughness[i], singleAt[i]);
+  std::printf("\nwrote %s, %s (linear) and %s, %s (sRGB)\n", exr.c_str(), lobeExr.c_str(), png.c_str(), lobePng.c_str());
   if (fail) std::printf("FAIL: a row's pixels are off by more than the tables predict\n");
   return fail ? 1 : 0;
 }
