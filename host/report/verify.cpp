@@ -64,6 +64,11 @@ VerifyCheck whiteFurnace(const Table& t, int n, bool node, ReportPage& page, int
   page.data("furnace_" + stem + ".dat", csv);
   // the colour scale always reaches E = 1 and marks it; red texels (and their legend entry) only
   // where a texel is over its bound, so that a passing pair's map shows no sign of failure
+  // gnuplot draws each node as a pixel centred on it and does not clip the image to the axes: on
+  // the node grid the range reaches half a node past 0 and 1, so that the map stays inside its box
+  // (seen in Chromium's screenshot of the page)
+  const double half = node ? 0.5 / (n - 1) : 0.0;
+  const std::string range = fmt4(-half) + ":" + fmt4(1 + half);
   const std::string over = c.pass ? std::string()
                                   : ", '' using 1:($3 > 1 + $4 ? $2 : 1/0) with points pt 5 ps 0.5 lc rgb 'red' "
                                     "title 'E > 1 + bound'";
@@ -71,7 +76,7 @@ VerifyCheck whiteFurnace(const Table& t, int n, bool node, ReportPage& page, int
             "set title '" + pairName(ndf, gaf) + ": directional albedo E(mu, r)" +
                 (c.pass ? "" : "; red: E > 1 + bound") + "'\n"
             "set xlabel 'mu = n.o'\nset ylabel 'r (perceptual roughness)'\nset cblabel 'E'\n"
-            "set xrange [0:1]\nset yrange [0:1]\nset cbrange [0:" + fmt4(std::max(1.0, maxE)) + "]\n"
+            "set xrange [" + range + "]\nset yrange [" + range + "]\nset cbrange [0:" + fmt4(std::max(1.0, maxE)) + "]\n"
             "set cbtics add ('E = 1' 1)\n"
             "set palette defined (0 '#081d58', 0.4 '#225ea8', 0.7 '#41b6c4', 0.9 '#c7e9b4', 1 '#ffffd9')\n"
             "plot 'furnace_" + stem + ".dat' using 1:2:3 with image notitle" + over,
