@@ -28,4 +28,7 @@ struct Command {
 // Throws Error(kExitUsage) with a message naming the option and the accepted values.
 Command parseArgs(const std::vector<std::string>& args);
 
+// "a,b,,c" -> {"a", "b", "", "c"}: the lists options take.
+std::vector<std::string> splitCommas(const std::string& s);
+
 }  // namespace brdfbake

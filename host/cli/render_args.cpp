@@ -48,13 +48,7 @@ bool parseRenderCommand(const std::vector<std::string>& args, Command& cmd) {
     } else if (opt == "--columns") {
       o.columns = integer(opt, v, "2..33 (roughness steps)");
     } else if (opt == "--rows") {
-      size_t at = 0;
-      while (at <= v.size()) {
-        size_t comma = v.find(',', at);
-        if (comma == std::string::npos) comma = v.size();
-        o.rows.push_back(v.substr(at, comma - at));
-        at = comma + 1;
-      }
+      o.rows = splitCommas(v);
     } else if (opt == "--device") {
       o.device = v;
     } else if (opt == "--cache-dir") {
