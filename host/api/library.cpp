@@ -2,6 +2,8 @@
 // computes it in memory; write() hands the tables back to their families for their files.
 #include "brdfbake/brdfbake.h"
 
+#include <chrono>
+
 #include "bake/bake.h"
 #include "formats/output_set.h"
 #include "common/format.h"
@@ -44,12 +46,19 @@ Table toTable(const Job& job, BakedTable baked) {
 
 std::vector<Table> bake(const BakeRequest& req) {
   Plan plan = makePlan(req);
-  BakeContext ctx(plan.device);
+  BakeContext ctx(plan.device, plan.observer);  // the observer hears of the device, programs and tables
   preflight(ctx, plan, "");
   buildKernels(ctx, plan);
+  if (plan.observer && ctx.hasRunner())
+    for (const KernelRunner::ProgramEvent& e : ctx.runner().programEvents())
+      plan.observer->stage("program", e.program + ": " + e.how, e.seconds);
   std::vector<Table> out;
   for (const Job& j : plan.jobs) {
+    const auto t0 = std::chrono::steady_clock::now();
+    ctx.working(j.path);
     out.push_back(toTable(j, j.family->compute(ctx, j)));
+    if (plan.observer)
+      plan.observer->stage("table", j.path, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   return out;
 }
