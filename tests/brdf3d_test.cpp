@@ -310,7 +310,7 @@ TEST(Brdf3d, BadInputIsRejectedBeforeAnythingIsWritten) {
     std::string args, message;
     int code;
   } cases[] = {
-      {"--table brdf3d --size 0,8,8", "--size: each axis of a brdf3d table must be an integer in 1..1024, got '0'", 64},
+      {"--table brdf3d --size 0,8,8", "--size: each axis of a brdf3d or dielectric table must be an integer in 1..1024, got '0'", 64},
       {"--table brdf3d --size 8,8,2000", "got '2000'", 64},
       {"--table brdf3d --size 2000", "--size: each axis of a brdf3d table must be an integer in 1..1024, got 2000", 64},
       {"--table brdf3d --param polar", "--param must be angles or rusinkiewicz, got 'polar'", 64},

@@ -288,13 +288,31 @@ TEST(DielectricCli, BakesBothTablesWithMetadata) {
   fs::remove_all(d);
 }
 
+// --size NX,NY,NZ: the cube's own axes; a node grid's first slice is the range's low eta, where
+// the smooth corner (mu = 1, r = 0) holds Fresnel's F0 and 1 - F0.
+TEST(DielectricCli, SizePerAxisGivesTheSlicesAsked) {
+  fs::path d = freshDir("axes");
+  auto r = run("--table dielectric --size 5,4,2 --grid node --eta-range 1.5,1.6 -o '" + d.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  TableImage t = readTableExr((d / "dielectric_ggx_smith-correlated.exr").string());
+  EXPECT_EQ(t.strings["brdf.size"], "5x4x2");
+  EXPECT_EQ(t.strings["brdf.atlas"], "2x1");
+  ASSERT_EQ(t.width, 10);
+  ASSERT_EQ(t.height, 4);
+  const double f0 = 0.04;  // ((1.5 - 1)/(1.5 + 1))^2
+  EXPECT_NEAR(t.planes[0][4], f0, 1e-6);      // slice 0, mu = 1 (x = 4), r = 0
+  EXPECT_NEAR(t.planes[1][4], 1 - f0, 1e-6);
+  fs::remove_all(d);
+}
+
 TEST(DielectricCli, BadInputExits64AndWritesNothing) {
   fs::path d = freshDir("bad");
   const char* bad[] = {"--table dielectric --eta-range 0,2", "--table dielectric --eta-range -1,2",
                        "--table dielectric --eta-range 2,1", "--table dielectric --eta-range 1.5",
                        "--table dielectric --ndf blinn-phong", "--table dielectric-avg --gaf schlick-ggx",
                        "--table dielectric --fresnel dielectric", "--table albedo --eta-range 1,2",
-                       "--table dielectric --size 4,4,4"};
+                       "--table dielectric-avg --size 4,4,4", "--table dielectric --size 4,4,4 --param angles",
+                       "--table dielectric --size 4,4,0", "--table dielectric --size 4,1,4 --grid node"};
   for (const char* a : bad) {
     auto r = run(std::string(a) + " -o '" + d.string() + "'");
     EXPECT_EQ(r.code, 64) << a << ": " << r.out;

@@ -43,7 +43,10 @@ fs::path bakeDir() {
                              "--size 17 --grid node --mu-axis sqrt -o '" + (dir / "sqrtnode").string() + "'",
                              "--table brdf3d --size 20,18,9 --roughness 0.5 --value f-cos -o '" + (dir / "vol").string() + "'",
                              "--table brdf3d --param rusinkiewicz --theta-h sqrt --grid node --size 16,14,10 --roughness 0.6 -o '" +
-                                 (dir / "rus").string() + "'"})
+                                 (dir / "rus").string() + "'",
+                             "--table dielectric --size 6,5,4 --grid node --eta-range 0.6,1.8 -o '" + (dir / "glass").string() + "'",
+                             "--table dielectric --size 5 --eta-range 0.7,2 -o '" + (dir / "glasstc").string() + "'",
+                             "--table dielectric-avg --size 2 -o '" + (dir / "glassavg").string() + "'"})
       EXPECT_EQ(std::system((exe + args + " > /dev/null").c_str()), 0) << args;
     return dir;
   }();
@@ -205,6 +208,99 @@ TEST(GlPipeline, GeneratedGlslSamples3dAtlases) {
     std::printf("%-50s exact %.1e  hardware %.1e (relative to max(1, |f|))\n", file.c_str(), exact, hardware);
     EXPECT_EQ(badExact, 0) << file << ": exact path off the host's trilinear lookup";
     EXPECT_EQ(badHardware, 0) << file << ": hardware path off the host's trilinear lookup";
+  }
+}
+
+// The rough-dielectric cube's generated lookups over (mu, r, eta): against the host's trilinear
+// lookup of the atlas with the eta axis mapped as the file says (s = (eta - 1)/(eta + 1) between
+// brdf.s.range's ends), etas beyond the range included (the edge slice); and at the smooth corner
+// (mu = 1, r = 0, the first slice, eta 0.6) against Fresnel's F0 = ((eta - 1)/(eta + 1))^2, so a
+// mapping wrong in the same way on both sides is caught too. The averages table's albedosAvg(r,
+// eta) against the host's bilinear lookup at (r, s).
+TEST(GlPipeline, GeneratedGlslSamplesTheDielectricTablesByEta) {
+  ASSERT_TRUE(gl().problem.empty()) << "no usable OpenGL ES through EGL: " << gl().problem;
+  fs::path d = bakeDir();
+  for (std::string file : {"glass/dielectric_ggx_smith-correlated.exr", "glasstc/dielectric_ggx_smith-correlated.exr"}) {
+    const std::string path = (d / file).string();
+    TableImage t = readTableExr(path);
+    int nx = 0, ny = 0, nz = 0, cols = 0, rows = 0;
+    ASSERT_EQ(std::sscanf(t.strings["brdf.size"].c_str(), "%dx%dx%d", &nx, &ny, &nz), 3) << file;
+    ASSERT_EQ(std::sscanf(t.strings["brdf.atlas"].c_str(), "%dx%d", &cols, &rows), 2) << file;
+    const bool node = t.strings["brdf.grid"] == "node";
+    const auto sr = t.v2f.at("brdf.s.range"), er = t.v2f.at("brdf.eta.range");
+    auto texel = [&](int c, int x, int y, int z) {
+      return static_cast<double>(t.planes[c][static_cast<size_t>((z / cols) * ny + y) * t.width + (z % cols) * nx + x]);
+    };
+    auto index = [&](double v, int n) {
+      v = std::clamp(v, 0.0, 1.0);
+      return std::clamp(node ? v * (n - 1) : v * n - 0.5, 0.0, n - 1.0);
+    };
+    auto host = [&](int c, double mu, double r, double eta) {
+      const double s = (eta - 1) / (eta + 1);
+      const double p[3] = {index(mu, nx), index(r, ny), index((s - sr.first) / (sr.second - sr.first), nz)};
+      const int n[3] = {nx, ny, nz};
+      int i0[3], i1[3];
+      double f[3];
+      for (int a = 0; a < 3; ++a) {
+        i0[a] = static_cast<int>(std::floor(p[a]));
+        i1[a] = std::min(i0[a] + 1, n[a] - 1);
+        f[a] = p[a] - i0[a];
+      }
+      double v = 0;
+      for (int k = 0; k < 8; ++k)
+        v += ((k & 1) ? f[0] : 1 - f[0]) * ((k & 2) ? f[1] : 1 - f[1]) * ((k & 4) ? f[2] : 1 - f[2]) *
+             texel(c, (k & 1) ? i1[0] : i0[0], (k & 2) ? i1[1] : i0[1], (k & 4) ? i1[2] : i0[2]);
+      return v;
+    };
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<float> pts;
+    const int n = 2000;
+    for (int i = 0; i < n; ++i) {
+      // eta up to 10% past both ends of the range
+      const float eta = static_cast<float>(er.first * 0.9 + (er.second * 1.1 - er.first * 0.9) * u(rng));
+      pts.insert(pts.end(), {i == 0 ? 1.0f : u(rng), i == 0 ? 0.0f : u(rng), i == 0 ? er.first : eta, 0.0f});
+    }
+    const std::string P = shaderPrefix(path);
+    std::vector<float> gpu = glharness::runOnGpu(shaderForTable(path, t, ShaderLang::Glsl),
+                                                 "  res[2 * i] = vec4(" + P + "_albedos(tab, p.x, p.y, p.z), 0.0);\n"
+                                                 "  res[2 * i + 1] = vec4(" + P + "_albedosExact(tab, p.x, p.y, p.z), 0.0);\n",
+                                                 texels(t, false), pts, 2);
+    ASSERT_FALSE(gpu.empty());
+    double exact = 0, hardware = 0;
+    for (int i = 0; i < n; ++i)
+      for (int c = 0; c < 3; ++c) {
+        const double h = host(c, pts[4 * i], pts[4 * i + 1], pts[4 * i + 2]);
+        exact = std::max(exact, std::fabs(gpu[8 * i + 4 + c] - h));
+        hardware = std::max(hardware, std::fabs(gpu[8 * i + c] - h));
+      }
+    std::printf("%-46s exact %.1e  hardware %.1e\n", file.c_str(), exact, hardware);
+    EXPECT_LT(exact, 2e-6) << file;     // the same texels and weights, float arithmetic
+    EXPECT_LT(hardware, 2e-5) << file;  // llvmpipe filters with float weights
+    if (node) {
+      // mu = 1, r = 0 at eta 0.6: the smooth interface, E_R = F0, E_T = 1 - F0
+      const double f0 = std::pow((er.first - 1) / (er.first + 1), 2);
+      EXPECT_NEAR(gpu[4], f0, 1e-6) << file;
+      EXPECT_NEAR(gpu[5], 1 - f0, 1e-6) << file;
+    }
+  }
+  const std::string avgPath = (d / "glassavg/dielectric-avg_ggx_smith-correlated.exr").string();
+  TableImage a = readTableExr(avgPath);
+  const auto sr = a.v2f.at("brdf.s.range");
+  std::vector<float> pts;
+  for (float r : {0.1f, 0.5f, 0.9f})
+    for (float eta : {0.5f, 1.0f, 1.33f, 2.0f}) pts.insert(pts.end(), {r, eta, 0.0f, 0.0f});
+  const std::string P = shaderPrefix(avgPath);
+  std::vector<float> gpu = glharness::runOnGpu(shaderForTable(avgPath, a, ShaderLang::Glsl),
+                                               "  res[i] = vec4(" + P + "_albedosAvgExact(tab, p.x, p.y), 0.0);\n",
+                                               texels(a, false), pts, 1);
+  ASSERT_FALSE(gpu.empty());
+  for (size_t i = 0; i < pts.size() / 4; ++i) {
+    const double r = pts[4 * i], eta = pts[4 * i + 1], s = (eta - 1) / (eta + 1);
+    const double px = std::clamp(r * a.width - 0.5, 0.0, a.width - 1.0);
+    const double py = std::clamp((s - sr.first) / (sr.second - sr.first) * a.height - 0.5, 0.0, a.height - 1.0);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(gpu[4 * i + c], bilinear(a, c, px, py), 2e-6) << "r " << r << " eta " << eta << " channel " << c;
   }
 }
 

@@ -132,7 +132,7 @@ std::vector<OptionInfo> makeOptions() {
        joinNames(tableNames()) + "\n(default: the first four; docs/commands.md describes each)", tableNames()},
       {"--size", "", "N", B | E | V | C, "Tables",
        "texels per axis, 1..8192 (default 128 for splitsum and ashikhmin-shirley, 32 otherwise); "
-       "brdf3d: N or X,Y,Z, 1..1024; convergence: points per axis",
+       "brdf3d and dielectric: N or X,Y,Z, 1..1024; convergence: points per axis",
        {}},
       {"--grid", "", "G", B, "Tables", "texel-center (default: value at (i+0.5)/n) or node (at i/(n-1), n >= 2)",
        {"texel-center", "node"}},

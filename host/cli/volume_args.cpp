@@ -29,14 +29,14 @@ void parseVolumeSize(const std::string& v, BakeRequest& req) {
   std::vector<std::string> parts = splitAt(v, ',');
   // NX,NY,NZ: a 3D table's resolution per axis
   if (parts.size() != 3)
-    throw Error(kExitUsage, "--size takes N or NX,NY,NZ (a brdf3d table's axes), got '" + v + "'");
+    throw Error(kExitUsage, "--size takes N or NX,NY,NZ (a brdf3d or dielectric table's axes), got '" + v + "'");
   std::array<int, 3> n{};
   for (int a = 0; a < 3; ++a) {
     errno = 0;
     char* end = nullptr;
     long x = std::strtol(parts[a].c_str(), &end, 10);
     if (parts[a].empty() || *end != '\0' || errno != 0 || x < 1 || x > kMaxVolumeSize)
-      throw Error(kExitUsage, "--size: each axis of a brdf3d table must be an integer in 1.." +
+      throw Error(kExitUsage, "--size: each axis of a brdf3d or dielectric table must be an integer in 1.." +
           std::to_string(kMaxVolumeSize) + ", got '" + parts[a] + "'");
     n[a] = static_cast<int>(x);
   }
@@ -107,6 +107,9 @@ void validateVolumeOptions(bool bake, BakeRequest& req) {
   auto& v = req.volume;
   if (v.flags.empty()) return;
   bool volume = std::find(req.tables.begin(), req.tables.end(), TableKind::Brdf3d) != req.tables.end();
+  // the rough-dielectric cube takes NX,NY,NZ too (tables/dielectric.cpp), and no other brdf3d option
+  bool cube = std::find(req.tables.begin(), req.tables.end(), TableKind::Dielectric) != req.tables.end();
+  if (bake && cube && !volume && v.flags.size() == 1 && v.flags[0] == "--size NX,NY,NZ") return;
   if (!bake || !volume)
     throw Error(kExitUsage, v.flags[0] + ": only --table brdf3d takes it" +
                                 (bake ? std::string(" (bake --table brdf3d ...)") : std::string(" (a bake option)")));

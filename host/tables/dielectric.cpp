@@ -2,6 +2,7 @@
 // of rough glass over (mu, r, eta) as an EXR atlas of eta slices, and their averages over mu over
 // (r, eta). The computation lives in tables/dielectric_bake.h and tables/dielectric_avg.h.
 #include <algorithm>
+#include <array>
 #include <tuple>
 
 #include "tables/dielectric_bake.h"
@@ -40,12 +41,18 @@ std::vector<Job> planDielectric(const TableFamily* family, const BakeRequest& re
   if (req.fresnelGiven || req.diffuse >= 0 || !req.fresnel.eta.empty() || !req.fresnel.f0.empty())
     throw Error(kExitUsage, t + ": the Fresnel is the exact dielectric one over the eta axis (--eta-range); leave "
                                 "--fresnel, --eta, --f0 and --diffuse out");
-  if (req.volume.size) throw Error(kExitUsage, t + ": --size takes one N (N^3 texels; dielectric-avg N^2)");
+  // --size NX,NY,NZ: the cube's own axes (mu, r, eta slices), e.g. a slice or two around one
+  // material's eta; the averages take one N
+  if (req.volume.size && avg)
+    throw Error(kExitUsage, "--size NX,NY,NZ: --table dielectric-avg takes one N (N^2 entries over r and eta)");
   int n = req.size ? *req.size : 32;
-  if (n > kMaxVolumeSize)
-    throw Error(kExitUsage, "--size: each axis of a dielectric table must be an integer in 1.." +
-                                std::to_string(kMaxVolumeSize) + ", got " + std::to_string(n));
-  if (req.nodeGrid && n < 2) throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
+  const std::array<int, 3> cubeN = req.volume.size ? *req.volume.size : std::array<int, 3>{n, n, n};
+  for (int a : {n, cubeN[0], cubeN[1], cubeN[2]}) {
+    if (a > kMaxVolumeSize)
+      throw Error(kExitUsage, "--size: each axis of a dielectric table must be an integer in 1.." +
+                                  std::to_string(kMaxVolumeSize) + ", got " + std::to_string(a));
+    if (req.nodeGrid && a < 2) throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
+  }
   for (int ndf : req.ndfs)
     for (int gaf : req.gafs)
       for (int a = 0; a < 2; ++a) {
@@ -54,9 +61,9 @@ std::vector<Job> planDielectric(const TableFamily* family, const BakeRequest& re
         j.ndf = ndf;
         j.gaf = gaf;
         j.avg = a == 1;
-        j.nx = n;
-        j.ny = n;
-        j.nz = j.avg ? 1 : n;
+        j.nx = j.avg ? n : cubeN[0];
+        j.ny = j.avg ? n : cubeN[1];
+        j.nz = j.avg ? 1 : cubeN[2];
         j.nodeGrid = req.nodeGrid;
         j.half = req.half;
         if (req.etaRange) std::tie(j.etaLo, j.etaHi) = *req.etaRange;
