@@ -46,7 +46,7 @@ TEST(Render, FurnaceRowsVanishAndTheSingleRowLosesEnergy) {
 
   const brdfbake::TableImage img = brdfbake::readTableExr((d / "out/furnace.exr").string());
   ASSERT_EQ(img.width, 6 * 24);
-  ASSERT_EQ(img.height, 6 * 24);
+  ASSERT_EQ(img.height, 7 * 24);
   auto at = [&](int c, int col, int row) {  // a sphere's centre pixel
     return img.planes[c][static_cast<size_t>(row * 24 + 12) * img.width + col * 24 + 12];
   };
@@ -60,7 +60,18 @@ TEST(Render, FurnaceRowsVanishAndTheSingleRowLosesEnergy) {
   for (int col = 0; col < 6; ++col) EXPECT_NEAR(at(0, col, 1), 1.0f, 2e-3) << "kulla-conty, column " << col;
   EXPECT_LT(at(2, 3, 4), at(0, 3, 4)) << "gold reflects less blue than red";
   EXPECT_LT(at(0, 5, 5), 0.5f) << "the sheen's albedo alone";
-  EXPECT_EQ(img.strings.at("render.rows"), "single,kulla-conty,single-table,dielectric-lambert,gold,sheen");
+  // rough glass (E_R + E_T at eta 1.5): all of it at r = 0, less for rough spheres, least at the rim
+  EXPECT_NEAR(at(0, 0, 6), 1.0f, 1e-5);
+  EXPECT_LT(at(0, 5, 6), 0.999f);
+  auto rim = [&](int col, int row) {  // a pixel near a sphere's edge: mu = 0.23
+    return img.planes[0][static_cast<size_t>(row * 24 + 12) * img.width + col * 24 + 12 + 10];
+  };
+  EXPECT_LT(rim(5, 6), at(0, 5, 6));
+  EXPECT_GT(rim(5, 6), 0.2f);  // 0.36: at r = 1 single scattering loses most of a grazing view's energy
+  std::smatch glass = rowLine(r.out, "glass");
+  if (!glass.empty()) EXPECT_LE(std::stod(glass[2].str()), 1e-6) << "glass above 1\n" << r.out;
+  EXPECT_EQ(img.strings.at("render.rows"), "single,kulla-conty,single-table,dielectric-lambert,gold,sheen,glass");
+  EXPECT_NE(img.strings.at("render.tables").find("tables/dielectric_ggx_smith-correlated.exr"), std::string::npos);
   EXPECT_NE(img.strings.at("render.tables").find("tables/albedo-avg_ggx_smith-correlated.exr"), std::string::npos);
   // the lobe picture: single scattering on top, the Kulla-Conty lobe added below, everywhere at
   // least as bright; at r = 1 the lobe adds more than 0.1 somewhere, at r = 0.4 less than 0.05
@@ -100,6 +111,22 @@ TEST(Render, ABrokenCompensationFailsTheMeasurement) {
   EXPECT_NE(r.out.find("FAIL: a row's pixels are off by more than the tables predict"), std::string::npos) << r.out;
 }
 
+// Another pair: the rows and the lobe are that pair's, measured the same way (single against the
+// reference's E of beckmann + smith).
+TEST(Render, AnyMicrofacetPair) {
+  const fs::path d = freshDir("render", "pair");
+  CmdResult r = run(std::string(kSmall) + " --ndf beckmann --gaf smith --rows single,kulla-conty,glass -o out", d.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("beckmann + smith"), std::string::npos) << r.out;
+  for (const char* row : {"single", "kulla-conty", "glass"}) {
+    std::smatch m = rowLine(r.out, row);
+    if (!m.empty()) EXPECT_EQ(m[4].str(), "0") << row << "\n" << r.out;
+  }
+  const brdfbake::TableImage img = brdfbake::readTableExr((d / "out/furnace.exr").string());
+  EXPECT_EQ(img.height, 3 * 24);
+  EXPECT_NE(img.strings.at("render.tables").find("tables/albedo_beckmann_smith.exr"), std::string::npos);
+}
+
 TEST(Render, NoEglOrBadOptionsWriteNothing) {
   const fs::path d = freshDir("render", "refused");
   CmdResult r = run("render -o out", d.string(), "BRDFBAKE_EGL_LIBRARY=/nonexistent/libEGL.so.1");
@@ -116,6 +143,10 @@ TEST(Render, NoEglOrBadOptionsWriteNothing) {
       {"--rows single,glod", "--rows: unknown row 'glod' (did you mean 'gold'?); valid: single, kulla-conty"},
       {"--cell x", "--cell: expected an integer, 16..256 (pixels per sphere), got 'x'"},
       {"--table albedo", "--table: not a render option"},
+      {"--ndf charlie", "--ndf: render shades ggx, beckmann, blinn-phong or gaussian"},
+      {"--ndf ggx,beckmann", "--ndf: render shades one pair; give one name, got 'ggx,beckmann'"},
+      {"--ndf ggx --gaf charlie-smith", "charlie-smith"},
+      {"--ndf blinn-phong --gaf smith --rows glass", "--rows: the glass row takes --ndf ggx or beckmann"},
   };
   for (const Case& c : cases) {
     r = run("render " + c.args + " -o out", d.string());

@@ -18,15 +18,17 @@ mutation() {
                         "FirstRun.StaleForeignOrTornEntries" ;;
     progress-on-pipe) set -- "$1" host/cli/console.cpp 'const bool progress = !quiet && ::isatty(STDERR_FILENO);' \
                         'const bool progress = !quiet;' "FirstRun.ProgressLineOnATerminalOnly" ;;
-    render-lobe) set -- "$1" host/render/render.cpp 'v = vec3(e + a);' 'v = vec3(e + 0.9 * a);' \
+    render-lobe) set -- "$1" host/render/furnace.cpp 'v = vec3(e + a);' 'v = vec3(e + 0.9 * a);' \
                    "Render.FurnaceRowsVanish" ;;
+    render-glass) set -- "$1" host/render/furnace.cpp 'v = vec3(glassE(mu, r));' 'v = vec3(glassE(mu, r) * 1.001);' \
+                    "Render.FurnaceRowsVanish" ;;
     glass-eta-axis) set -- "$1" host/shader/shader_gen.cpp 's += "  float s = (eta - 1.0) / (eta + 1.0);\n";' \
                       's += "  float s = (eta - 1.0) / (eta + 1.5);\n";' "GlPipeline.GeneratedGlslSamplesTheDielectricTablesByEta" ;;
     *) return 64 ;;
   esac
   run_one "$@"
 }
-names="browser-image program-identity program-checksum progress-on-pipe render-lobe glass-eta-axis"
+names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"

@@ -96,9 +96,11 @@ std::vector<CommandInfo> makeCommands() {
        "prints each row's largest deviation: exit 1 when a row that should conserve energy does not.\n"
        "DIR/lobe.exr, DIR/lobe.png: spheres under a directional light, single scattering above, the\n"
        "Kulla-Conty lobe added below.\n"
-       "Rows: single, kulla-conty, single-table, dielectric-lambert, gold, sheen (docs/reports.md).",
-       {"brdfbake render -o out/render", "brdfbake render --rows single,kulla-conty --columns 6 -o out/render"},
-       "render draws the furnace: -o, --cell, --columns, --rows, --device"},
+       "Rows: single, kulla-conty, single-table, dielectric-lambert, gold, sheen, glass (docs/reports.md);\n"
+       "--ndf/--gaf choose the pair the microfacet and glass rows shade (default ggx + smith-correlated).",
+       {"brdfbake render -o out/render", "brdfbake render --rows single,kulla-conty --columns 6 -o out/render",
+        "brdfbake render --ndf beckmann --gaf smith -o out/render-beckmann"},
+       "render draws the furnace: -o, --ndf, --gaf, --cell, --columns, --rows, --device"},
       {"devices", kCmdDevices, "brdfbake devices [--prepare DIR]",
        "the OpenCL platforms and devices, and the programs prepared for each",
        "Lists each device with the programs whose binaries are ready for it (loaded instead of built).\n"
@@ -119,8 +121,10 @@ std::vector<OptionInfo> makeOptions() {
   const unsigned P = kCmdPlan, SB = kCmdSceneBake;
   return {
       // models
-      {"--ndf", "", "NAME", kTableCommands, "Models", joinNames(ndfNames()) + " (default ggx); repeat or comma-separate: the product is baked", ndfNames()},
-      {"--gaf", "", "NAME", kTableCommands, "Models", joinNames(gafNames()) + "\n(default smith-correlated)", gafNames()},
+      {"--ndf", "", "NAME", kTableCommands | kCmdRender, "Models",
+       joinNames(ndfNames()) + " (default ggx); repeat or comma-separate: the product is baked (render: one, not charlie)",
+       ndfNames()},
+      {"--gaf", "", "NAME", kTableCommands | kCmdRender, "Models", joinNames(gafNames()) + "\n(default smith-correlated)", gafNames()},
       {"--brdf", "", "merl:FILE", B | C, "Models",
        "a measured material (MERL .binary) for --table albedo, albedo-avg (1x1), splitsum; no --ndf/--gaf/--fresnel", {}},
       {"--preset", "", "NAME", B, "Models",
@@ -209,8 +213,9 @@ std::vector<OptionInfo> makeOptions() {
       {"--cell", "", "PX", kCmdRender, "Render", "pixels per sphere's square, 16..256 (default 48)", {}},
       {"--columns", "", "N", kCmdRender, "Render", "roughness steps from 0 to 1, 2..33 (default 11)", {}},
       {"--rows", "", "R[,R..]", kCmdRender, "Render",
-       "single, kulla-conty, single-table, dielectric-lambert, gold, sheen (default: all, in this order)",
-       {"single", "kulla-conty", "single-table", "dielectric-lambert", "gold", "sheen"}},
+       "single, kulla-conty, single-table, dielectric-lambert, gold, sheen, glass (default: every row the pair "
+       "takes, in this order; glass: ggx, beckmann with smith, smith-correlated)",
+       {"single", "kulla-conty", "single-table", "dielectric-lambert", "gold", "sheen", "glass"}},
       // shader
       {"--lang", "", "L", kCmdShader, "Shader", "glsl or hlsl", {"glsl", "hlsl"}},
       {"--output", "-o", "OUT", kCmdShader, "Shader", "write the code to OUT instead of stdout", {}},

@@ -49,6 +49,9 @@ bool parseRenderCommand(const std::vector<std::string>& args, Command& cmd) {
       o.columns = integer(opt, v, "2..33 (roughness steps)");
     } else if (opt == "--rows") {
       o.rows = splitCommas(v);
+    } else if (opt == "--ndf" || opt == "--gaf") {
+      if (v.find(',') != std::string::npos) throw Error(kExitUsage, opt + ": render shades one pair; give one name, got '" + v + "'");
+      (opt == "--ndf" ? o.ndf : o.gaf) = v;
     } else if (opt == "--device") {
       o.device = v;
     } else if (opt == "--cache-dir") {

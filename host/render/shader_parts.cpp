@@ -69,9 +69,9 @@ std::string multiscatterBody() {
 }
 
 // The single-scattering term from the BRDF code in kernels/brdf compiled for the host
-// (common/brdf3d_grid.h hostBrdf: ggx + smith-correlated, F = 1, times n.i), and each pixel's
+// (common/brdf3d_grid.h hostBrdf: the pair, F = 1, times n.i), and each pixel's
 // cosines for the shader's Kulla-Conty lobe.
-LobeInput lobeInput(int cell) {
+LobeInput lobeInput(int cell, int ndf, int gaf) {
   const int W = 3 * cell, H = 2 * cell;
   LobeInput in;
   in.geometry.assign(static_cast<size_t>(W) * H * 4, 0.0f);
@@ -95,8 +95,8 @@ LobeInput lobeInput(int cell) {
       const glm::dvec3 a = std::fabs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
       const glm::dvec3 t = glm::normalize(glm::cross(a, n)), b = glm::cross(n, t);
       Brdf3dSpec s;
-      s.ndf = ndfId("ggx");
-      s.gaf = gafId("smith-correlated");
+      s.ndf = ndf;
+      s.gaf = gaf;
       s.roughness = r;
       s.timesCos = true;
       const Directions dir{{glm::dot(l, t), glm::dot(l, b), muI}, {glm::dot(v, t), glm::dot(v, b), muO}};

@@ -27,7 +27,7 @@ struct LobeInput {
   std::vector<float> geometry;  // per pixel: mu_o, mu_i, r, 1 (sphere) or 0 (background)
   std::vector<float> single;    // f_ss(o, i) mu_i from kernels/brdf (host, double), per pixel
 };
-// The lobe picture's inputs for 3 x 2 cells of `cell` pixels: ggx + smith-correlated, F = 1.
-LobeInput lobeInput(int cell);
+// The lobe picture's inputs for 3 x 2 cells of `cell` pixels: the pair's BRDF, F = 1.
+LobeInput lobeInput(int cell, int ndf, int gaf);
 
 }  // namespace brdfbake

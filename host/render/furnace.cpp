@@ -1,0 +1,365 @@
+// The white furnace grid on GL and its measurement (render/furnace.h).
+#include "render/furnace.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+
+#include "brdfbake/brdfbake.h"
+#include "common/errors.h"
+#include "common/format.h"
+#include "common/models.h"
+#include "reference/reference.h"
+#include "render/shader_parts.h"
+#include "shader/shader_gen.h"
+
+namespace brdfbake {
+
+namespace {
+
+// Gold's reflectance at normal incidence, linear RGB (Hoffman, "Physics and Math of Shading",
+// SIGGRAPH 2015 course notes, table of metals: gold 1.00, 0.71, 0.29).
+constexpr float kGold[3] = {1.00f, 0.71f, 0.29f};
+constexpr float kDielectricF0 = 0.04f;  // a dielectric of IOR 1.5: ((1.5 - 1)/(1.5 + 1))^2
+// The glass table's one slice: texel centres put it at the middle of the s range, s(1.5) = 0.2
+// (s = (eta - 1)/(eta + 1), docs/rough-glass.md), the range's ends 0.01 either side of it.
+constexpr double kGlassS = 0.2, kGlassHalfWidth = 0.01;
+
+// A table's claim and its interpolation error (relative to max(1, |value|)).
+double budgetOf(const Table& t) {
+  auto num = [&](const char* k) { return t.metadata.count(k) ? std::stod(t.metadata.at(k)) : 0.0; };
+  return num("brdf.error") + num("brdf.interp-error");
+}
+
+// The shader: one invocation per pixel; .a holds the bound the pixel's row predicts (-1:
+// background, -2: no prediction).
+std::string furnaceSource(const FurnaceSpec& s, const FurnaceTables& t, double dE, double dAvg) {
+  const int W = s.columns * s.cell, H = static_cast<int>(s.rows.size()) * s.cell;
+  std::vector<double> x32, w32, x16, w16;
+  gaussLegendre(32, &x32, &w32);
+  gaussLegendre(16, &x16, &w16);
+  std::string rowList;
+  for (int k : s.rows) rowList += (rowList.empty() ? "" : ", ") + std::to_string(k);
+  std::string src = "#version 310 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
+                    "layout(local_size_x = 8, local_size_y = 8) in;\n"
+                    "layout(std430, binding = 0) buffer Pixels { vec4 px[]; };\n";
+  src += shaderForFiles(t.all(), ShaderLang::Glsl) + "\nuniform sampler2D sheen_tex;\nuniform sampler2D glass_tex;\n";
+  src += t.albedo.empty() ? "" : multiscatterBody();
+  src += "const int W = " + std::to_string(W) + ", H = " + std::to_string(H) + ", CELL = " + std::to_string(s.cell) +
+         ", COLS = " + std::to_string(s.columns) + ", NROWS = " + std::to_string(s.rows.size()) + ";\n";
+  src += "const int ROW[NROWS] = int[NROWS](" + rowList + ");\n";
+  src += "const float X32[32] = float[32](" + floats(x32) + ");\nconst float W32[32] = float[32](" + floats(w32) + ");\n";
+  src += "const float X16[16] = float[16](" + floats(x16) + ");\nconst float W16[16] = float[16](" + floats(w16) + ");\n";
+  src += "const float D_E = " + lit(dE) + ", D_AVG = " + lit(dAvg) + ";\n";
+  src += "const vec3 GOLD = vec3(" + lit(kGold[0]) + ", " + lit(kGold[1]) + ", " + lit(kGold[2]) + ");\n";
+  src += "const float F0_DIELECTRIC = " + lit(kDielectricF0) + ", SPHERE = " + lit(kSphere) + ";\n";
+  // test hook: BRDFBAKE_TEST_RENDER_LOBE_SCALE scales the Kulla-Conty lobe, so that a test can see
+  // the measurement fail a compensation that does not conserve (tests/render_test.cpp)
+  const char* lobeScale = std::getenv("BRDFBAKE_TEST_RENDER_LOBE_SCALE");
+  src += "const float LOBE_SCALE = " + lit(lobeScale ? std::atof(lobeScale) : 1.0) + ";\n";
+  src += t.sheen.empty() ? "float sheenE(float mu, float r) { return 0.0; }\n"
+                         : "float sheenE(float mu, float r) { return " + shaderPrefix(t.sheen) + "_lookup(sheen_tex, mu, r).r; }\n";
+  src += t.glass.empty() ? "float glassE(float mu, float r) { return 0.0; }\n"
+                         : "float glassE(float mu, float r) { return " + shaderPrefix(t.glass) + "_albedos(glass_tex, mu, r, " +
+                               lit(kGlassEta) + ").b; }\n";
+  if (t.albedo.empty()) {
+    // no microfacet rows: the functions they call are never reached
+    src += "vec2 lookupAB(float mu, float r) { return vec2(0.0); }\nfloat lookupE(float mu, float r) { return 0.0; }\n"
+           "float lookupEavg(float r) { return 0.0; }\nfloat kullaContyLobe(float a, float b, float r) { return 0.0; }\n"
+           "vec3 fdezAgueraSingle(float mu, float r, vec3 f0) { return vec3(0.0); }\n"
+           "vec3 fdezAgueraMultiple(float mu, float r, vec3 f0) { return vec3(0.0); }\nconst float MS_FLOOR = 1e-6;\n"
+           "const float MS_PI = 3.14159265;\n";
+  }
+  src += R"glsl(
+// The Kulla-Conty lobe's albedo under a uniform white light: 2 pi int_0^1 f_ms(mu_o, mu_i) mu_i dmu_i
+// (the lobe does not depend on phi), by Gauss-Legendre with 32 and 16 nodes (their difference is
+// the estimate of the rule's error).
+float kcAlbedo32(float muO, float r) {
+  float s = 0.0;
+  for (int k = 0; k < 32; ++k) s += W32[k] * kullaContyLobe(muO, X32[k], r) * X32[k];
+  return 2.0 * MS_PI * s;
+}
+float kcAlbedo16(float muO, float r) {
+  float s = 0.0;
+  for (int k = 0; k < 16; ++k) s += W16[k] * kullaContyLobe(muO, X16[k], r) * X16[k];
+  return 2.0 * MS_PI * s;
+}
+
+// One pixel: its sphere's normal seen along the view axis (orthographic), mu = n.v; the white
+// furnace's radiance is 1 in every direction, so the pixel is the material's directional albedo.
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (p.x >= W || p.y >= H) return;
+  int idx = p.y * W + p.x;
+  vec2 c = (vec2(p % CELL) + 0.5) / float(CELL) * 2.0 - 1.0;
+  float d2 = dot(c, c) / (SPHERE * SPHERE);
+  if (d2 >= 1.0) { px[idx] = vec4(1.0, 1.0, 1.0, -1.0); return; }
+  float mu = sqrt(1.0 - d2);
+  float r = float(p.x / CELL) / float(COLS - 1);
+  int kind = ROW[p.y / CELL];
+  vec3 v = vec3(0.0);
+  float bound = -2.0;
+  if (kind == 0) {
+    vec2 ab = lookupAB(mu, r);
+    v = vec3(ab.x + ab.y);
+  } else if (kind == 1) {
+    float e = lookupE(mu, r);
+    float a = LOBE_SCALE * kcAlbedo32(mu, r), a16 = LOBE_SCALE * kcAlbedo16(mu, r);
+    v = vec3(e + a);
+    // P = E + (1 - E) I/(1 - E_avg), I = 2 int (1 - E) mu dmu: E's error moves I by at most D_E,
+    // E_avg's moves the ratio by D_AVG/(1 - E_avg); P's own E cancels to first order
+    float lost = max(1.0 - lookupEavg(r), MS_FLOOR);
+    float ratio = a / max(1.0 - e, MS_FLOOR);
+    bound = max(1.0 - e, 0.0) * (D_E + D_AVG) / lost + abs(a - a16) + D_E * abs(1.0 - ratio) + 1e-5;
+  } else if (kind == 2) {
+    v = fdezAgueraSingle(mu, r, vec3(1.0)) + fdezAgueraMultiple(mu, r, vec3(1.0));
+    bound = 1e-5;
+  } else if (kind == 3) {
+    vec3 spec = fdezAgueraSingle(mu, r, vec3(F0_DIELECTRIC)) + fdezAgueraMultiple(mu, r, vec3(F0_DIELECTRIC));
+    v = spec + (vec3(1.0) - spec) * 1.0;  // Lambert, rho = 1, gets what the specular left
+    bound = 1e-5;
+  } else if (kind == 4) {
+    v = fdezAgueraSingle(mu, r, GOLD) + fdezAgueraMultiple(mu, r, GOLD);
+  } else if (kind == 5) {
+    v = vec3(sheenE(mu, r));
+  } else {
+    v = vec3(glassE(mu, r));  // E_R + E_T: what the interface reflects and transmits, once
+  }
+  px[idx] = vec4(v, bound);
+}
+)glsl";
+  return src;
+}
+
+// Runs `prog` over W x H pixels with the tables bound, returns RGBA per pixel.
+std::vector<float> dispatch(const GlContext& gl, GLuint prog, int W, int H, const std::vector<std::pair<const Table*, std::string>>& tex) {
+  const GlFunctions& g = gl.gl();
+  g.UseProgram(prog);
+  int unit = 0;
+  for (const auto& [t, uniform] : tex) {
+    // RGBA32F, bilinear, clamped: what the generated code expects
+    std::vector<float> rgba(static_cast<size_t>(t->width) * t->height * 4, 1.0f);
+    for (size_t i = 0; i < static_cast<size_t>(t->width) * t->height; ++i)
+      for (size_t c = 0; c < t->planes.size() && c < 4; ++c) rgba[i * 4 + c] = t->planes[c][i];
+    GLuint id = 0;
+    g.GenTextures(1, &id);
+    g.ActiveTexture(GL_TEXTURE0 + unit);
+    g.BindTexture(GL_TEXTURE_2D, id);
+    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, t->width, t->height, 0, GL_RGBA, GL_FLOAT, rgba.data());
+    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    const GLint loc = g.GetUniformLocation(prog, uniform.c_str());
+    if (loc >= 0) g.Uniform1i(loc, unit);
+    ++unit;
+  }
+  GLuint buf = 0;
+  const size_t n = static_cast<size_t>(W) * H;
+  g.GenBuffers(1, &buf);
+  g.BindBuffer(GL_SHADER_STORAGE_BUFFER, buf);
+  g.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(n * 4 * sizeof(float)), nullptr, GL_DYNAMIC_READ);
+  g.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf);
+  g.DispatchCompute(static_cast<GLuint>((W + 7) / 8), static_cast<GLuint>((H + 7) / 8), 1);
+  g.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  g.Finish();
+  const float* mapped = static_cast<const float*>(
+      g.MapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(n * 4 * sizeof(float)), GL_MAP_READ_BIT));
+  if (!mapped) throw Error(kExitSoftware, "render: could not read the pixels back (GL error " + std::to_string(g.GetError()) + ")");
+  std::vector<float> px(mapped, mapped + n * 4);
+  g.UnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+  return px;
+}
+
+}  // namespace
+
+const std::vector<FurnaceRow>& furnaceRows() {
+  static const std::vector<FurnaceRow> rows = {
+      {"single", "F = 1, single scattering: E = A + B from the split sum", false},
+      {"kulla-conty", "F = 1, single scattering + the Kulla-Conty lobe (albedo, albedo-avg), integrated over the light", true},
+      {"single-table", "F = 1, compensated from the split sum alone (Fdez-Aguera 2019)", true},
+      {"dielectric-lambert", "specular F0 = 0.04 (compensated) over Lambert rho = 1 with albedo scaling", true},
+      {"gold", "gold, Schlick F0 = (1, 0.71, 0.29), compensated: absorbs, so darker than the background", false},
+      {"sheen", "the Charlie sheen's albedo alone (charlie + charlie-smith split sum)", false},
+      {"glass", "rough glass, eta 1.5: E_R + E_T from the dielectric table, single scattering (never above 1)", false},
+  };
+  return rows;
+}
+
+int furnaceRowIndex(const std::string& name) {
+  const auto& rows = furnaceRows();
+  for (size_t i = 0; i < rows.size(); ++i)
+    if (rows[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+bool furnaceRowFits(int row, int ndf, int gaf) {
+  const std::string& name = furnaceRows()[static_cast<size_t>(row)].name;
+  if (name == "sheen") return true;
+  if (name == "glass")
+    return (ndf == ndfId("ggx") || ndf == ndfId("beckmann")) && (gaf == gafId("smith") || gaf == gafId("smith-correlated"));
+  return !isSheenNdf(ndf);
+}
+
+std::vector<std::string> FurnaceTables::all() const {
+  std::vector<std::string> v;
+  for (const std::string* p : {&splitsum, &albedo, &albedoAvg, &sheen, &glass})
+    if (!p->empty()) v.push_back(*p);
+  return v;
+}
+
+FurnaceTables bakeFurnaceTables(const FurnaceSpec& s, const std::string& dir, const std::string& device, bool noWait) {
+  bool microfacet = false, sheen = false, glass = false;
+  for (int k : s.rows) {
+    const std::string& name = furnaceRows()[static_cast<size_t>(k)].name;
+    if (name == "sheen") sheen = true;
+    else if (name == "glass") glass = true;
+    else microfacet = true;
+  }
+  FurnaceTables t;
+  BakeRequest base = defaultRequest();
+  base.outDir = dir;
+  base.device = device;
+  base.noWait = noWait;
+  auto bakeOne = [&](BakeRequest r, const char* kind) {
+    std::string path;
+    for (const TableReport& rep : bakeToDirectory(r))
+      if (rep.path.find("/" + std::string(kind) + "_") != std::string::npos) path = rep.path;
+    if (path.empty()) throw Error(kExitSoftware, std::string("internal: render baked no ") + kind + " table");
+    return path;
+  };
+  if (microfacet) {
+    BakeRequest r = base;
+    r.ndfs = {s.ndf};
+    r.gafs = {s.gaf};
+    r.tables = {tableKind("splitsum"), tableKind("albedo"), tableKind("albedo-avg")};
+    std::vector<TableReport> reps = bakeToDirectory(r);
+    for (const TableReport& rep : reps) {
+      if (rep.table == "splitsum") t.splitsum = rep.path;
+      else if (rep.table == "albedo") t.albedo = rep.path;
+      else if (rep.table == "albedo-avg") t.albedoAvg = rep.path;
+    }
+    if (t.splitsum.empty() || t.albedo.empty() || t.albedoAvg.empty())
+      throw Error(kExitSoftware, "internal: render baked no split sum, albedo or albedo-avg table");
+  }
+  if (sheen) {
+    BakeRequest r = base;
+    r.ndfs = {ndfId("charlie")};
+    r.gafs = {gafId("charlie-smith")};
+    r.tables = {tableKind("splitsum")};
+    t.sheen = bakeOne(r, "splitsum");
+  }
+  if (glass) {
+    BakeRequest r = base;
+    r.ndfs = {s.ndf};
+    r.gafs = {s.gaf};
+    r.tables = {tableKind("dielectric")};
+    r.volume.size = std::array<int, 3>{32, 16, 1};
+    const double lo = kGlassS - kGlassHalfWidth, hi = kGlassS + kGlassHalfWidth;
+    r.etaRange = std::make_pair((1 + lo) / (1 - lo), (1 + hi) / (1 - hi));
+    t.glass = bakeOne(r, "dielectric");
+  }
+  return t;
+}
+
+FurnacePicture renderFurnace(const GlContext& gl, const FurnaceSpec& s, const FurnaceTables& t) {
+  std::map<std::string, Table> tables;
+  for (const std::string& p : t.all()) tables[p] = readTable(p);
+  const double dE = t.albedo.empty() ? 0 : budgetOf(tables[t.albedo]);
+  const double dAvg = t.albedoAvg.empty() ? 0 : budgetOf(tables[t.albedoAvg]);
+  const double dSplit = t.splitsum.empty() ? 0 : budgetOf(tables[t.splitsum]);
+  // the glass row: never above 1 by more than the table's claim and the float lerp's rounding
+  const double dGlass = t.glass.empty() ? 0 : std::stod(tables[t.glass].metadata.at("brdf.error")) + 1e-6;
+  const GLuint prog = gl.computeProgram(furnaceSource(s, t, dE, dAvg));
+  std::vector<std::pair<const Table*, std::string>> bind;
+  for (const std::string* p : {&t.splitsum, &t.albedo, &t.albedoAvg})
+    if (!p->empty()) bind.push_back({&tables[*p], shaderPrefix(*p) + "_tex"});
+  if (!t.sheen.empty()) bind.push_back({&tables[t.sheen], "sheen_tex"});
+  if (!t.glass.empty()) bind.push_back({&tables[t.glass], "glass_tex"});
+  const int nrows = static_cast<int>(s.rows.size()), W = s.columns * s.cell, H = nrows * s.cell;
+  const std::vector<float> px = dispatch(gl, prog, W, H, bind);
+
+  FurnacePicture pic;
+  pic.width = W;
+  pic.height = H;
+  pic.renderer = gl.renderer();
+  pic.rows.resize(static_cast<size_t>(nrows));
+  pic.rgb.assign(3, std::vector<float>(static_cast<size_t>(W) * H));
+  const int glassRow = furnaceRowIndex("glass"), singleRow = furnaceRowIndex("single");
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const size_t i = static_cast<size_t>(y) * W + x;
+      const float* q = &px[i * 4];
+      for (int c = 0; c < 3; ++c) {
+        if (!std::isfinite(q[c])) throw Error(kExitSoftware, "render: a pixel is not finite (row " + std::to_string(y / s.cell) + ")");
+        pic.rgb[c][i] = q[c];
+      }
+      if (q[3] == -1.0f) continue;  // background
+      const int row = y / s.cell, kind = s.rows[static_cast<size_t>(row)];
+      RowMeasure& rm = pic.rows[static_cast<size_t>(row)];
+      ++rm.pixels;
+      double dev = 0, bound = 0;
+      if (furnaceRows()[static_cast<size_t>(kind)].conserves) {
+        dev = std::max({std::fabs(q[0] - 1.0), std::fabs(q[1] - 1.0), std::fabs(q[2] - 1.0)});
+        bound = q[3];
+      } else if (kind == glassRow) {
+        dev = q[0] - 1.0;  // signed: a glass that creates light is above 0
+        bound = dGlass;
+      } else {
+        continue;
+      }
+      if (!rm.measured || dev >= rm.worst) {
+        rm.worst = dev;
+        rm.worstBound = bound;
+      }
+      rm.measured = true;
+      if (dev > bound) ++rm.over;
+    }
+  // the single row: every 6th pixel of each sphere against reference::albedo in double, within the
+  // split sum's claim and interpolation error
+  for (int row = 0; row < nrows; ++row) {
+    if (s.rows[static_cast<size_t>(row)] != singleRow) continue;
+    RowMeasure& rm = pic.rows[static_cast<size_t>(row)];
+    rm.measured = true;
+    rm.worstBound = dSplit;
+    for (int y = row * s.cell; y < (row + 1) * s.cell; y += 6)
+      for (int x = 0; x < W; x += 6) {
+        const float* q = &px[(static_cast<size_t>(y) * W + x) * 4];
+        if (q[3] == -1.0f) continue;
+        const double cx = ((x % s.cell) + 0.5) / s.cell * 2 - 1, cy = ((y % s.cell) + 0.5) / s.cell * 2 - 1;
+        const double mu = std::sqrt(std::max(0.0, 1 - (cx * cx + cy * cy) / (kSphere * kSphere)));
+        const double r = static_cast<double>(x / s.cell) / (s.columns - 1);
+        const double ref = reference::albedo(s.ndf, s.gaf, r, mu).e();
+        const double dev = std::fabs(q[0] - ref) / std::max(1.0, std::fabs(ref));
+        rm.worst = std::max(rm.worst, dev);
+        if (dev > dSplit) ++rm.over;
+      }
+  }
+  for (const RowMeasure& rm : pic.rows) pic.fail = pic.fail || rm.over > 0;
+  return pic;
+}
+
+std::string furnaceTable(const FurnaceSpec& s, const FurnacePicture& p) {
+  char line[256];
+  std::snprintf(line, sizeof line, "%-19s %-9s %-34s %-12s %s\n", "row", "conserves", "largest deviation", "its bound", "pixels over");
+  std::string out = line;
+  for (size_t row = 0; row < s.rows.size(); ++row) {
+    const FurnaceRow& fr = furnaceRows()[static_cast<size_t>(s.rows[row])];
+    const RowMeasure& rm = p.rows[row];
+    char dev[64] = "-", bnd[32] = "-", over[32] = "-";
+    if (rm.measured) {
+      const char* against = fr.conserves ? "(|pixel - 1|)" : fr.name == "single" ? "(|pixel - E_ref|)" : "(pixel - 1)";
+      std::snprintf(dev, sizeof dev, "%.3g %s", rm.worst, against);
+      std::snprintf(bnd, sizeof bnd, "%.3g", rm.worstBound);
+      std::snprintf(over, sizeof over, "%ld", rm.over);
+    }
+    std::snprintf(line, sizeof line, "%-19s %-9s %-34s %-12s %s\n", fr.name.c_str(), fr.conserves ? "yes" : "no", dev, bnd, over);
+    out += line;
+  }
+  return out;
+}
+
+}  // namespace brdfbake

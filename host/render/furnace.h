@@ -1,0 +1,65 @@
+// The white furnace grid: spheres of roughness 0 to 1 across, one material per row, under a uniform
+// white environment (radiance 1 everywhere, the background 1), each pixel shaded on GL by the
+// generated lookup code sampling baked files, read back as an engine loads them; and the
+// measurement: rows that conserve energy must be 1 within what the tables' claims and
+// interpolation errors predict, the single-scattering row must match the independent reference's
+// E(n.v, r), the glass row must never exceed 1. `brdfbake render` and the report pages draw it.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "render/gl_context.h"
+
+namespace brdfbake {
+
+// The rows a furnace render can draw, in order, and what each shades.
+struct FurnaceRow {
+  std::string name, what;
+  bool conserves;  // should vanish into the background (E = 1)
+};
+const std::vector<FurnaceRow>& furnaceRows();
+int furnaceRowIndex(const std::string& name);  // -1 for none
+// Whether a row applies to the pair: the microfacet rows to every NDF but charlie, the glass row to
+// the pairs the rough dielectric takes (ggx, beckmann with smith, smith-correlated); the sheen row
+// is charlie + charlie-smith whatever the pair.
+bool furnaceRowFits(int row, int ndf, int gaf);
+
+// The glass row's material: eta 1.5 (crown glass), seen from outside.
+constexpr double kGlassEta = 1.5;
+
+struct FurnaceSpec {
+  int ndf = 0, gaf = 0;
+  int cell = 48, columns = 11;
+  std::vector<int> rows;  // furnaceRows() indices, top to bottom
+};
+
+// The files the rows sample (empty: not needed).
+struct FurnaceTables {
+  std::string splitsum, albedo, albedoAvg, sheen, glass;
+  std::vector<std::string> all() const;
+};
+// Bakes what the rows need into `dir` as `brdfbake bake` does (one locked, atomic set per request):
+// the pair's split sum, albedo and albedo-avg; charlie + charlie-smith's split sum for the sheen row;
+// for the glass row a dielectric table of one eta slice at kGlassEta (32 x 16 x 1).
+FurnaceTables bakeFurnaceTables(const FurnaceSpec& s, const std::string& dir, const std::string& device, bool noWait);
+
+struct RowMeasure {
+  double worst = 0, worstBound = 0;  // the largest deviation and the bound at that pixel
+  long over = 0, pixels = 0;         // pixels past their bound, sphere pixels
+  bool measured = false;
+};
+struct FurnacePicture {
+  int width = 0, height = 0;
+  std::vector<std::vector<float>> rgb;  // linear planes R, G, B
+  std::vector<RowMeasure> rows;         // per row of the spec
+  std::string renderer;                 // GL_RENDERER
+  bool fail = false;                    // a measured row has pixels past their bound
+};
+// Renders and measures. Error(kExitSoftware) for a pixel that is not finite.
+FurnacePicture renderFurnace(const GlContext& gl, const FurnaceSpec& s, const FurnaceTables& t);
+
+// The measurement as a table, one line per row: name, conserves, largest deviation (what it is
+// against), its bound, pixels over.
+std::string furnaceTable(const FurnaceSpec& s, const FurnacePicture& p);
+
+}  // namespace brdfbake
