@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
       case Command::Kind::Energy: {
         if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
         std::vector<EnergyResult> res = checkEnergy(cmd.bake);
-        std::cout << formatEnergy(res);
+        std::cout << formatEnergy(res) << writeEnergyPage(cmd.bake, res);
         for (const auto& r : res)
           if (r.violates) return 1;  // a build gates on this
         return kExitOk;

@@ -448,6 +448,23 @@ TEST(CliMaterials, EnergyGateChecksRoughGlass) {
   EXPECT_NE(r.out.find("--transmission: rough glass takes --fresnel dielectric"), std::string::npos) << r.out;
 }
 
+// energy's page: the verdict and the worst points, and the pair's white furnace rendered on GL
+// with the glass row (rough glass is what it checks here), every image loading in Chromium.
+TEST(CliMaterials, EnergyWritesItsPageWithTheFurnace) {
+  fs::path d = freshDir("energypage");
+  CmdResult r = run("energy --fresnel dielectric --eta 1.5 --transmission --size 5 -o " + d.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("report: " + (d / "energy/index.html").string()), std::string::npos) << r.out;
+  const std::string html = bytes(d / "energy/index.html");
+  EXPECT_NE(html.find("<h2>Summary: all 1 material(s) conserve energy"), std::string::npos) << html;
+  EXPECT_NE(html.find("\nglass               no"), std::string::npos) << html;
+  EXPECT_NE(html.find("every measured pixel within its bound"), std::string::npos) << html;
+  EXPECT_NE(bytes(d / "energy/energy.csv").find("material,mu,r,param,channel,lobe1,lobe2,total,bound\n\"ggx+smith-correlated, rough glass"),
+            std::string::npos);
+  EXPECT_EQ(bytes(d / "energy/render_ggx_smith-correlated.png").substr(1, 3), "PNG");
+  brdfbake::testing_browser::expectPageWorks(d / "energy/index.html", fs::path(d.string() + "-browser"), 1);
+}
+
 TEST(CliMaterials, EnergyGateExitStatuses) {
   // conserving: the diffuse lobe gets what the specular left
   CmdResult r = run("energy --fresnel dielectric --diffuse lambert --coupling albedo-scaling --size 9");
@@ -534,8 +551,13 @@ TEST(CliEvidence, VerifyPassesTheDefaultPairAndWritesItsPage) {
   std::string html = bytes(d / "verify/index.html");
   EXPECT_NE(html.find("<img src=\"furnace_ggx_smith-correlated.svg\""), std::string::npos);
   EXPECT_NE(bytes(d / "verify/furnace_ggx_smith-correlated.svg").find("<svg"), std::string::npos);
-  brdfbake::testing_browser::expectPageWorks(d / "verify/index.html", fs::path(d.string() + "-browser"), 2);
-  EXPECT_EQ(countFiles(d), 8u) << "the page, its CSV, two data files, scripts and plots; no temporaries";
+  // the white furnace rendered on GL from the pair's tables, with its measurement
+  EXPECT_NE(html.find("<img src=\"render_ggx_smith-correlated.png\""), std::string::npos);
+  EXPECT_EQ(bytes(d / "verify/render_ggx_smith-correlated.png").substr(1, 3), "PNG");
+  EXPECT_NE(html.find("every measured pixel within its bound"), std::string::npos) << html;
+  EXPECT_NE(html.find("\nglass               no"), std::string::npos) << html;
+  brdfbake::testing_browser::expectPageWorks(d / "verify/index.html", fs::path(d.string() + "-browser"), 3);
+  EXPECT_EQ(countFiles(d), 9u) << "the page, its CSV, two data files, scripts, plots and the render; no temporaries";
   // the page opens with its summary; a passing pair's heat map has no failure legend, and its
   // colour scale marks E = 1
   const size_t summary = html.find("<h2>Summary: all 1 pair(s) pass"), pair = html.find("<h2>ggx+smith-correlated");
@@ -544,6 +566,19 @@ TEST(CliEvidence, VerifyPassesTheDefaultPairAndWritesItsPage) {
   const std::string gp = bytes(d / "verify/furnace_ggx_smith-correlated.gp");
   EXPECT_EQ(gp.find("E > 1 + bound"), std::string::npos) << gp;
   EXPECT_NE(gp.find("set cbtics add ('E = 1' 1)"), std::string::npos) << gp;
+}
+
+// Without EGL the verdict and the page stand; the page says why there is no render and what to install.
+TEST(CliEvidence, VerifyWithoutEglWritesItsPageAndSaysWhy) {
+  fs::path d = freshDir("verifynoegl");
+  CmdResult r = run("verify --size 5 -o " + d.string(), "", "BRDFBAKE_EGL_LIBRARY=/nonexistent/libEGL.so.1");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string html = bytes(d / "verify/index.html");
+  EXPECT_NE(html.find("Furnace render: not drawn, no OpenGL ES device: render: no EGL library (/nonexistent/libEGL.so.1): "
+                      "install Mesa's EGL"),
+            std::string::npos)
+      << html;
+  EXPECT_FALSE(fs::exists(d / "verify/render_ggx_smith-correlated.png"));
 }
 
 TEST(CliEvidence, VerifyFlagsBrokenModels) {
@@ -590,7 +625,10 @@ TEST(CliEvidence, StressIsCleanAndWritesItsPage) {
     ASSERT_TRUE(fs::exists(d / "stress" / f)) << f;
     EXPECT_GT(fs::file_size(d / "stress" / f), 200u) << f;
   }
-  brdfbake::testing_browser::expectPageWorks(d / "stress/index.html", fs::path(d.string() + "-browser"), 1);
+  // and the default pair's white furnace rendered on GL, measured
+  EXPECT_TRUE(fs::exists(d / "stress/render_ggx_smith-correlated.png"));
+  EXPECT_NE(bytes(d / "stress/index.html").find("every measured pixel within its bound"), std::string::npos);
+  brdfbake::testing_browser::expectPageWorks(d / "stress/index.html", fs::path(d.string() + "-browser"), 2);
   r = run("stress --ndf ggx");
   EXPECT_EQ(r.code, 64) << r.out;
   EXPECT_NE(r.out.find("--ndf: not a stress option"), std::string::npos) << r.out;
@@ -602,7 +640,8 @@ TEST(CliEvidence, ConvergenceShowsEachMethodAgainstTheReference) {
   fs::path d = freshDir("conv");
   CmdResult r = run("convergence --size 4 -o " + d.string());
   ASSERT_EQ(r.code, 0) << r.out;
-  brdfbake::testing_browser::expectPageWorks(d / "convergence/index.html", fs::path(d.string() + "-browser"), 1);
+  EXPECT_TRUE(fs::exists(d / "convergence/render_ggx_smith-correlated.png"));
+  brdfbake::testing_browser::expectPageWorks(d / "convergence/index.html", fs::path(d.string() + "-browser"), 2);
   for (const char* m : {"quadrature (device, float)  ", "quadrature (host, double)  ", "Monte Carlo (Hammersley, float)  "})
     EXPECT_NE(r.out.find(m), std::string::npos) << m << "\n" << r.out;
   std::string out = r.out.substr(r.out.find("time to 1e-7"));  // the summary rows

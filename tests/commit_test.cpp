@@ -103,6 +103,18 @@ TEST(Commit, KilledCommitIsFinishedByTheNextBake) {
   EXPECT_EQ(hidden(d / "o"), std::vector<std::string>{".mine"});
 }
 
+// A report killed while writing its page leaves a temporary directory beside it; the next bake
+// there sweeps it (under the lock, as it sweeps a killed bake's files) instead of failing on it.
+TEST(Commit, AKilledReportsTemporaryDirectoryIsSwept) {
+  const fs::path d = freshDir("commit", "report");
+  fs::create_directories(d / "o/.verify.tmp-99999");
+  std::ofstream(d / "o/.verify.tmp-99999/index.html") << "<html>";
+  CmdResult r = run("bake --table kp -o o", d.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(hidden(d / "o").empty()) << r.out;
+  EXPECT_TRUE(fs::exists(d / "o/kp_ggx.exr"));
+}
+
 // A killed bake's temporaries are swept by `bake SCENE --prune` even when every table is up to
 // date and nothing else is written (under the directory's lock, as a bake sweeps them).
 TEST(Commit, PruneSweepsAKilledBakesTemporaries) {

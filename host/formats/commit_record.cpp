@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -170,9 +171,17 @@ void recoverDirectory(const std::string& dir) {
   while (dirent* e = ::readdir(d))
     if (isOurTemporary(e->d_name)) sweep.push_back(joinPath(dir, e->d_name));
   ::closedir(d);
-  for (const auto& p : sweep)
-    if (::unlink(p.c_str()) != 0 && errno != ENOENT)
+  for (const auto& p : sweep) {
+    // a report page's temporary is a directory (report/report_page.h), a table's a file
+    struct stat st {};
+    if (::lstat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+      std::error_code ec;
+      std::filesystem::remove_all(p, ec);
+      if (ec) throw Error(kExitIoErr, "cannot remove " + p + " (a temporary a killed run left): " + ec.message());
+    } else if (::unlink(p.c_str()) != 0 && errno != ENOENT) {
       throw Error(kExitIoErr, "cannot remove " + p + " (a temporary a killed bake left): " + std::strerror(errno));
+    }
+  }
   if (!sweep.empty()) syncDir(dir);
 }
 

@@ -257,7 +257,7 @@ FurnaceTables bakeFurnaceTables(const FurnaceSpec& s, const std::string& dir, co
     r.ndfs = {s.ndf};
     r.gafs = {s.gaf};
     r.tables = {tableKind("dielectric")};
-    r.volume.size = std::array<int, 3>{32, 16, 1};
+    r.volume.size = std::array<int, 3>{s.glassMu, s.glassR, 1};
     const double lo = kGlassS - kGlassHalfWidth, hi = kGlassS + kGlassHalfWidth;
     r.etaRange = std::make_pair((1 + lo) / (1 - lo), (1 + hi) / (1 - hi));
     t.glass = bakeOne(r, "dielectric");

@@ -31,6 +31,7 @@ struct FurnaceSpec {
   int ndf = 0, gaf = 0;
   int cell = 48, columns = 11;
   std::vector<int> rows;  // furnaceRows() indices, top to bottom
+  int glassMu = 32, glassR = 16;  // the glass row's table: texels over mu and r (one eta slice)
 };
 
 // The files the rows sample (empty: not needed).
@@ -40,7 +41,7 @@ struct FurnaceTables {
 };
 // Bakes what the rows need into `dir` as `brdfbake bake` does (one locked, atomic set per request):
 // the pair's split sum, albedo and albedo-avg; charlie + charlie-smith's split sum for the sheen row;
-// for the glass row a dielectric table of one eta slice at kGlassEta (32 x 16 x 1).
+// for the glass row a dielectric table of one eta slice at kGlassEta (glassMu x glassR x 1).
 FurnaceTables bakeFurnaceTables(const FurnaceSpec& s, const std::string& dir, const std::string& device, bool noWait);
 
 struct RowMeasure {

@@ -13,6 +13,8 @@
 #include "common/format.h"
 #include "common/material.h"
 #include "common/models.h"
+#include "report/furnace_figure.h"
+#include "report/report_page.h"
 
 namespace brdfbake {
 
@@ -201,6 +203,30 @@ std::string formatEnergy(const std::vector<EnergyResult>& results) {
     }
   }
   return s;
+}
+
+std::string writeEnergyPage(const BakeRequest& req, const std::vector<EnergyResult>& results) {
+  ReportPage page("brdfbake energy");
+  int violating = 0;
+  for (const EnergyResult& r : results) violating += r.violates;
+  page.heading(violating ? "Summary: " + std::to_string(violating) + " of " + std::to_string(results.size()) + " material(s) VIOLATE"
+                         : "Summary: all " + std::to_string(results.size()) + " material(s) conserve energy");
+  page.preformatted(formatEnergy(results));
+  std::string csv = "material,mu,r,param,channel,lobe1,lobe2,total,bound\n";
+  for (const EnergyResult& r : results)
+    for (const EnergyPoint& p : r.worst)
+      csv += "\"" + r.material + "\"," + fmt4(p.mu) + "," + fmt4(p.r) + "," + (std::isnan(p.param) ? "" : fmt4(p.param)) + "," +
+             std::to_string(p.channel) + "," + fmt4(p.spec) + "," + fmt4(p.diffuse) + "," + fmt4(p.total) + "," + fmt4(p.bound) + "\n";
+  page.data("energy.csv", csv);
+  // the white furnace of each pair the materials use, as `brdfbake render` draws it
+  FurnaceFigures figures(req.device);
+  for (int ndf : req.ndfs)
+    for (int gaf : req.gafs)
+      if (pairSupported(ndf, gaf)) {
+        page.heading(ndfNames()[static_cast<size_t>(ndf)] + "+" + gafNames()[static_cast<size_t>(gaf)] + ": the white furnace");
+        figures.add(page, ndf, gaf);
+      }
+  return page.write(req.outDir + "/energy");
 }
 
 }  // namespace brdfbake

@@ -33,5 +33,8 @@ struct EnergyResult {
 std::vector<EnergyResult> checkEnergy(const BakeRequest& req);
 // The verdict lines and the table of worst points.
 std::string formatEnergy(const std::vector<EnergyResult>& results);
+// The page <outDir>/energy/index.html: the verdicts, energy.csv (the worst points) and the white
+// furnace of each pair (report/furnace_figure.h). Returns the line saying where it is.
+std::string writeEnergyPage(const BakeRequest& req, const std::vector<EnergyResult>& results);
 
 }  // namespace brdfbake

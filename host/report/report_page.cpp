@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "common/errors.h"
+#include "formats/commit_record.h"
 
 namespace fs = std::filesystem;
 
@@ -23,6 +24,7 @@ std::string escape(const std::string& s) {
     if (c == '<') o += "&lt;";
     else if (c == '>') o += "&gt;";
     else if (c == '&') o += "&amp;";
+    else if (c == '"') o += "&quot;";
     else o += c;
   }
   return o;
@@ -77,21 +79,32 @@ bool ReportPage::gnuplotAvailable() {
   return false;
 }
 
-void ReportPage::heading(const std::string& text) { items_.push_back({Item::Heading, text, "", ""}); }
-void ReportPage::paragraph(const std::string& text) { items_.push_back({Item::Paragraph, text, "", ""}); }
-void ReportPage::preformatted(const std::string& text) { items_.push_back({Item::Pre, text, "", ""}); }
+void ReportPage::heading(const std::string& text) { items_.push_back({Item::Heading, text, "", "", {}}); }
+void ReportPage::paragraph(const std::string& text) { items_.push_back({Item::Paragraph, text, "", "", {}}); }
+void ReportPage::preformatted(const std::string& text) { items_.push_back({Item::Pre, text, "", "", {}}); }
 void ReportPage::data(const std::string& fileName, const std::string& csv) {
-  items_.push_back({Item::Data, fileName, csv, ""});
+  items_.push_back({Item::Data, fileName, csv, "", {}});
 }
 void ReportPage::plot(const std::string& plotName, const std::string& script, const std::string& caption) {
-  items_.push_back({Item::Plot, plotName, script, caption});
+  items_.push_back({Item::Plot, plotName, script, caption, {}});
+}
+void ReportPage::image(const std::string& fileName, const std::string& caption,
+                       std::function<void(const std::string&)> write) {
+  items_.push_back({Item::Image, fileName, "", caption, std::move(write)});
 }
 
 std::string ReportPage::write(const std::string& dirName) const {
   fs::path dir(dirName);
-  fs::path tmp = dir.parent_path() / ("." + dir.filename().string() + ".tmp-" + std::to_string(getpid()));
+  const fs::path parent = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
+  fs::path tmp = parent / ("." + dir.filename().string() + ".tmp-" + std::to_string(getpid()));
   std::error_code ec;
-  fs::remove_all(tmp, ec);
+  fs::create_directories(parent, ec);
+  if (ec) throw Error(kExitCantCreat, "cannot create " + parent.string() + ": " + ec.message());
+  // the whole write under the parent's lock (the bakes' lock): a bake there sweeps temporaries
+  // under it, so it never sees this one half-written, and sweeps one a killed run left; two runs
+  // writing the same page each land whole, the later one last
+  DirLock lock(parent.string(), true);
+  recoverDirectory(parent.string());
   fs::create_directories(tmp, ec);
   if (ec) throw Error(kExitCantCreat, "cannot create " + tmp.string() + ": " + ec.message());
   bool gnuplot = gnuplotAvailable();
@@ -109,6 +122,11 @@ std::string ReportPage::write(const std::string& dirName) const {
         case Item::Data:
           writeFile(tmp / it.a, it.b);
           html += "<p>data: <a href=\"" + escape(it.a) + "\">" + escape(it.a) + "</a></p>\n";
+          break;
+        case Item::Image:
+          it.write((tmp / it.a).string());
+          html += "<figure><img src=\"" + escape(it.a) + "\" alt=\"" + escape(it.c) + "\"><figcaption>" + escape(it.c) +
+                  "</figcaption></figure>\n";
           break;
         case Item::Plot: {
           std::string script = "set terminal svg size 800,560 dynamic enhanced font 'sans,12'\nset output '" + it.a +

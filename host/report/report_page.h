@@ -4,6 +4,7 @@
 // the plots and a line that says how to get them. The directory lands whole: it is written under a
 // temporary name beside its target and renamed at the end.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,8 @@ class ReportPage {
   // A plot: `script` is gnuplot commands that read data files by name and draw to the output the
   // page sets (SVG, `plotName`.svg); it appears on the page with its caption.
   void plot(const std::string& plotName, const std::string& script, const std::string& caption);
+  // An image file (a render's PNG) that `write` makes at the path it is given, shown with its caption.
+  void image(const std::string& fileName, const std::string& caption, std::function<void(const std::string&)> write);
 
   // Writes everything into `dir` (replacing a previous run's), runs gnuplot when it is on PATH.
   // Returns a line for the terminal: where the page is, or how to get the plots.
@@ -31,8 +34,9 @@ class ReportPage {
 
  private:
   struct Item {
-    enum Kind { Heading, Paragraph, Pre, Data, Plot } kind;
+    enum Kind { Heading, Paragraph, Pre, Data, Plot, Image } kind;
     std::string a, b, c;
+    std::function<void(const std::string&)> write;  // Image
   };
   std::string title_;
   std::vector<Item> items_;

@@ -7,6 +7,7 @@
 #include "common/errors.h"
 #include "common/format.h"
 #include "common/models.h"
+#include "report/furnace_figure.h"
 #include "report/report_page.h"
 #include "tables/registry.h"
 
@@ -41,6 +42,11 @@ std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine
             "'' using 1:2 with points pt 7 title 'error', '' using 1:($4 < 1 ? $2 : 1/0) with points pt 6 ps 2 "
             "lc rgb 'red' title 'fails'",
             "Errors below the steps are within their claim.");
+  // the white furnace of the request's pairs, as `brdfbake render` draws it
+  FurnaceFigures figures(req.device);
+  for (int ndf : req.ndfs)
+    for (int gaf : req.gafs)
+      if (pairSupported(ndf, gaf)) figures.add(page, ndf, gaf);
   *pageLine = page.write(req.outDir + "/stress");
   return pts;
 }

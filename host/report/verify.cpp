@@ -18,6 +18,7 @@
 #include "common/format.h"
 #include "common/models.h"
 #include "reference/reference.h"
+#include "report/furnace_figure.h"
 #include "report/report_page.h"
 
 namespace brdfbake {
@@ -287,6 +288,7 @@ std::vector<VerifyResult> runVerify(const BakeRequest& req, std::string* pageLin
                       : "Summary: all " + std::to_string(out.size()) + " pair(s) pass");
   page.preformatted(summary);
   page.paragraph(checksText);
+  FurnaceFigures figures(req.device);
   for (size_t i = 0; i < out.size(); ++i) {
     const VerifyResult& res = out[i];
     page.heading(pairName(res.ndf, res.gaf));
@@ -297,6 +299,8 @@ std::vector<VerifyResult> runVerify(const BakeRequest& req, std::string* pageLin
     for (const auto& c : res.checks)
       lines += (c.applies ? (c.pass ? "pass  " : "FAIL  ") : "n/a   ") + c.name + ": " + c.detail + "\n";
     page.preformatted(lines);
+    std::fprintf(stderr, "verify: rendering %s's white furnace (%zu/%zu)\n", pairName(res.ndf, res.gaf).c_str(), i + 1, out.size());
+    figures.add(page, res.ndf, res.gaf);
   }
   std::string csv = "ndf,gaf,check,applies,pass,worst,where\n";
   for (const auto& r : out)
