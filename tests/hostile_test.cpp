@@ -127,8 +127,8 @@ TEST(Hostile, MerlFileWithoutMeasurementsIsRefused) {
 
 // Errors name the option as it was spelt.
 TEST(Hostile, ErrorsNameTheOptionAsSpelt) {
-  expectRefused(run("energy -o x"), 64, "-o: not an energy option", "energy -o");
-  expectRefused(run("energy --output x"), 64, "--output: not an energy option", "energy --output");
+  expectRefused(run("devices -o x"), 64, "-o: not a devices option", "devices -o");
+  expectRefused(run("devices --output x"), 64, "--output: not a devices option", "devices --output");
 }
 
 // Presets never overwrite each other: each preset's file carries its name; info names the preset;
