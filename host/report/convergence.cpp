@@ -110,8 +110,10 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
             " using 1:2 with lines dt 2 lc " + std::to_string(mi + 1) + " title 'estimated'";
   }
   page.plot("convergence", plot, "Solid: true error against the reference; dashed: the method's own estimate.");
-  // the white furnace of the measured pair, as `brdfbake render` draws it from the tables it bakes
-  if (req.merl.empty() && req.ndfs.size() == 1 && req.gafs.size() == 1 && pairSupported(req.ndfs[0], req.gafs[0]))
+  // the white furnace of the measured pair, as `brdfbake render` draws it, for the tables it
+  // samples (the split sum, the albedos, the rough dielectric's)
+  if (furnaceSamples(tableName(kind)) && req.merl.empty() && req.ndfs.size() == 1 && req.gafs.size() == 1 &&
+      pairSupported(req.ndfs[0], req.gafs[0]))
     FurnaceFigures(req.device).add(page, req.ndfs[0], req.gafs[0]);
   *pageLine = page.write(req.outDir + "/convergence");
   return res;

@@ -35,6 +35,12 @@ struct ScratchDir {
 
 }  // namespace
 
+bool furnaceSamples(const std::string& kind) {
+  for (const char* k : {"splitsum", "albedo", "albedo-avg", "dielectric", "dielectric-avg"})
+    if (kind == k) return true;
+  return false;
+}
+
 FurnaceFigures::FurnaceFigures(std::string device) : device_(std::move(device)) {}
 FurnaceFigures::~FurnaceFigures() = default;
 

@@ -14,6 +14,10 @@ namespace brdfbake {
 
 class GlContext;
 
+// Whether the furnace reads a table of this kind (its name: "splitsum", ...): the split sum, the
+// albedos and the rough dielectric's tables, which the pages' renders then concern.
+bool furnaceSamples(const std::string& kind);
+
 class FurnaceFigures {
  public:
   explicit FurnaceFigures(std::string device);
