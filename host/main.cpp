@@ -74,7 +74,8 @@ int main(int argc, char** argv) {
       case Command::Kind::Energy: {
         if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
         std::vector<EnergyResult> res = checkEnergy(cmd.bake);
-        std::cout << formatEnergy(res) << writeEnergyPage(cmd.bake, res);
+        // the gate stays a fraction of a second; its page, with a GL render per pair, on request
+        std::cout << formatEnergy(res) << (cmd.outputGiven ? writeEnergyPage(cmd.bake, res) : std::string());
         for (const auto& r : res)
           if (r.violates) return 1;  // a build gates on this
         return kExitOk;

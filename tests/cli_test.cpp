@@ -463,6 +463,13 @@ TEST(CliMaterials, EnergyWritesItsPageWithTheFurnace) {
             std::string::npos);
   EXPECT_EQ(bytes(d / "energy/render_ggx_smith-correlated.png").substr(1, 3), "PNG");
   brdfbake::testing_browser::expectPageWorks(d / "energy/index.html", fs::path(d.string() + "-browser"), 1);
+  // without -o the gate writes nothing
+  fs::path quiet = freshDir("energynopage");
+  fs::create_directories(quiet);
+  r = run("energy --size 5", quiet.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(r.out.find("report:"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::is_empty(quiet));
 }
 
 TEST(CliMaterials, EnergyGateExitStatuses) {

@@ -201,6 +201,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       once(opt, "--output");
       req.outDir = value();
       if (req.outDir.empty()) throw Error(kExitUsage, opt + ": empty directory name");
+      cmd.outputGiven = true;
     } else if (opt == "--no-wait") {
       once(opt, opt);
       req.noWait = true;

@@ -23,6 +23,7 @@ struct Command {
   std::string helpFor;             // Help: the command whose help to print ("" = the overview)
   bool timings = false;            // Bake, SceneBake: --timings (each stage's seconds on stderr)
   bool quiet = false;              // Bake, SceneBake: --quiet (no progress line)
+  bool outputGiven = false;        // -o DIR given (energy writes its page only then)
 };
 
 // Throws Error(kExitUsage) with a message naming the option and the accepted values.

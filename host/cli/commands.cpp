@@ -58,8 +58,8 @@ std::vector<CommandInfo> makeCommands() {
        "plan writes nothing; the tables come from the scene"},
       {"energy", kCmdEnergy, "brdfbake energy [options]",
        "does a whole material conserve energy? the worst total albedo over (mu, r, parameter)",
-       "Exit 0 if the material conserves energy, 1 if it does not; writes no tables, and a page with\n"
-       "the worst points and each pair's white furnace render to DIR/energy (default out/energy).",
+       "Exit 0 if the material conserves energy, 1 if it does not; writes no tables. With -o DIR, also\n"
+       "a page with the worst points and each pair's white furnace render in DIR/energy.",
        {"brdfbake energy --fresnel conductor --eta 0.2 --k 3 --diffuse burley",
         "brdfbake energy --transmission --fresnel dielectric --eta 1.5"},
        "energy writes no tables: its page goes to -o DIR"},

@@ -34,7 +34,9 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req);
 // The verdict lines and the table of worst points.
 std::string formatEnergy(const std::vector<EnergyResult>& results);
 // The page <outDir>/energy/index.html: the verdicts, energy.csv (the worst points) and the white
-// furnace of each pair (report/furnace_figure.h). Returns the line saying where it is.
+// furnace of each pair (report/furnace_figure.h). Returns the line saying where it is. `brdfbake
+// energy` writes it only with -o: the gate alone takes 0.07 to 0.09 s, with the page 1.1 to 1.7 s
+// (the render's bakes and GL), for the default pair on 2 cores.
 std::string writeEnergyPage(const BakeRequest& req, const std::vector<EnergyResult>& results);
 
 }  // namespace brdfbake
