@@ -22,7 +22,7 @@ mutation() {
                    "Render.FurnaceRowsVanish" ;;
     render-glass) set -- "$1" host/render/furnace.cpp 'v = vec3(glassE(mu, r));' 'v = vec3(glassE(mu, r) * 1.001);' \
                     "Render.FurnaceRowsVanish" ;;
-    glass-eta-axis) set -- "$1" host/shader/shader_gen.cpp 's += "  float s = (eta - 1.0) / (eta + 1.0);\n";' \
+    glass-eta-axis) set -- "$1" host/shader/atlas_lookups.cpp 's += "  float s = (eta - 1.0) / (eta + 1.0);\n";' \
                       's += "  float s = (eta - 1.0) / (eta + 1.5);\n";' "GlPipeline.GeneratedGlslSamplesTheDielectricTablesByEta" ;;
     *) return 64 ;;
   esac

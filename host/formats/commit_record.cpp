@@ -175,6 +175,12 @@ void recoverDirectory(const std::string& dir) {
     // a report page's temporary is a directory (report/report_page.h), a table's a file
     struct stat st {};
     if (::lstat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+      // only a page's own directory name: a user's `.x.tmp-1` directory is not ours to remove
+      const std::string base = p.substr(p.find_last_of('/') + 1);
+      bool page = false;
+      for (const char* name : {".verify.tmp-", ".stress.tmp-", ".convergence.tmp-", ".energy.tmp-"})
+        page = page || base.rfind(name, 0) == 0;
+      if (!page) continue;
       std::error_code ec;
       std::filesystem::remove_all(p, ec);
       if (ec) throw Error(kExitIoErr, "cannot remove " + p + " (a temporary a killed run left): " + ec.message());

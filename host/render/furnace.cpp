@@ -139,6 +139,7 @@ std::vector<float> dispatch(const GlContext& gl, GLuint prog, int W, int H, cons
   const GlFunctions& g = gl.gl();
   g.UseProgram(prog);
   int unit = 0;
+  std::vector<GLuint> ids;  // deleted after the read-back: one context serves every page's pairs
   for (const auto& [t, uniform] : tex) {
     // RGBA32F, bilinear, clamped: what the generated code expects
     std::vector<float> rgba(static_cast<size_t>(t->width) * t->height * 4, 1.0f);
@@ -147,6 +148,7 @@ std::vector<float> dispatch(const GlContext& gl, GLuint prog, int W, int H, cons
     GLuint id = 0;
     g.GenTextures(1, &id);
     g.ActiveTexture(GL_TEXTURE0 + unit);
+    ids.push_back(id);
     g.BindTexture(GL_TEXTURE_2D, id);
     g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, t->width, t->height, 0, GL_RGBA, GL_FLOAT, rgba.data());
     g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -171,6 +173,9 @@ std::vector<float> dispatch(const GlContext& gl, GLuint prog, int W, int H, cons
   if (!mapped) throw Error(kExitSoftware, "render: could not read the pixels back (GL error " + std::to_string(g.GetError()) + ")");
   std::vector<float> px(mapped, mapped + n * 4);
   g.UnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+  g.DeleteBuffers(1, &buf);
+  g.DeleteTextures(static_cast<GLsizei>(ids.size()), ids.data());
+  g.DeleteProgram(prog);
   return px;
 }
 

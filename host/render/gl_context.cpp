@@ -80,6 +80,9 @@ GlContext::GlContext() {
   BRDFBAKE_GL(MapBufferRange);
   BRDFBAKE_GL(UnmapBuffer);
   BRDFBAKE_GL(Finish);
+  BRDFBAKE_GL(DeleteTextures);
+  BRDFBAKE_GL(DeleteBuffers);
+  BRDFBAKE_GL(DeleteProgram);
 #undef BRDFBAKE_GL
   const char* ext = reinterpret_cast<const char*>(gl_.GetString(GL_EXTENSIONS));
   if (!ext || !std::strstr(ext, "GL_OES_texture_float_linear"))

@@ -44,6 +44,9 @@ struct GlFunctions {
   PFNGLMAPBUFFERRANGEPROC MapBufferRange;
   PFNGLUNMAPBUFFERPROC UnmapBuffer;
   PFNGLFINISHPROC Finish;
+  PFNGLDELETETEXTURESPROC DeleteTextures;
+  PFNGLDELETEBUFFERSPROC DeleteBuffers;
+  PFNGLDELETEPROGRAMPROC DeleteProgram;
 };
 
 class GlContext {

@@ -74,9 +74,16 @@ bool FurnaceFigures::add(ReportPage& page, int ndf, int gaf) {
     page.paragraph("Furnace render: not drawn, no OpenGL ES device: " + unavailable_);
     return true;
   }
-  ScratchDir dir;
-  const FurnaceTables tables = bakeFurnaceTables(spec, dir.path, device_, false);
-  const FurnacePicture pic = renderFurnace(*gl_, spec, tables);
+  FurnacePicture pic;
+  try {
+    ScratchDir dir;
+    const FurnaceTables tables = bakeFurnaceTables(spec, dir.path, device_, false);
+    pic = renderFurnace(*gl_, spec, tables);
+  } catch (const Error& e) {
+    // the report's verdict does not depend on the render: say why it is missing, keep the page
+    page.paragraph("Furnace render of " + pair + ": not drawn: " + e.what());
+    return false;
+  }
   std::string rowNames;
   for (int k : spec.rows) rowNames += (rowNames.empty() ? "" : ", ") + furnaceRows()[static_cast<size_t>(k)].name;
   const std::string file = "render_" + ndfNames()[static_cast<size_t>(ndf)] + "_" + gafNames()[static_cast<size_t>(gaf)] + ".png";
