@@ -141,20 +141,7 @@ std::vector<float> dispatch(const GlContext& gl, GLuint prog, int W, int H, cons
   int unit = 0;
   std::vector<GLuint> ids;  // deleted after the read-back: one context serves every page's pairs
   for (const auto& [t, uniform] : tex) {
-    // RGBA32F, bilinear, clamped: what the generated code expects
-    std::vector<float> rgba(static_cast<size_t>(t->width) * t->height * 4, 1.0f);
-    for (size_t i = 0; i < static_cast<size_t>(t->width) * t->height; ++i)
-      for (size_t c = 0; c < t->planes.size() && c < 4; ++c) rgba[i * 4 + c] = t->planes[c][i];
-    GLuint id = 0;
-    g.GenTextures(1, &id);
-    g.ActiveTexture(GL_TEXTURE0 + unit);
-    ids.push_back(id);
-    g.BindTexture(GL_TEXTURE_2D, id);
-    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, t->width, t->height, 0, GL_RGBA, GL_FLOAT, rgba.data());
-    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    ids.push_back(bindTableTexture(gl, *t, unit));
     const GLint loc = g.GetUniformLocation(prog, uniform.c_str());
     if (loc >= 0) g.Uniform1i(loc, unit);
     ++unit;
@@ -180,6 +167,23 @@ std::vector<float> dispatch(const GlContext& gl, GLuint prog, int W, int H, cons
 }
 
 }  // namespace
+
+GLuint bindTableTexture(const GlContext& gl, const Table& t, int unit) {
+  const GlFunctions& g = gl.gl();
+  std::vector<float> rgba(static_cast<size_t>(t.width) * t.height * 4, 1.0f);
+  for (size_t i = 0; i < static_cast<size_t>(t.width) * t.height; ++i)
+    for (size_t c = 0; c < t.planes.size() && c < 4; ++c) rgba[i * 4 + c] = t.planes[c][i];
+  GLuint id = 0;
+  g.GenTextures(1, &id);
+  g.ActiveTexture(GL_TEXTURE0 + unit);
+  g.BindTexture(GL_TEXTURE_2D, id);
+  g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, t.width, t.height, 0, GL_RGBA, GL_FLOAT, rgba.data());
+  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return id;
+}
 
 const std::vector<FurnaceRow>& furnaceRows() {
   static const std::vector<FurnaceRow> rows = {
@@ -267,23 +271,23 @@ FurnaceTables bakeFurnaceTables(const FurnaceSpec& s, const std::string& dir, co
     r.etaRange = std::make_pair((1 + lo) / (1 - lo), (1 + hi) / (1 - hi));
     t.glass = bakeOne(r, "dielectric");
   }
+  for (const std::string& p : t.all()) t.read[p] = readTable(p);
   return t;
 }
 
 FurnacePicture renderFurnace(const GlContext& gl, const FurnaceSpec& s, const FurnaceTables& t) {
-  std::map<std::string, Table> tables;
-  for (const std::string& p : t.all()) tables[p] = readTable(p);
-  const double dE = t.albedo.empty() ? 0 : budgetOf(tables[t.albedo]);
-  const double dAvg = t.albedoAvg.empty() ? 0 : budgetOf(tables[t.albedoAvg]);
-  const double dSplit = t.splitsum.empty() ? 0 : budgetOf(tables[t.splitsum]);
+  const std::map<std::string, Table>& tables = t.read;
+  const double dE = t.albedo.empty() ? 0 : budgetOf(tables.at(t.albedo));
+  const double dAvg = t.albedoAvg.empty() ? 0 : budgetOf(tables.at(t.albedoAvg));
+  const double dSplit = t.splitsum.empty() ? 0 : budgetOf(tables.at(t.splitsum));
   // the glass row: never above 1 by more than the table's claim and the float lerp's rounding
-  const double dGlass = t.glass.empty() ? 0 : std::stod(tables[t.glass].metadata.at("brdf.error")) + 1e-6;
+  const double dGlass = t.glass.empty() ? 0 : std::stod(tables.at(t.glass).metadata.at("brdf.error")) + 1e-6;
   const GLuint prog = gl.computeProgram(furnaceSource(s, t, dE, dAvg));
   std::vector<std::pair<const Table*, std::string>> bind;
   for (const std::string* p : {&t.splitsum, &t.albedo, &t.albedoAvg})
-    if (!p->empty()) bind.push_back({&tables[*p], shaderPrefix(*p) + "_tex"});
-  if (!t.sheen.empty()) bind.push_back({&tables[t.sheen], "sheen_tex"});
-  if (!t.glass.empty()) bind.push_back({&tables[t.glass], "glass_tex"});
+    if (!p->empty()) bind.push_back({&tables.at(*p), shaderPrefix(*p) + "_tex"});
+  if (!t.sheen.empty()) bind.push_back({&tables.at(t.sheen), "sheen_tex"});
+  if (!t.glass.empty()) bind.push_back({&tables.at(t.glass), "glass_tex"});
   const int nrows = static_cast<int>(s.rows.size()), W = s.columns * s.cell, H = nrows * s.cell;
   const std::vector<float> px = dispatch(gl, prog, W, H, bind);
 

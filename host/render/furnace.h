@@ -5,9 +5,11 @@
 // interpolation errors predict, the single-scattering row must match the independent reference's
 // E(n.v, r), the glass row must never exceed 1. `brdfbake render` and the report pages draw it.
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
+#include "brdfbake/brdfbake.h"
 #include "render/gl_context.h"
 
 namespace brdfbake {
@@ -34,9 +36,10 @@ struct FurnaceSpec {
   int glassMu = 32, glassR = 16;  // the glass row's table: texels over mu and r (one eta slice)
 };
 
-// The files the rows sample (empty: not needed).
+// The files the rows sample (empty: not needed), and each read back as an engine loads it.
 struct FurnaceTables {
   std::string splitsum, albedo, albedoAvg, sheen, glass;
+  std::map<std::string, Table> read;  // by path
   std::vector<std::string> all() const;
 };
 // Bakes what the rows need into `dir` as `brdfbake bake` does (one locked, atomic set per request):
@@ -56,6 +59,10 @@ struct FurnacePicture {
   std::string renderer;                 // GL_RENDERER
   bool fail = false;                    // a measured row has pixels past their bound
 };
+// The table as an RGBA32F texture on texture unit `unit`, bilinear and clamped to the edge: what
+// the generated lookup code expects. The caller deletes the returned texture.
+GLuint bindTableTexture(const GlContext& gl, const Table& t, int unit);
+
 // Renders and measures. Error(kExitSoftware) for a pixel that is not finite.
 FurnacePicture renderFurnace(const GlContext& gl, const FurnaceSpec& s, const FurnaceTables& t);
 

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 
 #include "brdfbake/brdfbake.h"
 #include "common/errors.h"
@@ -53,22 +52,10 @@ void main() {
 )glsl";
   const GLuint prog = gl.computeProgram(src);
   g.UseProgram(prog);
-  std::map<std::string, Table> tables;
+  std::vector<GLuint> textures;
   int unit = 0;
   for (const std::string& p : paths) {
-    const Table& tb = tables[p] = readTable(p);
-    std::vector<float> rgba(static_cast<size_t>(tb.width) * tb.height * 4, 1.0f);
-    for (size_t i = 0; i < static_cast<size_t>(tb.width) * tb.height; ++i)
-      for (size_t c = 0; c < tb.planes.size() && c < 4; ++c) rgba[i * 4 + c] = tb.planes[c][i];
-    GLuint id = 0;
-    g.GenTextures(1, &id);
-    g.ActiveTexture(GL_TEXTURE0 + unit);
-    g.BindTexture(GL_TEXTURE_2D, id);
-    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, tb.width, tb.height, 0, GL_RGBA, GL_FLOAT, rgba.data());
-    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    textures.push_back(bindTableTexture(gl, t.read.at(p), unit));
     const GLint loc = g.GetUniformLocation(prog, (shaderPrefix(p) + "_tex").c_str());
     if (loc >= 0) g.Uniform1i(loc, unit);
     ++unit;
@@ -89,6 +76,9 @@ void main() {
   if (!lm) throw Error(kExitSoftware, "render: could not read the lobe picture back (GL error " + std::to_string(g.GetError()) + ")");
   std::vector<float> lobe(lm, lm + ln);
   g.UnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+  g.DeleteBuffers(2, buf);
+  g.DeleteTextures(static_cast<GLsizei>(textures.size()), textures.data());
+  g.DeleteProgram(prog);
   LobePicture out;
   out.img.width = LW;
   out.img.height = LH;

@@ -96,11 +96,12 @@ bool FurnaceFigures::add(ReportPage& page, int ndf, int gaf) {
       {"render.renderer", pic.renderer},
       {"render.generator", "brdfbake (report page)"}};
   const int W = pic.width, H = pic.height;
-  const std::vector<std::vector<float>> rgb = pic.rgb;
   page.image(file,
              "White furnace, " + pair + ": rows " + rowNames + "; roughness 0 to 1 across; shaded on " + pic.renderer +
                  " by the generated lookups of the baked tables (rows that conserve vanish into the background)",
-             [W, H, rgb, text](const std::string& path) { writePng8SrgbTemporary(path, path, W, H, rgb, text); });
+             [W, H, rgb = std::move(pic.rgb), text](const std::string& path) {
+               writePng8SrgbTemporary(path, path, W, H, rgb, text);
+             });
   page.preformatted(furnaceTable(spec, pic) + (pic.fail ? "FAIL: a row's pixels are off by more than the tables predict\n"
                                                         : "every measured pixel within its bound (docs/reports.md)\n"));
   return !pic.fail;
