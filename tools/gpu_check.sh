@@ -9,6 +9,18 @@
 #                             that machine's EGL when it has one (NVIDIA's through glvnd)
 # run points OCL_ICD_VENDORS at the machine's libnvidia-opencl.so.1 and HOME at an empty directory.
 set -u
+step() { echo; echo "=== $* ($(date +%T))"; }
+# the carried binaries and libraries, NVIDIA's OpenCL through the ICD loader, an empty HOME in /tmp
+nvidia_setup() {
+  G=$PWD/build/gpu
+  export LD_LIBRARY_PATH=$G/lib
+  NV=$(ldconfig -p | awk '/libnvidia-opencl.so.1/{print $NF; exit}')
+  [ -z "$NV" ] && NV=$(find / -name 'libnvidia-opencl.so.1*' -not -path '/proc/*' 2>/dev/null | head -1)
+  mkdir -p /tmp/icd && echo "$NV" > /tmp/icd/nvidia.icd
+  export OCL_ICD_VENDORS=/tmp/icd
+  step driver; echo "$NV"; nvidia-smi -L
+  cd /tmp && export HOME=/tmp/home && mkdir -p "$HOME"
+}
 case "${1:-}" in
   pack)
     rm -rf build/gpu && mkdir -p build/gpu/lib
@@ -19,15 +31,7 @@ case "${1:-}" in
     done
     du -sh build/gpu ;;
   run)
-    G=$PWD/build/gpu
-    export LD_LIBRARY_PATH=$G/lib
-    NV=$(ldconfig -p | awk '/libnvidia-opencl.so.1/{print $NF; exit}')
-    [ -z "$NV" ] && NV=$(find / -name 'libnvidia-opencl.so.1*' -not -path '/proc/*' 2>/dev/null | head -1)
-    mkdir -p /tmp/icd && echo "$NV" > /tmp/icd/nvidia.icd
-    export OCL_ICD_VENDORS=/tmp/icd
-    step() { echo; echo "=== $* ($(date +%T))"; }
-    step driver; echo "$NV"; nvidia-smi -L; nproc
-    cd /tmp && export HOME=/tmp/home && mkdir -p "$HOME"
+    nvidia_setup; nproc
     step devices; timeout 60 "$G/brdfbake" devices
     step "default set: first run (cold: NVIDIA compiles), then two warm runs"
     for i in 1 2 3; do /usr/bin/time -f "%e s wall" timeout 120 "$G/brdfbake" bake --timings -o "d$i"; done
@@ -44,15 +48,7 @@ case "${1:-}" in
   render)
     # the short check: the default set warm, and `brdfbake render` and verify's page on the
     # machine's own EGL (NVIDIA's through glvnd when it is there) against the same OpenCL device
-    G=$PWD/build/gpu
-    export LD_LIBRARY_PATH=$G/lib
-    NV=$(ldconfig -p | awk '/libnvidia-opencl.so.1/{print $NF; exit}')
-    [ -z "$NV" ] && NV=$(find / -name 'libnvidia-opencl.so.1*' -not -path '/proc/*' 2>/dev/null | head -1)
-    mkdir -p /tmp/icd && echo "$NV" > /tmp/icd/nvidia.icd
-    export OCL_ICD_VENDORS=/tmp/icd
-    step() { echo; echo "=== $* ($(date +%T))"; }
-    step driver; echo "$NV"; nvidia-smi -L
-    cd /tmp && export HOME=/tmp/home && mkdir -p "$HOME"
+    nvidia_setup
     step "default set: first run, then two warm runs"
     for i in 1 2 3; do /usr/bin/time -f "%e s wall" timeout 120 "$G/brdfbake" bake --timings -o "d$i" 2>&1 | tail -9; done
     step "EGL on this machine"
