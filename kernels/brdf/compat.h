@@ -113,6 +113,7 @@ using std::exp;
 using std::expm1;
 using std::fabs;
 using std::floor;
+using std::fma;
 using std::fmax;
 using std::fmin;
 using std::log;

@@ -48,11 +48,22 @@ BRDF_FN real gaf_schlick_k(int gaf, real r, real alpha) {
   return RC(0.0);
 }
 
+/* The view's c Lambda = (n.o) Lambda(o) that the GAF's G uses, 0 for the GAFs without one: the
+ * NDF's Smith Lambda, its exact one (ndf_cLambda_exact) or charlie's fit. */
+BRDF_FN real gaf_view_cLambda(int gaf, int ndf, BrdfParams p, real no, real s2o) {
+  if (gaf == GAF_CHARLIE_SMITH) return ndf_cLambda(NDF_CHARLIE, p, no, s2o);
+  if (gaf == GAF_SMITH || gaf == GAF_SMITH_CORRELATED) return ndf_cLambda(ndf, p, no, s2o);
+  if (gaf == GAF_SMITH_EXACT || gaf == GAF_SMITH_CORRELATED_EXACT) return ndf_cLambda_exact(ndf, p, no, s2o);
+  return RC(0.0);
+}
+
 #endif /* !BRDF_LANE_PASS */
 
 BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, param_t no, real nh, real oh,
                            real s2i, param_t s2o) {
   real g;
+  /* the view's Lambda: one value for every lane (param_t), set once per texel by the estimators */
+  param_t clo = p.has_view ? p.view_cl : gaf_view_cLambda(gaf, ndf, p, no, s2o);
   if (gaf == GAF_NONE) {
     /* Ward: G = 1 */
     g = RC(1.0) / no;
@@ -76,21 +87,21 @@ BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, param_t no, 
   } else if (gaf == GAF_CHARLIE_SMITH) {
     /* Estevez and Kulla 2017: height-correlated 1/(1 + Lambda_i + Lambda_o) with their fitted
      * Lambda (ndf.h charlie_lambda), times ni/ni as smith-correlated */
-    g = ni / (ni * no + no * ndf_cLambda(NDF_CHARLIE, p, ni, s2i) + ni * ndf_cLambda(NDF_CHARLIE, p, no, s2o));
+    g = ni / (ni * no + no * ndf_cLambda(NDF_CHARLIE, p, ni, s2i) + ni * clo);
   } else if (gaf == GAF_SCHLICK_BECKMANN || gaf == GAF_SCHLICK_GGX || gaf == GAF_SCHLICK_GGX_DIRECT) {
     /* Schlick 1994: g(x) = x/(x(1-k)+k); G = g(n.i) g(n.o) */
     param_t k = p.k;
     g = ni / (ni * (RC(1.0) - k) + k) / (no * (RC(1.0) - k) + k);
   } else if (gaf == GAF_SMITH) {
     /* separable Smith: G1(i) G1(o), G1(v)/(n.v) = 1/(n.v + n.v Lambda(v)) */
-    g = ni / ((ni + ndf_cLambda(ndf, p, ni, s2i)) * (no + ndf_cLambda(ndf, p, no, s2o)));
+    g = ni / ((ni + ndf_cLambda(ndf, p, ni, s2i)) * (no + clo));
   } else if (gaf == GAF_SMITH_EXACT) {
-    g = ni / ((ni + ndf_cLambda_exact(ndf, p, ni, s2i)) * (no + ndf_cLambda_exact(ndf, p, no, s2o)));
+    g = ni / ((ni + ndf_cLambda_exact(ndf, p, ni, s2i)) * (no + clo));
   } else if (gaf == GAF_SMITH_CORRELATED_EXACT) {
-    g = ni / (ni * no + no * ndf_cLambda_exact(ndf, p, ni, s2i) + ni * ndf_cLambda_exact(ndf, p, no, s2o));
+    g = ni / (ni * no + no * ndf_cLambda_exact(ndf, p, ni, s2i) + ni * clo);
   } else {
     /* height-correlated Smith (Heitz 2014): 1/(1 + Lambda_i + Lambda_o), times ni/ni */
-    g = ni / (ni * no + no * ndf_cLambda(ndf, p, ni, s2i) + ni * ndf_cLambda(ndf, p, no, s2o));
+    g = ni / (ni * no + no * ndf_cLambda(ndf, p, ni, s2i) + ni * clo);
   }
   /* chi+: nothing where i is below the surface or h faces away from o (selected, not branched,
    * so that the same code serves one value and a lane vector) */
