@@ -63,6 +63,7 @@ BRDF_FN BrdfParams brdf_params_kp(int gaf, real r, real inv_kp) {
   p.fr_y = RC(0.0);
   p.has_view = 0;
   p.view_cl = RC(0.0);
+  p.smith_col = 0;
   return p;
 }
 

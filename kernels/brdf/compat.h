@@ -77,6 +77,16 @@ static inline __attribute__((overloadable)) float16 tab_at(constant float* t, fl
   return (float16)(t[k.s0], t[k.s1], t[k.s2], t[k.s3], t[k.s4], t[k.s5], t[k.s6], t[k.s7], t[k.s8], t[k.s9],
                    t[k.sa], t[k.sb], t[k.sc], t[k.sd], t[k.se], t[k.sf]);
 }
+/* the same from a private array (ndf.h smith_column) */
+static inline __attribute__((overloadable)) float tab_at(const float* t, float i) { return t[(int)i]; }
+#if BRDF_REAL_IS_DOUBLE
+static inline __attribute__((overloadable)) double tab_at(const float* t, double i) { return (double)t[(int)i]; }
+#endif
+static inline __attribute__((overloadable)) float16 tab_at(const float* t, float16 i) {
+  int16 k = convert_int16(i);
+  return (float16)(t[k.s0], t[k.s1], t[k.s2], t[k.s3], t[k.s4], t[k.s5], t[k.s6], t[k.s7], t[k.s8], t[k.s9],
+                   t[k.sa], t[k.sb], t[k.sc], t[k.sd], t[k.se], t[k.sf]);
+}
 #else /* C++ host */
 #include <cmath>
 #define BRDF_FN static inline

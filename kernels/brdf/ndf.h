@@ -47,6 +47,9 @@ typedef struct BrdfParams {
    * does not recompute it at every node. has_view = 0: gaf_G_over_no computes it from its n.o. */
   int has_view;
   real view_cl;
+  /* The tabulated exact Lambda's correction interpolated along its alpha^2 axis at this alpha
+   * (smith_column, SMITH_NZ values), or 0: ndf_cLambda_exact then interpolates in both axes. */
+  const float* smith_col;
 } BrdfParams;
 #define HEMI_SPLIT 0
 #define HEMI_FRESNEL 1
@@ -194,19 +197,45 @@ BRDF_FN real ndf_cLambda(int ndf, BrdfParams p, real c, real s2) {
  *   c Lambda = c Lambda_beckmann + alpha^3 s V(z, alpha^2),  z = c/(c + alpha s) = b/(1 + b),
  * b = c/(alpha s) Beckmann's variable; V by 4-point Lagrange interpolation in both axes (the alpha^2
  * axis per texel, z per lane). The correction vanishes as alpha -> 0, where Beckmann's is exact. */
+#ifndef BRDF_LANE_PASS
+/* The 4-point Lagrange weights at t in [0, 3] (nodes 0, 1, 2, 3). */
+BRDF_FN void lagrange4(real t, real* w) {
+  w[0] = -(t - RC(1.0)) * (t - RC(2.0)) * (t - RC(3.0)) / RC(6.0);
+  w[1] = t * (t - RC(2.0)) * (t - RC(3.0)) / RC(2.0);
+  w[2] = -t * (t - RC(1.0)) * (t - RC(3.0)) / RC(2.0);
+  w[3] = t * (t - RC(1.0)) * (t - RC(2.0)) / RC(6.0);
+}
+/* The alpha^2 axis's first node and weights at p.alpha. */
+BRDF_FN int smith_row_weights(BrdfParams p, real* wy) {
+  real y = fmin(p.alpha * p.alpha, RC(1.0));
+  real uy = y * (SMITH_NY - 1);
+  real fy = fmin(fmax(floor(uy) - RC(1.0), RC(0.0)), (real)(SMITH_NY - 4));
+  lagrange4(uy - fy, wy);
+  return (int)fy;
+}
+/* The correction V(z, alpha^2) interpolated along alpha^2 at p.alpha, for every z node: the
+ * estimators fix alpha per texel, so each lane then interpolates in z alone (4 gathers instead
+ * of 16). Measured: half the kernel time of gaussian + smith-exact's split sum went to the
+ * 16 gathers (0.39 s against 0.21 s for gaussian + smith). Returns col, or 0 where the pair's
+ * Lambda is not tabulated. */
+BRDF_FN const float* smith_column(int ndf, BrdfParams p, float* col) {
+  if (ndf != NDF_BLINN_PHONG && ndf != NDF_GAUSSIAN) return 0;
+  BRDF_TABLE float* tab = ndf == NDF_BLINN_PHONG ? smith_tab_blinn_phong : smith_tab_gaussian;
+  real wy[4];
+  int fy = smith_row_weights(p, wy);
+  for (int i = 0; i < SMITH_NZ; ++i) {
+    real v = RC(0.0);
+    for (int j = 0; j < 4; ++j) v += wy[j] * (real)tab[(fy + j) * SMITH_NZ + i];
+    col[i] = (float)v;
+  }
+  return col;
+}
+#endif
+
 BRDF_FN real ndf_cLambda_exact(int ndf, BrdfParams p, real c, real s2) {
   real beck = ndf_cLambda(ndf, p, c, s2);
   if (ndf != NDF_BLINN_PHONG && ndf != NDF_GAUSSIAN) return beck;
-  BRDF_TABLE float* tab = ndf == NDF_BLINN_PHONG ? smith_tab_blinn_phong : smith_tab_gaussian;
   param_t y = fmin(p.alpha * p.alpha, RC(1.0));
-  param_t uy = y * (SMITH_NY - 1);
-  param_t fy = fmin(fmax(floor(uy) - RC(1.0), RC(0.0)), (param_t)(SMITH_NY - 4));
-  param_t ty = uy - fy;
-  param_t wy[4];
-  wy[0] = -(ty - RC(1.0)) * (ty - RC(2.0)) * (ty - RC(3.0)) / RC(6.0);
-  wy[1] = ty * (ty - RC(2.0)) * (ty - RC(3.0)) / RC(2.0);
-  wy[2] = -ty * (ty - RC(1.0)) * (ty - RC(3.0)) / RC(2.0);
-  wy[3] = ty * (ty - RC(1.0)) * (ty - RC(2.0)) / RC(6.0);
   real s = sqrt(s2);
   real den = c + p.alpha * s;
   real z = den > RC(0.0) ? c / den : RC(1.0);
@@ -218,11 +247,21 @@ BRDF_FN real ndf_cLambda_exact(int ndf, BrdfParams p, real c, real s2) {
   real wz1 = tz * (tz - RC(2.0)) * (tz - RC(3.0)) / RC(2.0);
   real wz2 = -tz * (tz - RC(1.0)) * (tz - RC(3.0)) / RC(2.0);
   real wz3 = tz * (tz - RC(1.0)) * (tz - RC(2.0)) / RC(6.0);
-  real v = RC(0.0);
-  for (int j = 0; j < 4; ++j) {
-    real k = fz + (fy + (param_t)j) * SMITH_NZ;
-    v += wy[j] * (wz0 * tab_at(tab, k) + wz1 * tab_at(tab, k + RC(1.0)) + wz2 * tab_at(tab, k + RC(2.0)) +
-                  wz3 * tab_at(tab, k + RC(3.0)));
+  real v;
+  if (p.smith_col) {
+    const float* col = p.smith_col;
+    v = wz0 * tab_at(col, fz) + wz1 * tab_at(col, fz + RC(1.0)) + wz2 * tab_at(col, fz + RC(2.0)) +
+        wz3 * tab_at(col, fz + RC(3.0));
+  } else {
+    BRDF_TABLE float* tab = ndf == NDF_BLINN_PHONG ? smith_tab_blinn_phong : smith_tab_gaussian;
+    param_t wy[4];
+    int fy = smith_row_weights(p, wy);
+    v = RC(0.0);
+    for (int j = 0; j < 4; ++j) {
+      real k = fz + (real)((fy + j) * SMITH_NZ);
+      v += wy[j] * (wz0 * tab_at(tab, k) + wz1 * tab_at(tab, k + RC(1.0)) + wz2 * tab_at(tab, k + RC(2.0)) +
+                    wz3 * tab_at(tab, k + RC(3.0)));
+    }
   }
   return beck + p.alpha * y * s * v;
 }

@@ -177,7 +177,8 @@ BRDF_FN HemiResult hemi_rule_peaked(int ndf, int gaf, BrdfParams p, real mu, int
   res.err_a = 0;
   res.err_b = 0;
   real s = sqrt((RC(1.0) - mu) * (RC(1.0) + mu));
-  p = hemi_view(ndf, gaf, p, mu, s);
+  float col[SMITH_NZ];
+  p = hemi_view(ndf, gaf, p, mu, s, col);
   if (p.alpha <= RC(0.0)) {
     /* alpha = 0: the NDF is a delta at h = n, so E = (G/no) F (o.h)/(n.h) at the mirror direction. */
     BrdfAngle h;

@@ -21,7 +21,10 @@
  * o = (s, 0, mu), so its Lambda is computed once here instead of at every hemi_node call. With
  * the Beckmann Lambda (erfc and exp), recomputing it at each call took a third of the kernel time
  * of beckmann + smith's 128^2 split sum (perf, 2 cores). */
-BRDF_FN BrdfParams hemi_view(int ndf, int gaf, BrdfParams p, param_t mu, param_t s) {
+/* col: room for SMITH_NZ values, the tabulated exact Lambda's column at this alpha
+ * (ndf.h smith_column), which p then points to for the texel's lifetime. */
+BRDF_FN BrdfParams hemi_view(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, float* col) {
+  if (gaf_lambda_tabulated(ndf, gaf)) p.smith_col = smith_column(ndf, p, col);
   p.view_cl = gaf_view_cLambda(gaf, ndf, p, mu, s * s);
   p.has_view = 1;
   return p;

@@ -55,7 +55,7 @@ BRDF_FN HemiResult sheen_moments(int gaf, BrdfParams p, real mu, int refine) {
   if (p.alpha <= RC(0.0)) return res;
   const int ndf = NDF_CHARLIE;
   real s = sqrt((RC(1.0) - mu) * (RC(1.0) + mu));
-  p = hemi_view(ndf, gaf, p, mu, s);
+  p = hemi_view(ndf, gaf, p, mu, s, 0); /* charlie's Lambda is not tabulated */
   real t1 = mu / (RC(1.0) + s);
   real ie = ndf_charlie_inv_e(p);
   real v2 = log1p(t1 * t1) / ie;
