@@ -129,9 +129,11 @@ BRDF_FN real charlie_L(param_t alpha, real x) {
   return a / (RC(1.0) + b * exp(cc * log(x))) + d * x + e;
 }
 BRDF_FN real charlie_lambda(param_t alpha, real c) {
-  real lo = exp(charlie_L(alpha, c));
-  real hi = exp(RC(2.0) * charlie_L(alpha, RC(0.5)) - charlie_L(alpha, RC(1.0) - c));
-  return c < RC(0.5) ? lo : hi;
+  /* one L per value: its argument chosen first (lanes compute both sides of a select, and the
+   * two L calls cost 4 of the 5 transcendental calls) */
+  real l = charlie_L(alpha, c < RC(0.5) ? c : RC(1.0) - c);
+  param_t lh = RC(2.0) * charlie_L(alpha, (param_t)RC(0.5));
+  return exp(c < RC(0.5) ? l : lh - l);
 }
 
 /* cos(theta_v) * Lambda(v) for a direction v with cos c >= 0, sin^2 s2.
