@@ -24,11 +24,20 @@ mutation() {
                     "Render.FurnaceRowsVanish" ;;
     glass-eta-axis) set -- "$1" host/shader/atlas_lookups.cpp 's += "  float s = (eta - 1.0) / (eta + 1.0);\n";' \
                       's += "  float s = (eta - 1.0) / (eta + 1.5);\n";' "GlPipeline.GeneratedGlslSamplesTheDielectricTablesByEta" ;;
+    beckmann-fit) set -- "$1" kernels/brdf/ndf.h 'RC(0.56851845943975654)' 'RC(0.5685)' \
+                    "FloatForms.BeckmannLambda" ;;
+    beckmann-compensation) set -- "$1" kernels/brdf/ndf.h '* (RC(1.0) + RC(2.0) * d);' ';' \
+                             "FloatForms.BeckmannLambdaRoundingIsCompensated" ;;
+    cos-arc) set -- "$1" kernels/integrate/azimuth.h 'RC(-0.16666666592166149)' 'RC(-0.1666667)' \
+               "FloatForms.CosArc" ;;
+    view-once) set -- "$1" kernels/integrate/integrand.h 'p.view_cl = gaf_view_cLambda(gaf, ndf, p, mu, s * s);' \
+                 'p.view_cl = gaf_view_cLambda(gaf, ndf, p, mu, s);' "FloatForms.ViewSetOncePerTexel" ;;
     *) return 64 ;;
   esac
   run_one "$@"
 }
-names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis"
+names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis
+       beckmann-fit beckmann-compensation cos-arc view-once"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
