@@ -67,26 +67,25 @@ typedef float acc_t;
 #endif
 #define BRDF_CONST constant
 #define BRDF_TABLE constant /* a parameter pointing into a BRDF_CONST table */
-/* tab_at(tab, i): tab[i] for an index held in a real (an integer value), gathered lane by lane */
-static inline __attribute__((overloadable)) float tab_at(constant float* t, float i) { return t[(int)i]; }
+/* tab_at(tab, i): tab[i] for an index held in a real (an integer value), gathered lane by lane;
+ * for tables in constant memory and for private arrays (ndf.h smith_column), one definition per
+ * address space */
 #if BRDF_REAL_IS_DOUBLE
-static inline __attribute__((overloadable)) double tab_at(constant float* t, double i) { return (double)t[(int)i]; }
+#define BRDF_TAB_AT_DOUBLE(PTR) \
+  static inline __attribute__((overloadable)) double tab_at(PTR t, double i) { return (double)t[(int)i]; }
+#else
+#define BRDF_TAB_AT_DOUBLE(PTR)
 #endif
-static inline __attribute__((overloadable)) float16 tab_at(constant float* t, float16 i) {
-  int16 k = convert_int16(i);
-  return (float16)(t[k.s0], t[k.s1], t[k.s2], t[k.s3], t[k.s4], t[k.s5], t[k.s6], t[k.s7], t[k.s8], t[k.s9],
-                   t[k.sa], t[k.sb], t[k.sc], t[k.sd], t[k.se], t[k.sf]);
-}
-/* the same from a private array (ndf.h smith_column) */
-static inline __attribute__((overloadable)) float tab_at(const float* t, float i) { return t[(int)i]; }
-#if BRDF_REAL_IS_DOUBLE
-static inline __attribute__((overloadable)) double tab_at(const float* t, double i) { return (double)t[(int)i]; }
-#endif
-static inline __attribute__((overloadable)) float16 tab_at(const float* t, float16 i) {
-  int16 k = convert_int16(i);
-  return (float16)(t[k.s0], t[k.s1], t[k.s2], t[k.s3], t[k.s4], t[k.s5], t[k.s6], t[k.s7], t[k.s8], t[k.s9],
-                   t[k.sa], t[k.sb], t[k.sc], t[k.sd], t[k.se], t[k.sf]);
-}
+#define BRDF_TAB_AT(PTR)                                                                                     \
+  static inline __attribute__((overloadable)) float tab_at(PTR t, float i) { return t[(int)i]; }              \
+  BRDF_TAB_AT_DOUBLE(PTR)                                                                                     \
+  static inline __attribute__((overloadable)) float16 tab_at(PTR t, float16 i) {                              \
+    int16 k = convert_int16(i);                                                                               \
+    return (float16)(t[k.s0], t[k.s1], t[k.s2], t[k.s3], t[k.s4], t[k.s5], t[k.s6], t[k.s7], t[k.s8], t[k.s9], \
+                     t[k.sa], t[k.sb], t[k.sc], t[k.sd], t[k.se], t[k.sf]);                                   \
+  }
+BRDF_TAB_AT(constant float*)
+BRDF_TAB_AT(const float*)
 #else /* C++ host */
 #include <cmath>
 #define BRDF_FN static inline
