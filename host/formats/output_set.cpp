@@ -6,16 +6,12 @@
 #include <sys/statvfs.h>
 #include <unistd.h>
 
-#include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <exception>
 #include <memory>
-#include <mutex>
 #include <thread>
 
 #include "common/errors.h"
@@ -84,40 +80,6 @@ bool isDir(const std::string& p, bool* exists) {
 void cleanUp(const std::vector<std::string>& temps, const std::vector<std::string>& created) {
   for (const auto& t : temps) ::unlink(t.c_str());
   for (auto it = created.rbegin(); it != created.rend(); ++it) ::rmdir(it->c_str());
-}
-
-// The image files' temporaries, on two threads where the machine has two cores: each file is
-// encoded and synced on its own, so the bytes do not depend on the order. Measured on every pair's
-// bake (160 EXR files, 2 cores): the write stage 0.42 s on one thread (`brdfbake bake --timings`).
-// The first error is rethrown after both threads finish.
-void writeImages(const std::vector<OutputFile>& files, const std::vector<std::string>& temps) {
-  std::vector<size_t> todo;
-  for (size_t k = 0; k < files.size(); ++k)
-    if (!files[k].write) todo.push_back(k);
-  auto one = [&](size_t k) { writeTableExrTemporary(temps[k], files[k].path, *files[k].image, files[k].half); };
-  const unsigned threads = std::min(2u, std::max(1u, std::thread::hardware_concurrency()));
-  if (todo.size() < 2 || threads < 2) {
-    for (size_t k : todo) one(k);
-    return;
-  }
-  std::atomic<size_t> next{0};
-  std::exception_ptr first;
-  std::mutex m;
-  auto worker = [&] {
-    for (size_t i; (i = next.fetch_add(1)) < todo.size();) {
-      try {
-        one(todo[i]);
-      } catch (...) {
-        std::lock_guard<std::mutex> g(m);
-        if (!first) first = std::current_exception();
-        next = todo.size();  // the others stop at their next file
-      }
-    }
-  };
-  std::thread helper(worker);
-  worker();
-  helper.join();
-  if (first) std::rethrow_exception(first);
 }
 
 }  // namespace
@@ -277,7 +239,10 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
     // the writers in order (they may share a device or a stream), then the images
     for (size_t k = 0; k < files.size(); ++k)
       if (files[k].write) files[k].write(temps[k]);
-    writeImages(files, temps);
+    std::vector<ExrTemporary> images;
+    for (size_t k = 0; k < files.size(); ++k)
+      if (!files[k].write) images.push_back({temps[k], files[k].path, files[k].image, files[k].half});
+    writeTableExrTemporaries(images);
   } catch (const Error& e) {
     lock.reset();  // its holder line goes first, so that a directory we created is empty again
     cleanUp(temps, created);

@@ -17,9 +17,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
+#include <exception>
+#include <mutex>
+#include <thread>
 
 #include "common/errors.h"
 #include "formats/commit_record.h"
@@ -212,6 +216,33 @@ void writeTableExrRowsTemporary(const std::string& tmp, const std::string& path,
   if (const int err = guard.close())
     throw Error(kExitIoErr, "cannot write " + path + ": close: " + errnoText(err));
   guard.release();
+}
+
+void writeTableExrTemporaries(const std::vector<ExrTemporary>& files) {
+  auto one = [&](size_t k) { writeTableExrTemporary(files[k].tmp, files[k].path, *files[k].image, files[k].half); };
+  const unsigned threads = std::min(2u, std::max(1u, std::thread::hardware_concurrency()));
+  if (files.size() < 2 || threads < 2) {
+    for (size_t k = 0; k < files.size(); ++k) one(k);
+    return;
+  }
+  std::atomic<size_t> next{0};
+  std::exception_ptr first;
+  std::mutex m;
+  auto worker = [&] {
+    for (size_t i; (i = next.fetch_add(1)) < files.size();) {
+      try {
+        one(i);
+      } catch (...) {
+        std::lock_guard<std::mutex> g(m);
+        if (!first) first = std::current_exception();
+        next = files.size();  // the other thread stops at its next file
+      }
+    }
+  };
+  std::thread helper(worker);
+  worker();
+  helper.join();
+  if (first) std::rethrow_exception(first);
 }
 
 }  // namespace brdfbake

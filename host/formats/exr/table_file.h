@@ -45,6 +45,16 @@ void writeTableExr(const std::string& path, const TableImage& img, bool half);
 // validates, writes `tmp` (the temporary for `path`, named in messages) and fsyncs it; no rename.
 // On failure `tmp` is removed and Error is thrown as above.
 void writeTableExrTemporary(const std::string& tmp, const std::string& path, const TableImage& img, bool half);
+// The same for several files, on two threads where the machine has two cores: each file is encoded
+// and synced on its own, so the bytes do not depend on the order. Measured on every pair's bake
+// (160 files, 2 cores): 0.21 s against 0.42 s on one thread (`brdfbake bake --timings`, write).
+// The first Error is rethrown after both threads finish; the caller removes the temporaries.
+struct ExrTemporary {
+  std::string tmp, path;
+  const TableImage* image;
+  bool half;
+};
+void writeTableExrTemporaries(const std::vector<ExrTemporary>& files);
 // The same for a table written in blocks of rows, never whole in memory (3D tables): `meta` has
 // the size, channels and attributes (its planes unused); fill(y0, rows, planes) puts rows
 // y0 .. y0 + rows - 1 of every channel in planes[c] (rows * width values), block after block.
