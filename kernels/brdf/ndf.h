@@ -129,8 +129,9 @@ BRDF_FN real charlie_L(param_t alpha, real x) {
   return a / (RC(1.0) + b * exp(cc * log(x))) + d * x + e;
 }
 BRDF_FN real charlie_lambda(param_t alpha, real c) {
-  /* one L per value: its argument chosen first (lanes compute both sides of a select, and the
-   * two L calls cost 4 of the 5 transcendental calls) */
+  /* one L per value, its argument chosen first (lanes compute both sides of a select): two
+   * transcendental calls per lane instead of eight; charlie + charlie-smith's split sum 0.52 s
+   * against 0.57 s (brdfbake bake --timings) */
   real l = charlie_L(alpha, c < RC(0.5) ? c : RC(1.0) - c);
   param_t lh = RC(2.0) * charlie_L(alpha, (param_t)RC(0.5));
   return exp(c < RC(0.5) ? l : lh - l);
@@ -200,14 +201,14 @@ BRDF_FN real ndf_cLambda(int ndf, BrdfParams p, real c, real s2) {
  *   c Lambda = c Lambda_beckmann + alpha^3 s V(z, alpha^2),  z = c/(c + alpha s) = b/(1 + b),
  * b = c/(alpha s) Beckmann's variable; V by 4-point Lagrange interpolation in both axes (the alpha^2
  * axis per texel, z per lane). The correction vanishes as alpha -> 0, where Beckmann's is exact. */
-#ifndef BRDF_LANE_PASS
-/* The 4-point Lagrange weights at t in [0, 3] (nodes 0, 1, 2, 3). */
+/* The 4-point Lagrange weights at t in [0, 3] (nodes 0, 1, 2, 3); per lane in the lane pass. */
 BRDF_FN void lagrange4(real t, real* w) {
   w[0] = -(t - RC(1.0)) * (t - RC(2.0)) * (t - RC(3.0)) / RC(6.0);
   w[1] = t * (t - RC(2.0)) * (t - RC(3.0)) / RC(2.0);
   w[2] = -t * (t - RC(1.0)) * (t - RC(3.0)) / RC(2.0);
   w[3] = t * (t - RC(1.0)) * (t - RC(2.0)) / RC(6.0);
 }
+#ifndef BRDF_LANE_PASS
 /* The alpha^2 axis's first node and weights at p.alpha. */
 BRDF_FN int smith_row_weights(BrdfParams p, real* wy) {
   real y = fmin(p.alpha * p.alpha, RC(1.0));
@@ -218,9 +219,9 @@ BRDF_FN int smith_row_weights(BrdfParams p, real* wy) {
 }
 /* The correction V(z, alpha^2) interpolated along alpha^2 at p.alpha, for every z node: the
  * estimators fix alpha per texel, so each lane then interpolates in z alone (4 gathers instead
- * of 16). Measured: half the kernel time of gaussian + smith-exact's split sum went to the
- * 16 gathers (0.39 s against 0.21 s for gaussian + smith). Returns col, or 0 where the pair's
- * Lambda is not tabulated. */
+ * of 16). Measured: gaussian + smith-exact's 128^2 split-sum kernel 0.24 s with the column,
+ * 0.39 s without (brdfbake-bench --times-only --pair gaussian+smith-exact). Returns col, or 0
+ * where the pair's Lambda is not tabulated. */
 BRDF_FN const float* smith_column(int ndf, BrdfParams p, float* col) {
   if (ndf != NDF_BLINN_PHONG && ndf != NDF_GAUSSIAN) return 0;
   BRDF_TABLE float* tab = ndf == NDF_BLINN_PHONG ? smith_tab_blinn_phong : smith_tab_gaussian;
@@ -245,16 +246,13 @@ BRDF_FN real ndf_cLambda_exact(int ndf, BrdfParams p, real c, real s2) {
   z = fmin(fmax(z, RC(0.0)), RC(1.0));
   real uz = z * (SMITH_NZ - 1);
   real fz = fmin(fmax(floor(uz) - RC(1.0), RC(0.0)), (real)(SMITH_NZ - 4));
-  real tz = uz - fz;
-  real wz0 = -(tz - RC(1.0)) * (tz - RC(2.0)) * (tz - RC(3.0)) / RC(6.0);
-  real wz1 = tz * (tz - RC(2.0)) * (tz - RC(3.0)) / RC(2.0);
-  real wz2 = -tz * (tz - RC(1.0)) * (tz - RC(3.0)) / RC(2.0);
-  real wz3 = tz * (tz - RC(1.0)) * (tz - RC(2.0)) / RC(6.0);
+  real wz[4];
+  lagrange4(uz - fz, wz);
   real v;
   if (p.smith_col) {
     const float* col = p.smith_col;
-    v = wz0 * tab_at(col, fz) + wz1 * tab_at(col, fz + RC(1.0)) + wz2 * tab_at(col, fz + RC(2.0)) +
-        wz3 * tab_at(col, fz + RC(3.0));
+    v = wz[0] * tab_at(col, fz) + wz[1] * tab_at(col, fz + RC(1.0)) + wz[2] * tab_at(col, fz + RC(2.0)) +
+        wz[3] * tab_at(col, fz + RC(3.0));
   } else {
     BRDF_TABLE float* tab = ndf == NDF_BLINN_PHONG ? smith_tab_blinn_phong : smith_tab_gaussian;
     param_t wy[4];
@@ -262,8 +260,8 @@ BRDF_FN real ndf_cLambda_exact(int ndf, BrdfParams p, real c, real s2) {
     v = RC(0.0);
     for (int j = 0; j < 4; ++j) {
       real k = fz + (real)((fy + j) * SMITH_NZ);
-      v += wy[j] * (wz0 * tab_at(tab, k) + wz1 * tab_at(tab, k + RC(1.0)) + wz2 * tab_at(tab, k + RC(2.0)) +
-                    wz3 * tab_at(tab, k + RC(3.0)));
+      v += wy[j] * (wz[0] * tab_at(tab, k) + wz[1] * tab_at(tab, k + RC(1.0)) + wz[2] * tab_at(tab, k + RC(2.0)) +
+                    wz[3] * tab_at(tab, k + RC(3.0)));
     }
   }
   return beck + p.alpha * y * s * v;
