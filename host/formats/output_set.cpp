@@ -236,12 +236,12 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
       ::sigprocmask(SIG_SETMASK, &prev, nullptr);
       temps.push_back(tmp);
     }
-    // the writers in order (they may share a device or a stream), then the images
-    for (size_t k = 0; k < files.size(); ++k)
-      if (files[k].write) files[k].write(temps[k]);
+    // the writers in order (they may share a device or a stream), then the images together
     std::vector<ExrTemporary> images;
-    for (size_t k = 0; k < files.size(); ++k)
-      if (!files[k].write) images.push_back({temps[k], files[k].path, files[k].image, files[k].half});
+    for (size_t k = 0; k < files.size(); ++k) {
+      if (files[k].write) files[k].write(temps[k]);
+      else images.push_back({temps[k], files[k].path, files[k].image, files[k].half});
+    }
     writeTableExrTemporaries(images);
   } catch (const Error& e) {
     lock.reset();  // its holder line goes first, so that a directory we created is empty again
