@@ -32,12 +32,15 @@ mutation() {
                "FloatForms.CosArc" ;;
     view-once) set -- "$1" kernels/integrate/integrand.h 'p.view_cl = gaf_view_cLambda(gaf, ndf, p, mu, s * s);' \
                  'p.view_cl = gaf_view_cLambda(gaf, ndf, p, mu, s);' "FloatForms.ViewSetOncePerTexel" ;;
+    polynomial-arc) set -- "$1" kernels/brdf/gaf.h 'gaf == GAF_NEUMANN || gaf == GAF_COOK_TORRANCE;' \
+                      'gaf == GAF_NEUMANN || gaf == GAF_COOK_TORRANCE || gaf == GAF_KELEMEN;' \
+                      "AllPairs/PairTest.*/ggx_kelemen" ;;
     *) return 64 ;;
   esac
   run_one "$@"
 }
 names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis
-       beckmann-fit beckmann-compensation cos-arc view-once"
+       beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"

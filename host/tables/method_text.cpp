@@ -30,7 +30,8 @@ std::string hemisphereMethod() {
          " and at the visible-domain limits, sqrt ends substituted), phi_h by " + std::to_string(HEMI_TRAP_N) +
          "-interval trapezoid on the full circle or GK15 per smooth arc (graded x" + fmtG(brdf64::kPhiGrow) +
          " towards the horizon from n.i = mu; Smith and Schlick GAFs x" + fmtG(brdf64::kPhiGrowOwn) +
-         " from n.i = 2 alpha); texels estimated above " + fmtG(HEMI_BAKE_TARGET) +
+         " from n.i = 2 alpha; none, implicit, neumann and cook-torrance, polynomial in cos phi between their kinks, "
+         "ungraded under Schlick's and F82's weights); texels estimated above " + fmtG(HEMI_BAKE_TARGET) +
          " redone with each outer panel cut at " + cuts + ", " + std::to_string(2 * HEMI_TRAP_N) +
          " trapezoid intervals, grading halved" +
          " and every arc panel halved; error: per texel, the rules' estimates (GK15: |K15-G7| rescaled as QUADPACK's "

@@ -215,6 +215,16 @@ BRDF_FN int gaf_root_at_normal(int gaf) { return gaf == GAF_NEUMANN; }
  * 0.01, where n.i stays in the x^c layer over much of the arc), with it by 3e-12. */
 BRDF_FN int gaf_root_at_horizon(int gaf) { return gaf == GAF_CHARLIE_SMITH; }
 
+/* Whether (G/n.o) (o.h) is a polynomial in n.i and o.h on each piece between the kinks of
+ * gaf_kinks: none (1/n.o), implicit (n.i), neumann (n.i/n.o or 1), cook-torrance (o.h, 2 c n.o or
+ * 2 c n.i, over n.o). Both are linear in cos(phi), so with a polynomial weight (Schlick's, F82's)
+ * the azimuth integrand is a polynomial of degree <= 8 in cos(phi) on each piece, which GK15
+ * integrates to rounding on any arc of length <= pi: nothing changes on the scale n.i ~ mu at i's
+ * horizon and the arcs need no grading there (azimuth.h hemi_phi). */
+BRDF_FN int gaf_polynomial_arc(int gaf) {
+  return gaf == GAF_NONE || gaf == GAF_IMPLICIT || gaf == GAF_NEUMANN || gaf == GAF_COOK_TORRANCE;
+}
+
 /* Whether H = (G/n.o) F (o.h)/(n.h) stays large at i's horizon on the scale of the view's own
  * cut: `none` (G/n.o = 1/n.o) and kelemen (1/(o.h)^2, with o.h = mu/(2 c) at the horizon). Where
  * mu << alpha, the arc of h with n.i > 0 shrinks from the whole circle (theta_h <= theta_1, tan
