@@ -37,6 +37,10 @@
 //               ggx+smith-correlated, beckmann+smith, ggx+schlick-ggx, blinn-phong+implicit,
 //               gaussian+smith-correlated-exact) baked as brdfbake bakes it, brdf.error and each
 //               texel's claim against the true error. host/bench/bounds_bench.cpp.
+//   --probe-span [--pair NDF+GAF]... [--size N]: the interpolation probe with its quarter-texel
+//               steps over six texels of mu against kProbeMuTexels (tables/interp_probe.h), on
+//               every pair's split sum (both mu axes) and 32^2 albedo. host/bench/probe_bench.cpp.
+//               ~1 minute.
 //   --dielectric [--mc-log2 K]: the 32^3 rough-dielectric table (ggx + smith-correlated) timed
 //               against a 2^K-sample Monte Carlo per cell (default K = 23, Cycles' budget) on 27
 //               cells, scaled; both against the o-space reference. host/bench/dielectric_bench.cpp.
@@ -83,6 +87,7 @@ int dielectricAvgBench(KernelRunner& runner, int n, int ndf, int gaf);  // diele
 int merlBench(const std::string& file, int size);                       // merl_bench.cpp
 int commitBench(const std::string& device, int repeat);                 // commit_bench.cpp
 int allPairs(const std::string& device, int n, int stride, const std::vector<std::pair<int, int>>& only);  // pairs_bench.cpp
+int probeSpanBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& only, int n);  // probe_bench.cpp
 int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pairs, int size, int stride,
                 const std::string& csv);  // bounds_bench.cpp
 }
@@ -252,6 +257,7 @@ int main(int argc, char** argv) {
   std::string device;
   bool timesOnly = false, everyPair = false, avgCheck = false, cold = false, skipAll = false, strideSet = false;
   bool materials = false, volume = false, dielectric = false, bounds = false, dielectricAvg = false, sizeSet = false;
+  bool probeSpan = false;
   std::vector<std::pair<int, int>> pairs;
   std::string csv;
   int mcLog2 = 23;
@@ -278,6 +284,7 @@ int main(int argc, char** argv) {
     else if (a == "--dielectric") dielectric = true;
     else if (a == "--dielectric-avg") dielectricAvg = true;
     else if (a == "--bounds") bounds = true;
+    else if (a == "--probe-span") probeSpan = true;
     else if (a == "--merl") merlFile = next();
     else if (a == "--commit") commit = true;
     else if (a == "--csv") csv = next();
@@ -320,6 +327,7 @@ int main(int argc, char** argv) {
                  {NDF_BLINN_PHONG, GAF_IMPLICIT}, {NDF_GAUSSIAN, GAF_SMITH_CORRELATED_EXACT}};
       return boundsBench(runner, pairs, n, stride, csv);
     }
+    if (probeSpan) return probeSpanBench(runner, pairs, n);
     if (dielectric) return dielectricBench(runner, std::max(1, std::min(mcLog2, 24)));
     if (dielectricAvg) {
       const int nd = pairs.empty() ? NDF_GGX : pairs[0].first, gf = pairs.empty() ? GAF_SMITH_CORRELATED : pairs[0].second;

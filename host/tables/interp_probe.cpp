@@ -29,7 +29,7 @@ std::vector<ProbePlane> probePlanes(const TableJob& job) {
 }
 
 double probeInterpolation(KernelRunner& runner, const TableJob& job, const TableImage& img,
-                          const std::vector<ProbePlane>& planes) {
+                          const std::vector<ProbePlane>& planes, int muTexels) {
   const int nx = img.width, ny = img.height;
   if (nx < 2 || ny < 2 || job.ndf < 0) return 0;
   // the probe points (mu, r), as floats the device evaluates
@@ -44,7 +44,7 @@ double probeInterpolation(KernelRunner& runner, const TableJob& job, const Table
   for (int k = 0; k <= static_cast<int>(std::ceil(rMax * 2 * ny)); ++k) {
     double r = std::min(1.0, k / (2.0 * ny));
     std::vector<double> mus;
-    for (int q = 1; q <= 4 * std::min(6, nx); ++q) {  // quarter-texel steps of the x coordinate
+    for (int q = 1; q <= 4 * std::min(muTexels, nx); ++q) {  // quarter-texel steps of the x coordinate
       double u = q / (4.0 * nx);
       mus.push_back(job.muSqrt ? u * u : u);
     }

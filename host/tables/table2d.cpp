@@ -13,12 +13,6 @@
 
 namespace brdfbake {
 
-namespace {
-// brdf.interp-error: the larger of the estimate from the texels and the probes' largest lookup
-// error with this margin (the probes sample the wedge near the corner, not its every point)
-constexpr double kProbeMargin = 1.5;
-}  // namespace
-
 std::string modelsOf(const TableJob& job) {
   if (job.ndf < 0) return diffuseNames()[job.diffuse];
   return ndfNames()[job.ndf] + "+" + gafNames()[job.gaf];
