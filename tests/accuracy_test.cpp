@@ -290,6 +290,41 @@ TEST(SharedProgram, SameBitsAsEachPairsOwnProgram) {
 }  // namespace
 
 namespace {
+// A bake's runner keeps its launches' results (KernelRunner::setReuse): a launch that repeats one,
+// the GAF through gaf_canonical, returns the same bits as running it would (ggx + smith-exact's
+// tables are ggx + smith's), and one with any other argument runs.
+TEST(KernelReuse, RepeatsReturnWhatRunningGives) {
+  KernelRunner plain(selectDevice("").device), kept(selectDevice("").device);
+  kept.setReuse(true);
+  auto same = [](const KernelTable& a, const KernelTable& b) {
+    if (a.planes.size() != b.planes.size() || a.err != b.err) return false;
+    for (size_t c = 0; c < a.planes.size(); ++c)
+      if (std::memcmp(a.planes[c].data(), b.planes[c].data(), a.planes[c].size() * sizeof(float)) != 0) return false;
+    return true;
+  };
+  for (int ndf : {NDF_GGX, NDF_BECKMANN}) {
+    KernelTable first = kept.hemisphere(ndf, GAF_SMITH, 6, 5, false);
+    EXPECT_TRUE(same(first, plain.hemisphere(ndf, GAF_SMITH, 6, 5, false)));
+    EXPECT_TRUE(same(kept.hemisphere(ndf, GAF_SMITH_EXACT, 6, 5, false), plain.hemisphere(ndf, GAF_SMITH_EXACT, 6, 5, false)));
+    EXPECT_TRUE(same(kept.albedoAvg(ndf, GAF_SMITH_CORRELATED_EXACT, 4, false),
+                     plain.albedoAvg(ndf, GAF_SMITH_CORRELATED_EXACT, 4, false)));
+  }
+  // other arguments run: another size, another weight, a tabulated exact Lambda
+  EXPECT_TRUE(same(kept.hemisphere(NDF_GGX, GAF_SMITH, 5, 5, false), plain.hemisphere(NDF_GGX, GAF_SMITH, 5, 5, false)));
+  HemiWeight glass;
+  glass.moments = HEMI_FRESNEL;
+  glass.fresnel = FRESNEL_DIELECTRIC;
+  glass.x = 1.5f;
+  EXPECT_TRUE(same(kept.hemisphere(NDF_GGX, GAF_SMITH, 6, 5, false, glass),
+                   plain.hemisphere(NDF_GGX, GAF_SMITH, 6, 5, false, glass)));
+  EXPECT_FALSE(same(kept.hemisphere(NDF_GGX, GAF_SMITH, 6, 5, false, glass), kept.hemisphere(NDF_GGX, GAF_SMITH, 6, 5, false)));
+  kept.hemisphere(NDF_BLINN_PHONG, GAF_SMITH, 6, 5, false);
+  EXPECT_TRUE(same(kept.hemisphere(NDF_BLINN_PHONG, GAF_SMITH_EXACT, 6, 5, false),
+                   plain.hemisphere(NDF_BLINN_PHONG, GAF_SMITH_EXACT, 6, 5, false)));
+  EXPECT_FALSE(same(plain.hemisphere(NDF_BLINN_PHONG, GAF_SMITH, 6, 5, false),
+                    plain.hemisphere(NDF_BLINN_PHONG, GAF_SMITH_EXACT, 6, 5, false)));
+}
+
 // The sqrt(mu) x axis (Unity HDRP's newer FGD lookup): texel i of n holds the table at mu = u^2,
 // u = (i + 0.5)/n (texel centres) or i/(n - 1) (nodes), the same bits as a one-point evaluation
 // there, and the r axis is unchanged.

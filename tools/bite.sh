@@ -35,12 +35,16 @@ mutation() {
     polynomial-arc) set -- "$1" kernels/brdf/gaf.h 'gaf == GAF_NEUMANN || gaf == GAF_COOK_TORRANCE;' \
                       'gaf == GAF_NEUMANN || gaf == GAF_COOK_TORRANCE || gaf == GAF_KELEMEN;' \
                       "AllPairs/PairTest.*/ggx_kelemen" ;;
+    canonical-gaf) set -- "$1" kernels/brdf/gaf.h 'if (ndf != NDF_GGX && ndf != NDF_BECKMANN) return gaf;' \
+                     'if (ndf != NDF_GGX && ndf != NDF_BECKMANN && ndf != NDF_BLINN_PHONG) return gaf;' \
+                     "Gaf.CanonicalGivesTheSameBits|KernelReuse.RepeatsReturnWhatRunningGives" ;;
     *) return 64 ;;
   esac
   run_one "$@"
 }
 names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis
-       beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc"
+       beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
+       canonical-gaf"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"

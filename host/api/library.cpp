@@ -47,6 +47,7 @@ Table toTable(const Job& job, BakedTable baked) {
 std::vector<Table> bake(const BakeRequest& req) {
   Plan plan = makePlan(req);
   BakeContext ctx(plan.device, plan.observer);  // the observer hears of the device, programs and tables
+  ctx.reuseLaunches();
   preflight(ctx, plan, "");
   buildKernels(ctx, plan);
   if (plan.observer && ctx.hasRunner())

@@ -75,6 +75,7 @@ std::vector<TableReport> runPlan(const Plan& plan) {
   // or an interrupt leaves the file system as it was.
   checkOutputDir(plan.outDir);
   BakeContext ctx(plan.device, plan.observer);
+  ctx.reuseLaunches();
   BakeObserver* obs = plan.observer.get();
   preflight(ctx, plan, plan.outDir);
   const bool device = usesDevice(plan);

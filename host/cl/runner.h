@@ -14,6 +14,7 @@
 //    same in all of them), so a bake builds no program for it alone.
 #pragma once
 #include <CL/opencl.hpp>
+#include <deque>
 #include <functional>
 #include <mutex>
 #include <map>
@@ -111,6 +112,17 @@ class KernelRunner {
   // Whether the device has cl_khr_fp64 (the 3D and dielectric programs then compute in double).
   bool hasDouble() const { return fp64_; }
 
+  // Reuse within a bake: hemisphereRange and hemisphereNodes (and so hemisphere, albedoAvg and the
+  // interpolation probes) keep their results, and a later launch with the same arguments, the GAF
+  // taken through gaf_canonical (kernels/brdf/gaf.h), returns them instead of running again: the
+  // tables of ggx + smith-exact are those of ggx + smith. At most kReuseBytes are kept, the oldest
+  // dropped first. Off by default: timings and ladders run their launches again on purpose.
+  static constexpr size_t kReuseBytes = size_t(64) << 20;
+  void setReuse(bool on) {
+    reuse_ = on;
+    if (!on) kept_.clear(), keptBytes_ = 0;
+  }
+
   // Which program the integrator kernels (split sum, albedo, albedo-avg, k_p) of a pair run in:
   // Auto (default) builds each pair its own specialised program until a runner would hold
   // kSharedFrom of them, then one program for every pair, the pair an argument (builds in about
@@ -179,6 +191,9 @@ class KernelRunner {
   int pairPrograms() const;
   bool shareFor(int newPairs) const;
   void run(Compiled& c, cl::Kernel& k, size_t gx, size_t gy);
+  // the kept results of a launch (setReuse), by its arguments
+  const std::vector<std::vector<float>>* reused(const std::string& key) const;
+  void keep(const std::string& key, const std::vector<std::vector<float>>& planes);
   void runRows(Compiled& c, cl::Kernel& k, size_t gx, size_t gy);
 
   cl::Device device_;
@@ -196,6 +211,9 @@ class KernelRunner {
   std::string cacheDir_;  // Refresh: where binaries go
   mutable std::mutex eventsMutex_;  // builds run on several threads (prepareAll)
   std::vector<ProgramEvent> events_;
+  bool reuse_ = false;
+  std::deque<std::pair<std::string, std::vector<std::vector<float>>>> kept_;
+  size_t keptBytes_ = 0;
 };
 
 }  // namespace brdfbake

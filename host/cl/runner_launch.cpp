@@ -81,8 +81,51 @@ void setGridArgs(cl::Kernel& k, int first, int nx, int ny, float xLo, float xHi,
 }
 }  // namespace
 
+namespace {
+// A launch's arguments as bytes, the reuse key (setReuse): the kernel's tag, then each value.
+template <class... T>
+std::string launchKey(char tag, const T&... v) {
+  std::string k(1, tag);
+  (k.append(reinterpret_cast<const char*>(&v), sizeof v), ...);
+  return k;
+}
+std::string weightKey(const HemiWeight& w) { return launchKey('w', w.moments, w.fresnel, w.x, w.y); }
+}  // namespace
+
+const std::vector<std::vector<float>>* KernelRunner::reused(const std::string& key) const {
+  if (!reuse_) return nullptr;
+  for (const auto& [k, planes] : kept_)
+    if (k == key) return &planes;
+  return nullptr;
+}
+
+void KernelRunner::keep(const std::string& key, const std::vector<std::vector<float>>& planes) {
+  if (!reuse_) return;
+  size_t bytes = key.size();
+  for (const auto& p : planes) bytes += p.size() * sizeof(float);
+  if (bytes > kReuseBytes) return;
+  while (!kept_.empty() && keptBytes_ + bytes > kReuseBytes) {
+    size_t old = kept_.front().first.size();
+    for (const auto& p : kept_.front().second) old += p.size() * sizeof(float);
+    keptBytes_ -= old;
+    kept_.pop_front();
+  }
+  kept_.emplace_back(key, planes);
+  keptBytes_ += bytes;
+}
+
 KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, float muLo, float muHi, float rLo,
                                           float rHi, bool nodeGrid, const HemiWeight& w, int level, bool muSqrt) {
+  const std::string key = launchKey('h', ndf, brdf64::gaf_canonical(ndf, gaf), nx, ny, muLo, muHi, rLo, rHi, nodeGrid,
+                                    level, muSqrt) + weightKey(w);
+  if (const auto* kept = reused(key)) {
+    KernelTable t;
+    t.width = nx;
+    t.height = ny;
+    t.planes = {(*kept)[0], (*kept)[1], (*kept)[2]};
+    t.err = (*kept)[3];
+    return t;
+  }
   Compiled& c = compiled({ProgramKey::Integrators, ndf, gaf}, kHemisphere);
   Slot& s = *slots_[c.slot];
   size_t n = static_cast<size_t>(nx) * ny;
@@ -106,6 +149,7 @@ KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, floa
   t.height = ny;
   t.planes = {readBack(s.queue, a, n), readBack(s.queue, b, n), readBack(s.queue, e, n)};
   t.err = readBack(s.queue, err, n);
+  keep(key, {t.planes[0], t.planes[1], t.planes[2], t.err});
   return t;
 }
 
@@ -127,6 +171,9 @@ void setRArgs(cl::Kernel& k, const cl::Buffer& values, const cl::Buffer& bounds,
 // host/cl/runner_avg.cpp.
 std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, const std::vector<cl_float4>& nodes,
                                                               const HemiWeight& w, bool bare) {
+  std::string key = launchKey('n', ndf, brdf64::gaf_canonical(ndf, gaf), bare) + weightKey(w);
+  key.append(reinterpret_cast<const char*>(nodes.data()), nodes.size() * sizeof(cl_float4));
+  if (const auto* kept = reused(key)) return *kept;
   Compiled& c = compiled({ProgramKey::Integrators, ndf, gaf}, kHemisphere);
   Slot& s = *slots_[c.slot];
   size_t count = nodes.size();
@@ -146,8 +193,10 @@ std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, 
   k.setArg(17, in);
   setPairArgs(k, 18, ndf, gaf);
   run(c, k, count, 1);
-  return {readBack(s.queue, e, count), readBack(s.queue, err, count), readBack(s.queue, a, count),
-          readBack(s.queue, b, count)};
+  std::vector<std::vector<float>> out = {readBack(s.queue, e, count), readBack(s.queue, err, count),
+                                         readBack(s.queue, a, count), readBack(s.queue, b, count)};
+  keep(key, out);
+  return out;
 }
 
 KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid, float rLo, float rHi) {

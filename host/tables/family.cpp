@@ -17,6 +17,7 @@ KernelRunner& BakeContext::runner() {
   auto t0 = std::chrono::steady_clock::now();
   DeviceEntry dev = selectDevice(device_);
   runner_ = std::make_unique<KernelRunner>(dev.device);
+  runner_->setReuse(reuse_);
   if (observer_) {
     observer_->stage("device", dev.platform + ": " + dev.name,
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());

@@ -46,6 +46,12 @@ class BakeContext {
   BakeObserver* observer() const { return observer_.get(); }
   // The table the runner's long launches report progress for (its file).
   void working(const std::string& what);
+  // A bake's launches that repeat an earlier one return its results (KernelRunner::setReuse); the
+  // reports' and ladders' contexts leave it off, as they time their launches.
+  void reuseLaunches() {
+    reuse_ = true;
+    if (runner_) runner_->setReuse(true);
+  }
   // Data a family reads once per bake (a MERL file), keyed by the family.
   std::map<std::string, std::shared_ptr<void>> cache;
 
@@ -53,6 +59,7 @@ class BakeContext {
   std::string device_;
   std::shared_ptr<BakeObserver> observer_;
   std::unique_ptr<KernelRunner> runner_;
+  bool reuse_ = false;
 };
 
 // The files a bake lands together, and their report lines.

@@ -120,6 +120,17 @@ BRDF_FN int gaf_lambda_tabulated(int ndf, int gaf) {
   return (gaf == GAF_SMITH_EXACT || gaf == GAF_SMITH_CORRELATED_EXACT) && (ndf == NDF_BLINN_PHONG || ndf == NDF_GAUSSIAN);
 }
 
+/* The GAF that computes the same G for this NDF: ggx's and beckmann's exact Smith Lambda is their
+ * closed form (ndf_cLambda_exact returns ndf_cLambda), so smith-exact is smith and
+ * smith-correlated-exact is smith-correlated there, to the bit (the same operations). A bake
+ * that holds both computes the model once (host/cl/runner.h setReuse). */
+BRDF_FN int gaf_canonical(int ndf, int gaf) {
+  if (ndf != NDF_GGX && ndf != NDF_BECKMANN) return gaf;
+  if (gaf == GAF_SMITH_EXACT) return GAF_SMITH;
+  if (gaf == GAF_SMITH_CORRELATED_EXACT) return GAF_SMITH_CORRELATED;
+  return gaf;
+}
+
 /* Where G has a kink as a function of the azimuth phi of h (fixed theta_h), as values of cos(phi).
  * The integrators split their phi panels there so Gauss rules see only smooth pieces.
  * With o = (s, 0, mu) and h at (theta, phi): o.h = s sin cos(phi) + mu c, n.i = 2 (o.h) c - mu.
