@@ -3,8 +3,8 @@
 // (interp_estimate.h) sees only what the texels hold; towards the corner (mu, r) = (0, 0) the
 // albedo of a microfacet model dips where mu ~ alpha = r^2 (to 0.89 for ggx + smith-correlated)
 // between texels that hold ~1, in a wedge narrower than a texel at every resolution. The probes:
-// quarter-texel steps over the first two texels of mu (kProbeMuTexels), and mu = alpha 2^k and r 2^k (k = -3..3,
-// the grazing layer's scales), on every half-texel row up to r = 0.3.
+// quarter-texel steps over the first two texels of mu (kProbeMuTexels), and mu = alpha 2^k and
+// r 2^k (k = -3..3, the grazing layer's scales), on every half-texel row up to r = 0.3.
 #pragma once
 #include <vector>
 
