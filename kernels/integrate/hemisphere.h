@@ -108,15 +108,34 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
     lane_store(sinmax, nsin, k);
     lane_store(RC(0.5) * jac * exp(-v) * ndf_weight(ndf, p, c, s2), nw, k);
   }
-  real pka = RC(0.0), pkb = RC(0.0), pda = RC(0.0), pdb = RC(0.0), pea = RC(0.0), peb = RC(0.0);
-  real ga[15], gb[15]; /* the nodes' values, for resasc */
+  real va[16], vb[16], vea[16], veb[16]; /* each node's azimuth integrals and their bounds */
+  TrapSums trap[16];
+  int pending = 0;
   for (int k = 0; k < 15; ++k) {
     BrdfAngle h;
     h.c = nc[k];
     h.s2 = ns2[k];
     h.t2 = nt2[k];
-    real ia, ib, ea, eb;
-    hemi_phi(ndf, gaf, p, mu, s, h, nsn[k], !partial, nphi[k], nsin[k], refine, &ia, &ib, &ea, &eb);
+    hemi_phi(ndf, gaf, p, mu, s, h, nsn[k], !partial, nphi[k], nsin[k], refine, &va[k], &vb[k], &vea[k], &veb[k],
+             &trap[k]);
+    pending |= trap[k].n > 0;
+  }
+  if (pending) {
+    /* the trapezoids' last nodes, phi = pi, at every outer node at once (hemi_phi_trap) */
+    real pa[16], pb[16];
+    for (int k = 0; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
+      lane_t fa, fb;
+      hemi_node_c(ndf, gaf, p, mu, s, lane_load(nc, k), lane_load(nsn, k), RC(-1.0), &fa, &fb);
+      lane_store(fa, pa, k);
+      lane_store(fb, pb, k);
+    }
+    for (int k = 0; k < 15; ++k)
+      if (trap[k].n > 0) hemi_trap_finish(trap[k], pa[k], pb[k], &va[k], &vb[k], &vea[k], &veb[k]);
+  }
+  real pka = RC(0.0), pkb = RC(0.0), pda = RC(0.0), pdb = RC(0.0), pea = RC(0.0), peb = RC(0.0);
+  real ga[15], gb[15]; /* the nodes' values, for resasc */
+  for (int k = 0; k < 15; ++k) {
+    real ia = va[k], ib = vb[k], ea = vea[k], eb = veb[k];
     real wk = GK15_WKL[k] * nw[k], wd = GK15_WDL[k] * nw[k];
     ga[k] = nw[k] * ia;
     gb[k] = nw[k] * ib;
