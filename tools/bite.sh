@@ -38,13 +38,15 @@ mutation() {
     canonical-gaf) set -- "$1" kernels/brdf/gaf.h 'if (ndf != NDF_GGX && ndf != NDF_BECKMANN) return gaf;' \
                      'if (ndf != NDF_GGX && ndf != NDF_BECKMANN && ndf != NDF_BLINN_PHONG) return gaf;' \
                      "Gaf.CanonicalGivesTheSameBits|KernelReuse.RepeatsReturnWhatRunningGives" ;;
+    trap-pi-batch) set -- "$1" kernels/integrate/hemisphere.h 'lane_load(nsn, k), RC(-1.0), &fa, &fb);' \
+                     'lane_load(nsn, k), RC(-0.999), &fa, &fb);' "AllPairs/PairTest.HemisphereMatchesReference/ggx_smith_correlated" ;;
     *) return 64 ;;
   esac
   run_one "$@"
 }
 names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
-       canonical-gaf"
+       canonical-gaf trap-pi-batch"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"

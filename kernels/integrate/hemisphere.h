@@ -22,7 +22,8 @@
  * integrand is analytic) plus the weighted inner estimates, plus a floor (hemisphere_moments).
  * Cost: libm calls are counted per lane vector, not per node (compat.h): one float16 pass prepares
  * an outer panel's 15 nodes (expm1, sqrt, atan2, exp), one evaluates a GK15 azimuth panel (cos and
- * the integrand), and one plus a single node the 16-interval trapezoid (cosines from a table).
+ * the integrand), one the 16-interval trapezoid but its last node (cosines from a table), and one
+ * the last nodes, phi = pi, of all of the panel's trapezoids together.
  */
 /* Once per pass (compat.h "Passes"). */
 #if defined(BRDF_SECOND_PASS) ? !defined(BRDF_HEMISPHERE_H_2) : !defined(BRDF_HEMISPHERE_H)
