@@ -212,7 +212,12 @@ class KernelRunner {
   mutable std::mutex eventsMutex_;  // builds run on several threads (prepareAll)
   std::vector<ProgramEvent> events_;
   bool reuse_ = false;
-  std::deque<std::pair<std::string, std::vector<std::vector<float>>>> kept_;
+  struct Kept {
+    std::string key;
+    std::vector<std::vector<float>> planes;
+    size_t bytes;
+  };
+  std::deque<Kept> kept_;
   size_t keptBytes_ = 0;
 };
 

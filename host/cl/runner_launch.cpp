@@ -94,8 +94,8 @@ std::string weightKey(const HemiWeight& w) { return launchKey('w', w.moments, w.
 
 const std::vector<std::vector<float>>* KernelRunner::reused(const std::string& key) const {
   if (!reuse_) return nullptr;
-  for (const auto& [k, planes] : kept_)
-    if (k == key) return &planes;
+  for (const Kept& k : kept_)
+    if (k.key == key) return &k.planes;
   return nullptr;
 }
 
@@ -105,12 +105,10 @@ void KernelRunner::keep(const std::string& key, const std::vector<std::vector<fl
   for (const auto& p : planes) bytes += p.size() * sizeof(float);
   if (bytes > kReuseBytes) return;
   while (!kept_.empty() && keptBytes_ + bytes > kReuseBytes) {
-    size_t old = kept_.front().first.size();
-    for (const auto& p : kept_.front().second) old += p.size() * sizeof(float);
-    keptBytes_ -= old;
+    keptBytes_ -= kept_.front().bytes;
     kept_.pop_front();
   }
-  kept_.emplace_back(key, planes);
+  kept_.push_back(Kept{key, planes, bytes});
   keptBytes_ += bytes;
 }
 

@@ -244,10 +244,12 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
      * just short of its square root, unsubstituted: its |K15 - G7| then stood 240 times above the
      * error (eta = 1/1.5, mu = 0.73, r = 0.48, the refined budget); the kink's own break serves */
     /* Where H is a polynomial in cos(phi) between the kinks (gaf_polynomial_arc, with a Schlick or
-     * F82 weight) there is no layer to resolve. Measured in double against the refined budget at
-     * level 3 over ggx's 128^2 edge texels and every 9th inside: the default budget's largest error
-     * is unchanged without the grading (cook-torrance 2.7e-9, none 1.9e-8, neumann 1.9e-8,
-     * implicit 1.3e-9) on 25% (cook-torrance) to 48% (none) fewer nodes. */
+     * F82 weight) there is no layer to resolve. Without the grading the default budget's largest
+     * error against the refined budget at level 3 stays the same (cook-torrance 2.7e-9, none
+     * 1.9e-8, neumann 1.9e-8, implicit 1.3e-9; double, ggx's 128^2 edge texels and every 9th
+     * inside, a one-off harness, not kept) on 25% to 48% fewer nodes; what the repository keeps:
+     * the pair tests' edge texels against the reference, and `brdfbake-bench --bounds --stride 8
+     * --pair ggx+cook-torrance --pair beckmann+none --pair gaussian+neumann` (0 texels over). */
     int graded = !(gaf_polynomial_arc(gaf) && p.moments != HEMI_FRESNEL);
     for (real d = layer; graded && d < RC(0.5) * phimax && nb < 16; d *= grow)
       if (!(fk >= RC(0.0) && fabs(phimax - d - fk) < RC(0.25) * d)) br[nb++] = phimax - d;

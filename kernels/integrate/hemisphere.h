@@ -109,8 +109,8 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
     lane_store(sinmax, nsin, k);
     lane_store(RC(0.5) * jac * exp(-v) * ndf_weight(ndf, p, c, s2), nw, k);
   }
-  real va[16], vb[16], vea[16], veb[16]; /* each node's azimuth integrals and their bounds */
-  TrapSums trap[16];
+  real va[15], vb[15], vea[15], veb[15]; /* each node's azimuth integrals and their bounds */
+  TrapSums trap[15];
   int pending = 0;
   for (int k = 0; k < 15; ++k) {
     BrdfAngle h;
