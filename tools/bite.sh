@@ -40,13 +40,18 @@ mutation() {
                      "Gaf.CanonicalGivesTheSameBits|KernelReuse.RepeatsReturnWhatRunningGives" ;;
     trap-pi-batch) set -- "$1" kernels/integrate/hemisphere.h 'lane_load(nsn, k), RC(-1.0), &fa, &fb);' \
                      'lane_load(nsn, k), RC(-0.999), &fa, &fb);' "AllPairs/PairTest.HemisphereMatchesReference/ggx_smith_correlated" ;;
+    ggx-one-division) set -- "$1" kernels/brdf/gaf.h 'g = ni * q / (ni * q * (no + clo) + RC(0.5) * no * x);' \
+                        'g = ni * q / (ni * q * (no + clo) + RC(0.5) * x);' "Gaf.KernelFormsMatchTheReferencesOwnFormulas" ;;
+    lane-sum4) set -- "$1" kernels/brdf/compat.h 'float16 x = (float16)(ab.even + ab.odd, cd.even + cd.odd);' \
+                 'float16 x = (float16)(cd.even + cd.odd, ab.even + ab.odd);' \
+                 "AllPairs/PairTest.HemisphereMatchesReference/ggx_smith_correlated" ;;
     *) return 64 ;;
   esac
   run_one "$@"
 }
 names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
-       canonical-gaf trap-pi-batch"
+       canonical-gaf trap-pi-batch ggx-one-division lane-sum4"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"

@@ -91,11 +91,11 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
       hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(mid + hw * x), &fa, &fb);
     }
     lane_t wk = lane_load(GK15_WKL, k), wd = lane_load(GK15_WDL, k);
+#if BRDF_LANES < HEMI_GK_N
     sa += lane_sum(wk * fa);
     sb += lane_sum(wk * fb);
     da += lane_sum(wd * fa);
     db += lane_sum(wd * fb);
-#if BRDF_LANES < HEMI_GK_N
     lane_store(fa, va, k);
     lane_store(fb, vb, k);
   }
@@ -105,8 +105,14 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
   }
 #else
     /* the device: every node is in this one pass, so the mean is known already */
-    ra = lane_sum(wk * fabs(fa - RC(0.5) * sa));
-    rb = lane_sum(wk * fabs(fb - RC(0.5) * sb));
+    float4 s4 = lane_sum4(wk * fa, wk * fb, wd * fa, wd * fb);
+    sa = s4.x;
+    sb = s4.y;
+    da = s4.z;
+    db = s4.w;
+    float2 r2 = lane_sum2(wk * fabs(fa - RC(0.5) * sa), wk * fabs(fb - RC(0.5) * sb));
+    ra = r2.x;
+    rb = r2.y;
   }
 #endif
   *ka += sa * hw;
@@ -159,12 +165,23 @@ BRDF_FN TrapSums hemi_phi_trap(int ndf, int gaf, BrdfParams p, real mu, real s, 
     lane_t fa, fb;
     hemi_node(ndf, gaf, p, mu, s, h, sn, lane_load(cs, k), &fa, &fb);
     lane_t wk = lane_load(w, k), dk = lane_load(d, k), ek = lane_load(d2, k);
+#if BRDF_LANES > 1
+    float4 s4 = lane_sum4(wk * fa, wk * fb, dk * fa, dk * fb); /* compat.h */
+    float2 c2 = lane_sum2(ek * fa, ek * fb);
+    t.sa += s4.x;
+    t.sb += s4.y;
+    t.da += s4.z;
+    t.db += s4.w;
+    t.ca += c2.x;
+    t.cb += c2.y;
+#else
     t.sa += lane_sum(wk * fa);
     t.sb += lane_sum(wk * fb);
     t.da += lane_sum(dk * fa);
     t.db += lane_sum(dk * fb);
     t.ca += lane_sum(ek * fa);
     t.cb += lane_sum(ek * fb);
+#endif
   }
   return t;
 }

@@ -41,7 +41,9 @@ BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, Br
   real ni = fmin(RC(2.0) * oh * h.c - mu, RC(1.0));
   real s2i = (RC(1.0) - ni) * (RC(1.0) + ni);
   param_t s2o = s * s;
-  real H = gaf_G_over_no(gaf, ndf, p, ni, mu, h.c, oh, s2i, s2o) * oh / h.c;
+  /* 1/cos theta_h once per call, not a lane division per node */
+  param_t ic = RC(1.0) / h.c;
+  real H = gaf_G_over_no(gaf, ndf, p, ni, mu, h.c, oh, s2i, s2o) * oh * ic;
   real w;
   if (p.moments == HEMI_FRESNEL) w = fresnel_F(p.fresnel, p.fr_x, p.fr_y, oh);
   else if (p.moments == HEMI_F82C) w = fresnel_f82_weight(oh);
@@ -61,7 +63,7 @@ BRDF_FN void hemi_node_c(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, 
   real ni = fmin(RC(2.0) * oh * c - mu, RC(1.0));
   real s2i = (RC(1.0) - ni) * (RC(1.0) + ni);
   param_t s2o = s * s;
-  real H = gaf_G_over_no(gaf, ndf, p, ni, mu, c, oh, s2i, s2o) * oh / c;
+  real H = gaf_G_over_no(gaf, ndf, p, ni, mu, c, oh, s2i, s2o) * oh * (RC(1.0) / c);
   real w;
   if (p.moments == HEMI_FRESNEL) w = fresnel_F(p.fresnel, p.fr_x, p.fr_y, oh);
   else if (p.moments == HEMI_F82C) w = fresnel_f82_weight(oh);
