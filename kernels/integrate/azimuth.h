@@ -117,8 +117,16 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
 #endif
   *ka += sa * hw;
   *kb += sb * hw;
+#if BRDF_LANES < HEMI_GK_N
   *ea += gk_error(fabs(da), ra, 1) * hw;
   *eb += gk_error(fabs(db), rb, 1) * hw;
+#else
+  /* the device: both moments' gk_error in one float2 (the same operations lane by lane, so the
+   * same bits) */
+  float2 e2 = gk_error2((float2)(fabs(da), fabs(db)), (float2)(ra, rb)) * hw;
+  *ea += e2.x;
+  *eb += e2.y;
+#endif
 }
 
 /* A trapezoid's running sums (values, n/2 and n/4 differences) before its last node, phi = pi,

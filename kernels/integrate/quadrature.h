@@ -141,6 +141,13 @@ BRDF_FN real gk_error(real kg, real resasc, int sharp) {
   real q = fmin(RC(1.0), GK_SHARP_C * kg / resasc);
   return resasc * q * sqrt(q);
 }
+#if defined(__OPENCL_C_VERSION__) && !defined(BRDF_LANE_PASS)
+/* gk_error(kg, resasc, 1) of a panel's two moments at once, lane by lane (azimuth.h). */
+BRDF_FN float2 gk_error2(float2 kg, float2 resasc) {
+  float2 q = fmin((float2)(1.0f), (float)GK_SHARP_C * kg / resasc);
+  return select(kg, resasc * q * sqrt(q), isgreater(resasc, (float2)(0.0f)));
+}
+#endif
 
 /* The error of the trapezoid rule T_n on a smooth periodic integrand from d1 = |T_n - T_{n/2}| and
  * d2 = |T_{n/2} - T_{n/4}|: its error decays geometrically in n, e_n ~ C q^n (Trefethen and
