@@ -96,8 +96,9 @@ BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, param_t no, 
     /* GGX's c Lambda(i) = x/(2 q), x = alpha^2 sin^2 theta_i, q = sqrt((n.i)^2 + x) + n.i (ndf_cLambda;
      * the exact Lambda is the same), multiplied through: one division per node instead of two.
      * Measured with the integrand's 1/cos theta_h taken once per call too (integrand.h): ggx +
-     * smith-correlated's 128^2 split-sum kernel 0.048 s with three lane divisions per node, 0.0435 to
-     * 0.0445 s with one (brdfbake-bench --times-only --repeat 5, twice) */
+     * smith-correlated's 128^2 split-sum kernel 0.0350 to 0.0357 s with one lane division per node
+     * against 0.0397 to 0.0405 s with three (brdfbake-bench --times-only --repeat 5, two builds,
+     * three interleaved runs each) */
     real x = p.alpha * p.alpha * s2i;
     real q = sqrt(ni * ni + x) + ni;
     g = ni * q / ((ni * q + RC(0.5) * x) * (no + clo));
