@@ -180,11 +180,19 @@ BRDF_FN real beckmann_cLambda(real c, real as) {
   return RC(0.5) * as * exp(-a * a) * l - (c < RC(0.0) ? c : RC(0.0));
 }
 
-BRDF_FN real ndf_cLambda(int ndf, BrdfParams p, real c, real s2) {
+/* GGX's c Lambda = x/(2q) in its parts: q = sqrt(c^2 + x) + c, returned, and x = alpha^2 sin^2 in *x.
+ * ndf_cLambda divides them; the Smith GAFs multiply q through their own division (gaf.h). */
+BRDF_FN real ggx_cLambda_q(BrdfParams p, real c, real s2, real* x) {
   param_t a2 = p.alpha * p.alpha;
+  *x = a2 * s2;
+  return sqrt(c * c + *x) + c;
+}
+
+BRDF_FN real ndf_cLambda(int ndf, BrdfParams p, real c, real s2) {
   if (ndf == NDF_GGX) {
-    real x = a2 * s2;
-    return RC(0.5) * x / (sqrt(c * c + x) + c);
+    real x;
+    real q = ggx_cLambda_q(p, c, s2, &x);
+    return RC(0.5) * x / q;
   } else if (ndf == NDF_CHARLIE) {
     return c * charlie_lambda(p.alpha, c); /* the paper's fit (below), not an exact Smith Lambda */
   } else {

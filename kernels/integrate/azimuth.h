@@ -103,6 +103,7 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
     ra += GK15_WKL[k] * fabs(va[k] - RC(0.5) * sa);
     rb += GK15_WKL[k] * fabs(vb[k] - RC(0.5) * sb);
   }
+  real ga = gk_error(fabs(da), ra, 1), gb = gk_error(fabs(db), rb, 1);
 #else
     /* the device: every node is in this one pass, so the mean is known already */
     float4 s4 = lane_sum4(wk * fa, wk * fb, wd * fa, wd * fb);
@@ -114,19 +115,14 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
     ra = r2.x;
     rb = r2.y;
   }
+  /* both moments' gk_error in one float2: lane by lane gk_error's operations, so its bits */
+  float2 g2 = gk_error2((float2)(fabs(da), fabs(db)), (float2)(ra, rb));
+  real ga = g2.x, gb = g2.y;
 #endif
   *ka += sa * hw;
   *kb += sb * hw;
-#if BRDF_LANES < HEMI_GK_N
-  *ea += gk_error(fabs(da), ra, 1) * hw;
-  *eb += gk_error(fabs(db), rb, 1) * hw;
-#else
-  /* the device: both moments' gk_error in one float2 (the same operations lane by lane, so the
-   * same bits) */
-  float2 e2 = gk_error2((float2)(fabs(da), fabs(db)), (float2)(ra, rb)) * hw;
-  *ea += e2.x;
-  *eb += e2.y;
-#endif
+  *ea += ga * hw;
+  *eb += gb * hw;
 }
 
 /* A trapezoid's running sums (values, n/2 and n/4 differences) before its last node, phi = pi,

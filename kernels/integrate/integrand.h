@@ -63,6 +63,7 @@ BRDF_FN void hemi_node_c(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, 
   real ni = fmin(RC(2.0) * oh * c - mu, RC(1.0));
   real s2i = (RC(1.0) - ni) * (RC(1.0) + ni);
   param_t s2o = s * s;
+  /* written as hemi_node forms it (1/c, then the product), so the two differ only in where c varies */
   real H = gaf_G_over_no(gaf, ndf, p, ni, mu, c, oh, s2i, s2o) * oh * (RC(1.0) / c);
   real w;
   if (p.moments == HEMI_FRESNEL) w = fresnel_F(p.fresnel, p.fr_x, p.fr_y, oh);
