@@ -48,8 +48,11 @@ TEST(CliHelp, EveryCommandListsOnlyItsOptionsAndExamplesThatParse) {
         // an option some other command shares under the same name (-o) is listed by either entry
         bool sharedName = false;
         for (const OptionInfo& p : optionInfos()) sharedName |= p.name == o.name && (p.commands & bits);
-        if (own) EXPECT_TRUE(mentions(r.out, o.name)) << c.name << " --help omits " << o.name;
-        else if (!sharedName) EXPECT_FALSE(mentions(r.out, o.name)) << c.name << " --help lists " << o.name;
+        if (own) {
+          EXPECT_TRUE(mentions(r.out, o.name)) << c.name << " --help omits " << o.name;
+        } else if (!sharedName) {
+          EXPECT_FALSE(mentions(r.out, o.name)) << c.name << " --help lists " << o.name;
+        }
       }
     }
     // every example parses (nothing runs: the files it names need not exist)
@@ -69,8 +72,9 @@ TEST(CliHelp, EveryCommandListsOnlyItsOptionsAndExamplesThatParse) {
   // the overview names every command and the bake options
   r = run("--help");
   EXPECT_EQ(r.code, 0);
-  for (const CommandInfo& c : commandInfos())
+  for (const CommandInfo& c : commandInfos()) {
     if (c.name.find(' ') == std::string::npos) EXPECT_NE(r.out.find("\n  " + c.name + " "), std::string::npos) << c.name;
+  }
   EXPECT_TRUE(mentions(r.out, "--table"));
   EXPECT_EQ(run("help").out, r.out);
 }
@@ -101,6 +105,8 @@ TEST(CliHelp, SuggestsTheNearestNameAndWritesNothing) {
       {"stress --ndf ggx" + o, "--ndf: not a stress option"},
       {"shader --lang glsl x.exr --ndf ggx", "--ndf: not a shader option"},
       {"plan scene.toml --table albedo", "--table: not a plan option"},
+      // bake gives no reason of its own: the commands that take the option instead
+      {"bake --at 1,2,3" + o, "--at: not a bake option (sample takes it; brdfbake bake --help lists them)"},
   };
   for (const Case& c : cases) {
     CmdResult r = run(c.args);

@@ -348,10 +348,18 @@ void refuseOption(const std::string& command, const std::string& opt) {
   const CommandInfo* c = findCommand(command);
   const std::string shown = c && c->bit == kCmdSceneBake ? "bake SCENE" : command;
   const std::string helpCmd = c && c->bit == kCmdSceneBake ? "bake" : command;
-  if (findOption(opt)) {
+  if (const OptionInfo* o = findOption(opt)) {
     const std::string article = std::string("aeiou").find(shown[0]) != std::string::npos ? "an " : "a ";
-    throw Error(kExitUsage, opt + ": not " + article + shown + " option (" + (c ? c->refusal : std::string()) +
-                                "; brdfbake " + helpCmd + " --help lists them)");
+    // the command's own reason, else the commands that take the option
+    std::string why = c ? c->refusal : std::string();
+    if (why.empty()) {
+      std::vector<std::string> takers;
+      for (const auto& k : commandInfos())
+        if (o->commands & k.bit) takers.push_back(k.name);
+      why = (takers.empty() ? std::string("no command") : joinNames(takers)) + (takers.size() == 1 ? " takes it" : " take it");
+    }
+    throw Error(kExitUsage, opt + ": not " + article + shown + " option (" + why + "; brdfbake " + helpCmd +
+                                " --help lists them)");
   }
   // the nearest of this command's options, else of any command's
   std::vector<std::string> own, all;
