@@ -73,7 +73,8 @@ TEST(CliHelp, EveryCommandListsOnlyItsOptionsAndExamplesThatParse) {
   r = run("--help");
   EXPECT_EQ(r.code, 0);
   for (const CommandInfo& c : commandInfos()) {
-    if (c.name.find(' ') == std::string::npos) EXPECT_NE(r.out.find("\n  " + c.name + " "), std::string::npos) << c.name;
+    if (c.name.find(' ') != std::string::npos) continue;  // "bake SCENE" is listed under bake
+    EXPECT_NE(r.out.find("\n  " + c.name + " "), std::string::npos) << c.name;
   }
   EXPECT_TRUE(mentions(r.out, "--table"));
   EXPECT_EQ(run("help").out, r.out);
