@@ -150,7 +150,20 @@ TEST(FirstRun, DevicesPreparesAndListsPrograms) {
   ASSERT_EQ(bakeWith(d, (d / "mine").string(), "a").code, 0);
   r = run("devices", "", env);
   ASSERT_EQ(r.code, 0) << r.out;
-  EXPECT_NE(r.out.find("programs ready in " + (d / "mine").string() + ": 1 (ggx + smith-correlated)"), std::string::npos)
+  EXPECT_NE(r.out.find("programs ready in " + (d / "mine").string() + ": 1 (ggx + smith-correlated)\n"), std::string::npos)
+      << r.out;
+  // an entry of other sources (one byte near the end of the program's source) is listed as stale
+  ASSERT_EQ(entries(d / "mine").size(), 1u);
+  const fs::path entry = entries(d / "mine")[0];
+  std::string stale = bytes(entry);
+  const size_t src = stale.rfind("#line");
+  ASSERT_NE(src, std::string::npos);
+  stale[src + 1] = 'X';
+  std::ofstream(entry, std::ios::binary | std::ios::trunc) << stale;
+  r = run("devices", "", env);
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("programs in " + (d / "mine").string() + ": none ready, 1 stale (other sources or options: never loaded)"),
+            std::string::npos)
       << r.out;
   r = run("devices --prepare", "", env);
   EXPECT_EQ(r.code, 64) << r.out;

@@ -110,12 +110,17 @@ std::string describeDevices() {
     // the program binaries ready for this device (cl/program_cache.h), where they are
     bool any = false;
     for (const std::string& dir : programCacheDirs()) {
-      std::vector<std::string> names = preparedPrograms(dir, e.device);
-      if (names.empty()) continue;
+      PreparedPrograms found = preparedPrograms(dir, e.device);
+      const std::string stale =
+          found.stale ? ", " + std::to_string(found.stale) + " stale (other sources or options: never loaded)" : "";
+      if (found.ready.empty()) {
+        if (found.stale) s += "      programs in " + dir + ": none ready" + stale + "\n";
+        continue;
+      }
       any = true;
       std::string list;
-      for (const std::string& n : names) list += (list.empty() ? "" : "; ") + n;
-      s += "      programs ready in " + dir + ": " + std::to_string(names.size()) + " (" + list + ")\n";
+      for (const std::string& n : found.ready) list += (list.empty() ? "" : "; ") + n;
+      s += "      programs ready in " + dir + ": " + std::to_string(found.ready.size()) + " (" + list + ")" + stale + "\n";
     }
     if (!any) s += "      programs ready: none (each bake builds its programs from source, then keeps their binaries)\n";
   }

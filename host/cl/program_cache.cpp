@@ -13,6 +13,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "cl/programs.h"
+
 #ifndef BRDFBAKE_PROGRAMS_BUILD_DIR
 #define BRDFBAKE_PROGRAMS_BUILD_DIR ""
 #endif
@@ -220,24 +222,38 @@ std::string storeProgram(const std::string& identity, const ProgramBinary& binar
   return "";
 }
 
-std::vector<std::string> preparedPrograms(const std::string& dir, const cl::Device& device) {
+PreparedPrograms preparedPrograms(const std::string& dir, const cl::Device& device) {
   const std::string mine = deviceBlock(programIdentity(device, "", "", ""));
-  std::vector<std::string> names;
+  PreparedPrograms out;
   DIR* d = ::opendir(dir.c_str());
-  if (!d) return names;
+  if (!d) return out;
   while (dirent* e = ::readdir(d)) {
     std::string f = e->d_name;
     if (f.size() < 6 || f.compare(f.size() - 6, 6, ".clbin") != 0) continue;
-    std::optional<std::string> data = readRegular(dir + "/" + f, 1 << 16);
+    std::optional<std::string> data = readRegular(dir + "/" + f, kMaxEntry);
     size_t at = 0;
     std::optional<std::string> id = data ? storedIdentity(*data, &at, true) : std::nullopt;
-    if (!id || deviceBlock(*id) != mine) continue;
+    if (!id || deviceBlock(*id) != mine) continue;  // another device's: not listed under this one
     size_t p = id->find("\nprogram: ");
-    if (p != std::string::npos) names.push_back(id->substr(p + 10, id->find('\n', p + 10) - p - 10));
+    if (p == std::string::npos) continue;
+    const std::string name = id->substr(p + 10, id->find('\n', p + 10) - p - 10);
+    // current: the file is where this build's identity of that program hashes to, and stores
+    // that identity, byte for byte (what loadProgram asks of it too, with the checksum)
+    ProgramKey key;
+    bool current = false;
+    if (programKeyNamed(name, &key)) {
+      const std::string want = programIdentity(device, name, kProgramBuildOptions, programSource(key));
+      current = f == hex64(fnv1a(want)) + ".clbin" && *id == want;
+    }
+    if (current)
+      out.ready.push_back(name);
+    else
+      ++out.stale;
   }
   ::closedir(d);
-  std::sort(names.begin(), names.end());
-  return names;
+  std::sort(out.ready.begin(), out.ready.end());
+  return out;
 }
 
 }  // namespace brdfbake
+

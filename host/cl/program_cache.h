@@ -44,7 +44,13 @@ std::optional<ProgramBinary> loadProgram(const std::string& identity, std::strin
 // written costs the next run a build, never a failure.
 std::string storeProgram(const std::string& identity, const ProgramBinary& binary, std::string dir = "");
 
-// The entries in `dir` made for `device` (any sources): their programs' names.
-std::vector<std::string> preparedPrograms(const std::string& dir, const cl::Device& device);
+// The entries in `dir` made for `device`: the names of the programs that a bake of this build
+// loads (same sources and options), and how many others there are (stale: other sources, from
+// another version or build; never loaded).
+struct PreparedPrograms {
+  std::vector<std::string> ready;
+  int stale = 0;
+};
+PreparedPrograms preparedPrograms(const std::string& dir, const cl::Device& device);
 
 }  // namespace brdfbake

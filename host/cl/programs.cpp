@@ -71,6 +71,23 @@ std::string programName(const ProgramKey& key) {
   return name;
 }
 
+const char* const kProgramBuildOptions = "-cl-std=CL1.2 -w";
+
+bool programKeyNamed(const std::string& name, ProgramKey* key) {
+  std::vector<ProgramKey> keys = {ProgramKey::shared()};
+  for (int ndf = 0; ndf < static_cast<int>(ndfNames().size()); ++ndf)
+    for (int gaf = 0; gaf < static_cast<int>(gafNames().size()); ++gaf)
+      if (pairSupported(ndf, gaf))
+        for (ProgramKey::Kind k : {ProgramKey::Integrators, ProgramKey::Volume, ProgramKey::Dielectric})
+          keys.push_back(ProgramKey{k, ndf, gaf});
+  for (const ProgramKey& k : keys)
+    if (programName(k) == name) {
+      *key = k;
+      return true;
+    }
+  return false;
+}
+
 std::string programSource(const ProgramKey& key) {
   std::string src = "/* brdfbake prelude: " + programName(key) + " */\n";
   if (key.isShared()) {

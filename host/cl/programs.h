@@ -27,5 +27,12 @@ struct ProgramKey {
 std::string programSource(const ProgramKey& key);
 // What the program is, for messages: "ggx + smith-correlated (3D tables)".
 std::string programName(const ProgramKey& key);
+// The program programName names, or false (a name from another version of brdfbake).
+bool programKeyNamed(const std::string& name, ProgramKey* key);
+
+// The options every program is built with. -w: without AVX-512, Clang warns about every float16
+// argument ("changes the ABI"), harmless here (PoCL compiles the kernel and its library for one
+// CPU) but enough to bury a real error in the build log that a failed build prints.
+extern const char* const kProgramBuildOptions;
 
 }  // namespace brdfbake

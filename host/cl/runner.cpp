@@ -18,10 +18,7 @@ namespace brdfbake {
 
 using namespace runner_detail;
 
-// -w: without AVX-512, Clang warns about every float16 argument ("changes the ABI"), harmless
-// here (PoCL compiles the kernel and its library for one CPU) but enough to bury a real error
-// in the build log that a failed build prints.
-const char* const kBuildOptions = "-cl-std=CL1.2 -w";
+const char* const kBuildOptions = kProgramBuildOptions;
 
 
 KernelRunner::KernelRunner(const cl::Device& device) : device_(device) {
