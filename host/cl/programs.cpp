@@ -1,8 +1,8 @@
 #include "cl/programs.h"
 
-#include <regex>
+#include <cctype>
+#include <cstring>
 #include <set>
-#include <sstream>
 
 #include "cl/embedded_kernels.h"
 #include "common/errors.h"
@@ -24,6 +24,39 @@ const char* embedded(const std::string& path) {
 // pass is followed from the #define / #undef BRDF_SECOND_PASS lines (integrate/lanes.h); should
 // this ever leave out a file the compiler needs, the build fails naming the missing function.
 // The nesting is bounded: the include graph has no loops (tests/check_kernel_headers.py).
+// The directive a line holds: "#", spaces, `word`, spaces; where the rest of the line starts, or
+// npos. Parsed by hand: std::regex's construction alone took 1.3 ms of every bake's program load.
+size_t directive(const std::string& line, const char* word) {
+  size_t i = line.find_first_not_of(" \t");
+  if (i == std::string::npos || line[i] != '#') return std::string::npos;
+  i = line.find_first_not_of(" \t", i + 1);
+  const size_t n = std::strlen(word);
+  if (i == std::string::npos || line.compare(i, n, word) != 0) return std::string::npos;
+  i += n;
+  if (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '"') return std::string::npos;
+  i = line.find_first_not_of(" \t", i);
+  return i == std::string::npos ? line.size() : i;
+}
+// The file a line includes (#include "X"), or "".
+std::string includedFile(const std::string& line) {
+  size_t i = directive(line, "include");
+  if (i == std::string::npos || i >= line.size() || line[i] != '"') return "";
+  size_t end = line.find('"', i + 1);
+  return end == std::string::npos ? "" : line.substr(i + 1, end - i - 1);
+}
+// +1 for #define BRDF_SECOND_PASS, -1 for #undef, 0 otherwise.
+int passDirective(const std::string& line) {
+  for (int sign : {1, -1}) {
+    size_t i = directive(line, sign > 0 ? "define" : "undef");
+    const char* name = "BRDF_SECOND_PASS";
+    const size_t n = std::strlen(name);
+    if (i == std::string::npos || line.compare(i, n, name) != 0) continue;
+    const char next = i + n < line.size() ? line[i + n] : ' ';
+    if (!std::isalnum(static_cast<unsigned char>(next)) && next != '_') return sign;
+  }
+  return 0;
+}
+
 struct Joiner {
   std::string src;
   std::set<std::pair<bool, std::string>> seen;  // (second pass, file)
@@ -33,20 +66,32 @@ struct Joiner {
     if (!seen.insert({second, rel}).second) return;
     const std::string path = "kernels/" + rel;
     src += "#line 1 \"" + path + "\"\n";
-    std::istringstream in(embedded(path));
+    const char* text = embedded(path);
+    const size_t size = std::strlen(text);
     std::string line;
-    static const std::regex include(R"re(^\s*#\s*include\s+"([^"]+)".*)re");
-    static const std::regex pass(R"re(^\s*#\s*(define|undef)\s+BRDF_SECOND_PASS\b.*)re");
-    std::smatch m;
-    for (int n = 1; std::getline(in, line); ++n) {
-      if (line.find("BRDF_SECOND_PASS") != std::string::npos && std::regex_match(line, m, pass))
-        second = m[1] == "define";
-      if (line.find("include") == std::string::npos || !std::regex_match(line, m, include)) {
+    int n = 0;
+    for (size_t at = 0; at < size;) {
+      const char* nl = static_cast<const char*>(std::memchr(text + at, '\n', size - at));
+      const size_t end = nl ? static_cast<size_t>(nl - text) : size;
+      size_t first = at;
+      while (first < end && (text[first] == ' ' || text[first] == '\t')) ++first;
+      ++n;
+      if (first == end || text[first] != '#') {  // not a directive: the line as it is
+        src.append(text + at, end - at);
+        src += '\n';
+        at = end + 1;
+        continue;
+      }
+      line.assign(text + at, end - at);
+      at = end + 1;
+      if (int d = passDirective(line)) second = d > 0;
+      const std::string inc = includedFile(line);
+      if (inc.empty()) {
         src += line;
         src += '\n';
         continue;
       }
-      append(m[1].str());
+      append(inc);
       src += "#line " + std::to_string(n + 1) + " \"" + path + "\"\n";
     }
   }
@@ -98,6 +143,9 @@ std::string programSource(const ProgramKey& key) {
   // the models evaluated at points (3D tables, glass) ask for double where the device has it
   if (key.kind != ProgramKey::Integrators) src += "#define BRDF_DEVICE_DOUBLE 1\n";
   Joiner j;
+  size_t all = 0;  // room for every file once per pass: growing a 0.5 MB string page-faulted 0.5 ms
+  for (const auto& f : kEmbeddedKernelSources) all += std::strlen(f.text);
+  j.src.reserve(2 * all);
   j.append(topFile(key.kind));
   return src + j.src;
 }
