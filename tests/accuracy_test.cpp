@@ -325,6 +325,41 @@ TEST(KernelReuse, RepeatsReturnWhatRunningGives) {
                     plain.hemisphere(NDF_BLINN_PHONG, GAF_SMITH_EXACT, 6, 5, false)));
 }
 
+cl_float4 nodeAt(float mu, float r, float target) { return {{mu, r, target, 0.0f}}; }
+
+// hemisphereNodes keeps each point's results and launches only the points it has not seen: a request
+// that overlaps earlier ones (the albedo table's probes repeat most of the split sum's) returns,
+// point for point, the bits a runner without reuse computes for it.
+TEST(KernelReuse, NodesOverlappingEarlierOnesGiveTheSameBits) {
+  const cl::Device device = selectDevice("").device;
+  KernelRunner fresh(device), reusing(device);
+  reusing.setReuse(true);
+  std::vector<cl_float4> first, second;
+  for (int k = 1; k <= 12; ++k) first.push_back(nodeAt(k / 13.0f, 0.05f * k, 1.0f));
+  // the second request: points of the first in another order, a repeated one, new points, and a
+  // point of the first with another target (another point)
+  second = {first[7], nodeAt(0.011f, 0.3f, 1.0f), first[2], first[2], nodeAt(0.5f, 0.02f, 1.0f), first[11],
+            nodeAt(first[4].s[0], first[4].s[1], 3e-7f), first[0]};
+  for (const HemiWeight& w : {HemiWeight{}, HemiWeight{HEMI_FRESNEL, FRESNEL_SCHLICK, 0.04f, 0.0f}}) {
+    const auto seen = reusing.hemisphereNodes(NDF_GGX, GAF_SMITH_CORRELATED, first, w);
+    const auto got = reusing.hemisphereNodes(NDF_GGX, GAF_SMITH_CORRELATED, second, w);
+    const auto want = fresh.hemisphereNodes(NDF_GGX, GAF_SMITH_CORRELATED, second, w);
+    ASSERT_EQ(got.size(), 4u);
+    ASSERT_EQ(want.size(), 4u);
+    for (int q = 0; q < 4; ++q) {
+      ASSERT_EQ(got[q].size(), second.size());
+      EXPECT_EQ(0, std::memcmp(got[q].data(), want[q].data(), second.size() * sizeof(float))) << "plane " << q;
+    }
+    // a point's values do not depend on the launch it came in: the first request's own
+    EXPECT_EQ(got[0][0], seen[0][7]);
+    EXPECT_EQ(got[2][2], seen[2][2]);
+    // the same request again, every point known: the same bits, bare kept apart from not bare
+    EXPECT_EQ(reusing.hemisphereNodes(NDF_GGX, GAF_SMITH_CORRELATED, second, w), got);
+    const auto bare = reusing.hemisphereNodes(NDF_GGX, GAF_SMITH_CORRELATED, second, w, true);
+    EXPECT_EQ(bare, fresh.hemisphereNodes(NDF_GGX, GAF_SMITH_CORRELATED, second, w, true));
+  }
+}
+
 // The sqrt(mu) x axis (Unity HDRP's newer FGD lookup): texel i of n holds the table at mu = u^2,
 // u = (i + 0.5)/n (texel centres) or i/(n - 1) (nodes), the same bits as a one-point evaluation
 // there, and the r axis is unchanged.

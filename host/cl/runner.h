@@ -14,7 +14,9 @@
 //    same in all of them), so a bake builds no program for it alone.
 #pragma once
 #include <CL/opencl.hpp>
+#include <array>
 #include <deque>
+#include <unordered_map>
 #include <functional>
 #include <mutex>
 #include <map>
@@ -115,12 +117,14 @@ class KernelRunner {
   // Reuse within a bake: hemisphereRange and hemisphereNodes (and so hemisphere, albedoAvg and the
   // interpolation probes) keep their results, and a later launch with the same arguments, the GAF
   // taken through gaf_canonical (kernels/brdf/gaf.h), returns them instead of running again: the
-  // tables of ggx + smith-exact are those of ggx + smith. At most kReuseBytes are kept, the oldest
-  // dropped first. Off by default: timings and ladders run their launches again on purpose.
+  // tables of ggx + smith-exact are those of ggx + smith. hemisphereNodes keeps each point's and
+  // launches only the points it has not seen. At most kReuseBytes of tables and kReusePoints
+  // points are kept, the oldest tables dropped first. Off by default: timings and ladders run their launches again on purpose.
   static constexpr size_t kReuseBytes = size_t(64) << 20;
+  static constexpr size_t kReusePoints = size_t(1) << 18;  // hemisphereNodes' points kept (~30 MB at most)
   void setReuse(bool on) {
     reuse_ = on;
-    if (!on) kept_.clear(), keptBytes_ = 0;
+    if (!on) kept_.clear(), keptBytes_ = 0, points_.clear();
   }
 
   // Which program the integrator kernels (split sum, albedo, albedo-avg, k_p) of a pair run in:
@@ -195,6 +199,9 @@ class KernelRunner {
   const std::vector<std::vector<float>>* reused(const std::string& key) const;
   void keep(const std::string& key, const std::vector<std::vector<float>>& planes);
   void runRows(Compiled& c, cl::Kernel& k, size_t gx, size_t gy);
+  // hemisphereNodes' launch of the points given, all of them
+  std::vector<std::vector<float>> nodesLaunch(int ndf, int gaf, const std::vector<cl_float4>& nodes,
+                                              const HemiWeight& w, bool bare);
 
   cl::Device device_;
   bool cpu_ = false;
@@ -219,6 +226,10 @@ class KernelRunner {
   };
   std::deque<Kept> kept_;
   size_t keptBytes_ = 0;
+  // hemisphereNodes' results point by point (setReuse), by the launch's arguments and the point:
+  // the albedo table's probes are mostly points of the split sum's (the same layer points on every
+  // fourth row), and a point's values do not depend on the others in its launch
+  std::unordered_map<std::string, std::array<float, 4>> points_;
 };
 
 }  // namespace brdfbake

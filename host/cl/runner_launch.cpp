@@ -169,9 +169,32 @@ void setRArgs(cl::Kernel& k, const cl::Buffer& values, const cl::Buffer& bounds,
 // host/cl/runner_avg.cpp.
 std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, const std::vector<cl_float4>& nodes,
                                                               const HemiWeight& w, bool bare) {
-  std::string key = launchKey('n', ndf, brdf64::gaf_canonical(ndf, gaf), bare) + weightKey(w);
-  key.append(reinterpret_cast<const char*>(nodes.data()), nodes.size() * sizeof(cl_float4));
-  if (const auto* kept = reused(key)) return *kept;
+  const std::string prefix = launchKey('n', ndf, brdf64::gaf_canonical(ndf, gaf), bare) + weightKey(w);
+  auto pointKey = [&](const cl_float4& p) { return prefix + std::string(reinterpret_cast<const char*>(&p), sizeof p); };
+  // the points not computed before in this bake (all of them without reuse), in their order
+  std::vector<cl_float4> todo;
+  std::vector<const std::array<float, 4>*> known(nodes.size(), nullptr);
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    auto it = reuse_ ? points_.find(pointKey(nodes[k])) : points_.end();
+    if (it != points_.end()) known[k] = &it->second;
+    else todo.push_back(nodes[k]);
+  }
+  std::vector<std::vector<float>> out = todo.empty() ? std::vector<std::vector<float>>(4) : nodesLaunch(ndf, gaf, todo, w, bare);
+  // kept for later launches (element references stay valid as the map grows: `known` holds them)
+  for (size_t k = 0; reuse_ && k < todo.size() && points_.size() < kReusePoints; ++k)
+    points_.emplace(pointKey(todo[k]), std::array<float, 4>{out[0][k], out[1][k], out[2][k], out[3][k]});
+  if (todo.size() == nodes.size()) return out;
+  std::vector<std::vector<float>> all(4, std::vector<float>(nodes.size()));
+  size_t next = 0;
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    for (int q = 0; q < 4; ++q) all[q][k] = known[k] ? (*known[k])[q] : out[q][next];
+    if (!known[k]) ++next;
+  }
+  return all;
+}
+
+std::vector<std::vector<float>> KernelRunner::nodesLaunch(int ndf, int gaf, const std::vector<cl_float4>& nodes,
+                                                          const HemiWeight& w, bool bare) {
   Compiled& c = compiled({ProgramKey::Integrators, ndf, gaf}, kHemisphere);
   Slot& s = *slots_[c.slot];
   size_t count = nodes.size();
@@ -191,10 +214,8 @@ std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, 
   k.setArg(17, in);
   setPairArgs(k, 18, ndf, gaf);
   run(c, k, count, 1);
-  std::vector<std::vector<float>> out = {readBack(s.queue, e, count), readBack(s.queue, err, count),
-                                         readBack(s.queue, a, count), readBack(s.queue, b, count)};
-  keep(key, out);
-  return out;
+  return {readBack(s.queue, e, count), readBack(s.queue, err, count), readBack(s.queue, a, count),
+          readBack(s.queue, b, count)};
 }
 
 KernelTable KernelRunner::kp(int ndf, int n, bool nodeGrid, float rLo, float rHi) {
