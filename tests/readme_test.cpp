@@ -89,11 +89,14 @@ TEST(Readme, CommandsRunAsShown) {
     CmdResult r = run(args, d.string());
     const int expected = c.shown.rfind("VIOLATES", 0) == 0 ? 1 : 0;
     EXPECT_EQ(r.code, expected) << "README: brdfbake " << c.args << "\n" << r.out;
-    if (!c.shown.empty()) EXPECT_EQ(firstLine(r.out), c.shown) << "README: brdfbake " << c.args;
+    if (!c.shown.empty()) {
+      EXPECT_EQ(firstLine(r.out), c.shown) << "README: brdfbake " << c.args;
+    }
     // files the comment names ("lut/splitsum_ggx_smith-correlated.ktx2, R16G16_SFLOAT")
     std::smatch m;
-    if (std::regex_search(c.comment, m, std::regex("([\\w.-]+/[\\w.-]+\\.\\w+)")))
+    if (std::regex_search(c.comment, m, std::regex("([\\w.-]+/[\\w.-]+\\.\\w+)"))) {
       EXPECT_TRUE(fs::exists(d / m[1].str())) << m[1] << " (README: brdfbake " << c.args << ")";
+    }
     // what a bake writes lands where -o says, or in out/
     if (r.code == 0 && r.out.rfind("file ", 0) == 0) {
       std::istringstream lines(r.out);

@@ -39,10 +39,12 @@ TEST(Render, FurnaceRowsVanishAndTheSingleRowLosesEnergy) {
   }
   // Kulla-Conty from the albedo and albedo-avg tables: within 2e-3 of 1 everywhere
   std::smatch kc = rowLine(r.out, "kulla-conty");
-  if (!kc.empty()) EXPECT_LT(std::stod(kc[2].str()), 2e-3) << r.out;
+  ASSERT_FALSE(kc.empty()) << "no kulla-conty row\n" << r.out;
+  EXPECT_LT(std::stod(kc[2].str()), 2e-3) << r.out;
   // single scattering against the reference's E(mu, r): within 1e-2 at every sampled pixel
   std::smatch single = rowLine(r.out, "single");
-  if (!single.empty()) EXPECT_LT(std::stod(single[2].str()), 1e-2) << r.out;
+  ASSERT_FALSE(single.empty()) << "no single row\n" << r.out;
+  EXPECT_LT(std::stod(single[2].str()), 1e-2) << r.out;
 
   const brdfbake::TableImage img = brdfbake::readTableExr((d / "out/furnace.exr").string());
   ASSERT_EQ(img.width, 6 * 24);
@@ -69,7 +71,8 @@ TEST(Render, FurnaceRowsVanishAndTheSingleRowLosesEnergy) {
   EXPECT_LT(rim(5, 6), at(0, 5, 6));
   EXPECT_GT(rim(5, 6), 0.2f);  // 0.36: at r = 1 single scattering loses most of a grazing view's energy
   std::smatch glass = rowLine(r.out, "glass");
-  if (!glass.empty()) EXPECT_LE(std::stod(glass[2].str()), 1e-6) << "glass above 1\n" << r.out;
+  ASSERT_FALSE(glass.empty()) << "no glass row\n" << r.out;
+  EXPECT_LE(std::stod(glass[2].str()), 1e-6) << "glass above 1\n" << r.out;
   EXPECT_EQ(img.strings.at("render.rows"), "single,kulla-conty,single-table,dielectric-lambert,gold,sheen,glass");
   EXPECT_NE(img.strings.at("render.tables").find("tables/dielectric_ggx_smith-correlated.exr"), std::string::npos);
   EXPECT_NE(img.strings.at("render.tables").find("tables/albedo-avg_ggx_smith-correlated.exr"), std::string::npos);
@@ -107,7 +110,8 @@ TEST(Render, ABrokenCompensationFailsTheMeasurement) {
   CmdResult r = run(std::string(kSmall) + " --rows kulla-conty -o out", d.string(), "BRDFBAKE_TEST_RENDER_LOBE_SCALE=0.5");
   EXPECT_EQ(r.code, 1) << r.out;
   std::smatch m = rowLine(r.out, "kulla-conty");
-  if (!m.empty()) EXPECT_NE(m[4].str(), "0") << r.out;
+  ASSERT_FALSE(m.empty()) << "no kulla-conty row\n" << r.out;
+  EXPECT_NE(m[4].str(), "0") << r.out;
   EXPECT_NE(r.out.find("FAIL: a row's pixels are off by more than the tables predict"), std::string::npos) << r.out;
 }
 
@@ -120,7 +124,8 @@ TEST(Render, AnyMicrofacetPair) {
   EXPECT_NE(r.out.find("beckmann + smith"), std::string::npos) << r.out;
   for (const char* row : {"single", "kulla-conty", "glass"}) {
     std::smatch m = rowLine(r.out, row);
-    if (!m.empty()) EXPECT_EQ(m[4].str(), "0") << row << "\n" << r.out;
+    ASSERT_FALSE(m.empty()) << "no " << row << " row\n" << r.out;
+    EXPECT_EQ(m[4].str(), "0") << row << "\n" << r.out;
   }
   const brdfbake::TableImage img = brdfbake::readTableExr((d / "out/furnace.exr").string());
   EXPECT_EQ(img.height, 3 * 24);

@@ -34,7 +34,7 @@ struct TableJob {
   std::vector<FileFormat> formats = {FileFormat::Exr};
   Precision precision = Precision::Float32;
   TableLayout layout = {};  // splitsum: axis order, flips, channels (formats/layout.h)
-  std::string layoutName;   // --layout NAME, or a name for --axes/--flip/--channels; "" as baked
+  std::string layoutName = {};  // --layout NAME, or a name for --axes/--flip/--channels; "" as baked
   bool muSqrt = false;      // splitsum, albedo: x holds u = sqrt(mu), texel i at mu = u_i^2 (--mu-axis sqrt)
   std::string merl = {};    // a measured material's MERL file (tables/measured.cpp), or ""
 };
