@@ -169,8 +169,15 @@ void setRArgs(cl::Kernel& k, const cl::Buffer& values, const cl::Buffer& bounds,
 // host/cl/runner_avg.cpp.
 std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, const std::vector<cl_float4>& nodes,
                                                               const HemiWeight& w, bool bare) {
-  const std::string prefix = launchKey('n', ndf, brdf64::gaf_canonical(ndf, gaf), bare) + weightKey(w);
-  auto pointKey = [&](const cl_float4& p) { return prefix + std::string(reinterpret_cast<const char*>(&p), sizeof p); };
+  const std::string launch = launchKey('n', ndf, brdf64::gaf_canonical(ndf, gaf), bare) + weightKey(w);
+  uint32_t id = 0;
+  while (id < pointLaunches_.size() && pointLaunches_[id] != launch) ++id;
+  if (reuse_ && id == pointLaunches_.size()) pointLaunches_.push_back(launch);
+  auto pointKey = [&](const cl_float4& p) {
+    PointKey k{id, {}};
+    std::memcpy(k.bits, &p, sizeof k.bits);
+    return k;
+  };
   // the points not computed before in this bake (all of them without reuse), in their order
   std::vector<cl_float4> todo;
   std::vector<const std::array<float, 4>*> known(nodes.size(), nullptr);
