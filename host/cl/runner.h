@@ -18,12 +18,12 @@
 #include <cstdint>
 #include <cstring>
 #include <deque>
-#include <unordered_map>
 #include <functional>
-#include <mutex>
 #include <map>
+#include <mutex>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -120,10 +120,11 @@ class KernelRunner {
   // interpolation probes) keep their results, and a later launch with the same arguments, the GAF
   // taken through gaf_canonical (kernels/brdf/gaf.h), returns them instead of running again: the
   // tables of ggx + smith-exact are those of ggx + smith. hemisphereNodes keeps each point's and
-  // launches only the points it has not seen. At most kReuseBytes of tables and kReusePoints
-  // points are kept, the oldest tables dropped first. Off by default: timings and ladders run their launches again on purpose.
+  // launches only the points it has not seen. At most kReuseBytes of tables (the oldest dropped
+  // first) and kReusePoints points (about 20 MiB; later points are not kept) are kept. Off by
+  // default: timings and ladders run their launches again on purpose.
   static constexpr size_t kReuseBytes = size_t(64) << 20;
-  static constexpr size_t kReusePoints = size_t(1) << 18;  // hemisphereNodes' points kept (~30 MB at most)
+  static constexpr size_t kReusePoints = size_t(1) << 18;
   void setReuse(bool on) {
     reuse_ = on;
     if (!on) kept_.clear(), keptBytes_ = 0, points_.clear(), pointLaunches_.clear();
