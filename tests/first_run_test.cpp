@@ -181,7 +181,8 @@ TEST(FirstRun, TimingsNameEveryStage) {
   ASSERT_EQ(std::system(cmd.c_str()), 0) << bytes(d / "timings.txt");
   const std::string t = bytes(d / "timings.txt");
   CmdResult r{0, bytes(d / "report.txt")};
-  const std::vector<std::string> stages = {"timings (wall seconds):", "device   ", "program  ggx + smith-correlated: ",
+  const std::vector<std::string> stages = {"timings (wall seconds):", "device   ", " (platforms listed in ",
+                                           "program  ggx + smith-correlated: ",
                                            "table    out/splitsum_ggx_smith-correlated.exr", "table    out/kp_ggx.exr",
                                            "write    4 file(s) into out/", "total    since the command started"};
   size_t at = 0;

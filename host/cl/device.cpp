@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 
@@ -48,11 +49,13 @@ const char* kInstallHint =
 
 std::vector<DeviceEntry> listDevices() {
   std::vector<cl::Platform> platforms;
+  const auto t0 = std::chrono::steady_clock::now();
   try {
     cl::Platform::get(&platforms);
   } catch (const cl::Error&) {
     platforms.clear();  // the ICD loader reports "no platform" as CL_PLATFORM_NOT_FOUND_KHR (-1001)
   }
+  const double platformSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (platforms.empty()) throw Error(kExitUnavailable, kInstallHint);
   std::vector<DeviceEntry> out;
   for (auto& p : platforms) {
@@ -70,6 +73,7 @@ std::vector<DeviceEntry> listDevices() {
       e.version = d.getInfo<CL_DEVICE_VERSION>();
       e.fp64 = d.getInfo<CL_DEVICE_EXTENSIONS>().find("cl_khr_fp64") != std::string::npos;
       e.device = d;
+      e.platformSeconds = platformSeconds;
       out.push_back(e);
     }
   }

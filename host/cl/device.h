@@ -13,6 +13,9 @@ struct DeviceEntry {
   std::string version;  // device OpenCL version string
   bool fp64 = false;
   cl::Device device;
+  // Wall seconds the platforms took to list (clGetPlatformIDs): the ICD loader opening each
+  // driver, PoCL with the libraries it links (LLVM, Clang), the first time in a process.
+  double platformSeconds = 0;
 };
 
 // Every device of every platform. Throws Error(kExitUnavailable) when there is no platform,

@@ -9,7 +9,8 @@ namespace brdfbake {
 class BakeObserver {
  public:
   virtual ~BakeObserver() = default;
-  // A stage finished, with its wall seconds. kind: "device" (platform, device and context),
+  // A stage finished, with its wall seconds. kind: "device" (platform, device and context; `what`
+  // names the device and the seconds the platforms took to list, "(platforms listed in 0.019 s)"),
   // "program" (one OpenCL program loaded from its binary or compiled; `what` says which and how),
   // "table" (one table computed: `what` is its file), "write" (the files landing as one set,
   // 3D tables streamed into them).
