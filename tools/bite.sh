@@ -14,7 +14,7 @@ mutation() {
                      "CliEvidence.VerifyPassesTheDefaultPair" ;;
     program-identity) set -- "$1" host/cl/program_cache.cpp 'if (!id || *id != identity) continue;' \
                         'if (!id) continue;' "FirstRun.StaleForeignOrTornEntries" ;;
-    program-checksum) set -- "$1" host/cl/program_cache.cpp 'sum != fnv1a(bin.data(), bin.size()) || ' 'false || ' \
+    program-checksum) set -- "$1" host/cl/program_cache.cpp 'sum != entryHash(bin.data(), bin.size()) || ' 'false || ' \
                         "FirstRun.StaleForeignOrTornEntries" ;;
     progress-on-pipe) set -- "$1" host/cli/console.cpp 'const bool progress = !quiet && ::isatty(STDERR_FILENO);' \
                         'const bool progress = !quiet;' "FirstRun.ProgressLineOnATerminalOnly" ;;

@@ -38,7 +38,7 @@ constexpr uint64_t kMaxEntry = 256ull << 20;
 // bijection of h, so a change in any one word always changes the result. Byte by byte, the default
 // program's 1 MB (binary and identity) took 1.2 ms of each bake's program load; this takes 0.09 ms.
 constexpr uint64_t kFnvBasis = 1469598103934665603ull, kFnvPrime = 1099511628211ull;
-uint64_t fnv1a(const unsigned char* p, size_t n) {
+uint64_t entryHash(const unsigned char* p, size_t n) {
   uint64_t h[4] = {kFnvBasis, kFnvBasis ^ 1, kFnvBasis ^ 2, kFnvBasis ^ 3};
   size_t i = 0;
   for (; i + 32 <= n; i += 32)
@@ -52,7 +52,7 @@ uint64_t fnv1a(const unsigned char* p, size_t n) {
   for (uint64_t v : h) r = (r ^ v) * kFnvPrime;
   return (r ^ n) * kFnvPrime;
 }
-uint64_t fnv1a(const std::string& s) { return fnv1a(reinterpret_cast<const unsigned char*>(s.data()), s.size()); }
+uint64_t entryHash(const std::string& s) { return entryHash(reinterpret_cast<const unsigned char*>(s.data()), s.size()); }
 
 std::string hex64(uint64_t v) {
   char b[17];
@@ -182,7 +182,7 @@ std::vector<std::string> programCacheDirs() {
 }
 
 std::optional<ProgramBinary> loadProgram(const std::string& identity, std::string* where) {
-  const std::string file = hex64(fnv1a(identity)) + ".clbin";
+  const std::string file = hex64(entryHash(identity)) + ".clbin";
   for (const std::string& dir : programCacheDirs()) {
     std::optional<std::string> data = readRegular(dir + "/" + file, kMaxEntry);
     if (!data) continue;
@@ -193,7 +193,7 @@ std::optional<ProgramBinary> loadProgram(const std::string& identity, std::strin
     if (!getU64(*data, &at, &n) || n > data->size() - at) continue;
     ProgramBinary bin(data->begin() + static_cast<std::ptrdiff_t>(at), data->begin() + static_cast<std::ptrdiff_t>(at + n));
     at += static_cast<size_t>(n);
-    if (!getU64(*data, &at, &sum) || sum != fnv1a(bin.data(), bin.size()) || bin.empty()) continue;
+    if (!getU64(*data, &at, &sum) || sum != entryHash(bin.data(), bin.size()) || bin.empty()) continue;
     if (where) *where = dir + "/" + file;
     return bin;
   }
@@ -210,8 +210,8 @@ std::string storeProgram(const std::string& identity, const ProgramBinary& binar
   data += identity;
   putU64(data, binary.size());
   data.append(reinterpret_cast<const char*>(binary.data()), binary.size());
-  putU64(data, fnv1a(binary.data(), binary.size()));
-  const std::string path = dir + "/" + hex64(fnv1a(identity)) + ".clbin";
+  putU64(data, entryHash(binary.data(), binary.size()));
+  const std::string path = dir + "/" + hex64(entryHash(identity)) + ".clbin";
   std::string tmp = dir + "/.program.brdfbake-tmp-XXXXXX";
   int fd = ::mkstemp(&tmp[0]);
   if (fd < 0) return dir + ": " + std::strerror(errno);
@@ -253,7 +253,7 @@ PreparedPrograms preparedPrograms(const std::string& dir, const cl::Device& devi
     bool current = false;
     if (programKeyNamed(name, &key)) {
       const std::string want = programIdentity(device, name, kProgramBuildOptions, programSource(key));
-      current = f == hex64(fnv1a(want)) + ".clbin" && *id == want;
+      current = f == hex64(entryHash(want)) + ".clbin" && *id == want;
     }
     if (current)
       out.ready.push_back(name);
@@ -266,4 +266,3 @@ PreparedPrograms preparedPrograms(const std::string& dir, const cl::Device& devi
 }
 
 }  // namespace brdfbake
-
