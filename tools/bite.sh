@@ -45,6 +45,8 @@ mutation() {
     lane-sum4) set -- "$1" kernels/brdf/compat.h 'float16 x = (float16)(ab.even + ab.odd, cd.even + cd.odd);' \
                  'float16 x = (float16)(cd.even + cd.odd, ab.even + ab.odd);' \
                  "AllPairs/PairTest.HemisphereMatchesReference/ggx_smith_correlated" ;;
+    devices-stale) set -- "$1" host/cl/program_cache.cpp 'current = f == hex64(entryHash(want)) + ".clbin" && *id == want;' \
+                     'current = f == hex64(entryHash(want)) + ".clbin";' "FirstRun.DevicesPreparesAndListsPrograms" ;;
     node-reuse) set -- "$1" host/cl/runner_launch.cpp '(*known[k])[q] : out[q][next];' '(*known[k])[q] : out[q][0];' \
                   "KernelReuse.NodesOverlapping" ;;
     *) return 64 ;;
@@ -53,7 +55,7 @@ mutation() {
 }
 names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
-       canonical-gaf trap-pi-batch ggx-one-division lane-sum4 node-reuse"
+       canonical-gaf trap-pi-batch ggx-one-division lane-sum4 node-reuse devices-stale"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
