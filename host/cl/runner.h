@@ -232,8 +232,8 @@ class KernelRunner {
   // hemisphereNodes' results point by point (setReuse), by the launch's arguments and the point:
   // the albedo table's probes are mostly points of the split sum's (the same layer points on every
   // fourth row), and a point's values do not depend on the others in its launch. A key is the
-  // launch's index in pointLaunches_ and the point's bits: with the arguments' bytes in a string
-  // per point, every pair's bake spent 0.15 s of its 6 s building and hashing them (perf).
+  // launch's index in pointLaunches_ and the point's bits: keyed by a string of the arguments'
+  // bytes per point, every pair's bake spends 0.15 s of its 6 s building and hashing them (perf).
   struct PointKey {
     uint32_t launch;
     uint32_t bits[4];
