@@ -45,6 +45,32 @@ BRDF_FN lane_t cos_arc(lane_t x) {
   return -(q * u);
 }
 
+/* One GK15 panel's node values over phi in [lo, hi] (the nodes GK15_XL from k), the substitution's
+ * Jacobian applied (sq_lo, sq_hi: hemi_phi_gk). */
+BRDF_FN void hemi_phi_gk_values(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo,
+                                real hi, int sq_lo, int sq_hi, int k, lane_t* fa, lane_t* fb) {
+  real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo), len = hi - lo;
+  lane_t x = lane_load(GK15_XL, k);
+  if (sq_lo || sq_hi) {
+    lane_t y = RC(0.5) * (x + RC(1.0)), phi, jac;
+    if (sq_lo && sq_hi) {
+      phi = lo + len * y * y * (RC(3.0) - RC(2.0) * y);
+      jac = RC(3.0) * y * (RC(1.0) - y); /* (dphi/dy)/(2 hw) */
+    } else if (sq_lo) {
+      phi = lo + len * y * y;
+      jac = y;
+    } else {
+      phi = hi - len * (RC(1.0) - y) * (RC(1.0) - y);
+      jac = RC(1.0) - y;
+    }
+    hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(phi), fa, fb);
+    *fa *= RC(2.0) * jac;
+    *fb *= RC(2.0) * jac;
+  } else {
+    hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(mid + hw * x), fa, fb);
+  }
+}
+
 /* GK15 over phi in [lo, hi]: adds the Kronrod values to ka, kb and their error estimates
  * (gk_error) to ea, eb. All 15 nodes in one lane vector on the device (HEMI_GK_N = 16, the last of
  * weight 0); the nodes' values are kept for resasc (a second pass over them).
@@ -62,7 +88,7 @@ BRDF_FN lane_t cos_arc(lane_t x) {
  * the smoothstep for both). */
 BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo,
                          real hi, int sq_lo, int sq_hi, real* ka, real* kb, real* ea, real* eb) {
-  real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo), len = hi - lo;
+  real hw = RC(0.5) * (hi - lo);
   real sa = RC(0.0), sb = RC(0.0), da = RC(0.0), db = RC(0.0);
   real ra = RC(0.0), rb = RC(0.0); /* resasc: the Kronrod weights sum to 2, so the mean is sa/2 */
 #if BRDF_LANES < HEMI_GK_N
@@ -71,25 +97,7 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
   int k = 0;
   for (; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
     lane_t fa, fb;
-    lane_t x = lane_load(GK15_XL, k);
-    if (sq_lo || sq_hi) {
-      lane_t y = RC(0.5) * (x + RC(1.0)), phi, jac;
-      if (sq_lo && sq_hi) {
-        phi = lo + len * y * y * (RC(3.0) - RC(2.0) * y);
-        jac = RC(3.0) * y * (RC(1.0) - y); /* (dphi/dy)/(2 hw) */
-      } else if (sq_lo) {
-        phi = lo + len * y * y;
-        jac = y;
-      } else {
-        phi = hi - len * (RC(1.0) - y) * (RC(1.0) - y);
-        jac = RC(1.0) - y;
-      }
-      hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(phi), &fa, &fb);
-      fa *= RC(2.0) * jac;
-      fb *= RC(2.0) * jac;
-    } else {
-      hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(mid + hw * x), &fa, &fb);
-    }
+    hemi_phi_gk_values(ndf, gaf, p, mu, s, h, sn, lo, hi, sq_lo, sq_hi, k, &fa, &fb);
     lane_t wk = lane_load(GK15_WKL, k), wd = lane_load(GK15_WDL, k);
 #if BRDF_LANES < HEMI_GK_N
     sa += lane_sum(wk * fa);
@@ -124,6 +132,38 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
   *ea += ga * hw;
   *eb += gb * hw;
 }
+
+#if BRDF_LANES >= HEMI_GK_N
+/* hemi_phi_gk on [lo1, hi1], then on [lo2, hi2] (p12), two panels of one azimuth integral; sq12: each
+ * one's sq_lo + 2 sq_hi. The same bits as the two calls: each lane vector goes through the same
+ * reduction tree as alone (compat.h lane_sum4), and gk_error4 is gk_error2's operations lane by
+ * lane. What it saves is the wait: a panel's resasc waits on its mean and its estimate on its
+ * resasc, and the other panel's reductions run beside them. Measured: ggx + smith-correlated's
+ * 128^2 split-sum kernel 0.0359 to 0.0364 s against 0.0378 to 0.0381 s with one panel at a time
+ * (brdfbake-bench --times-only --repeat 5, two builds, three interleaved runs each); pairing the
+ * panels of neighbouring outer nodes as well, or two nodes' trapezoids, gained nothing more. */
+BRDF_FN void hemi_phi_gk_pair(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, float4 p12,
+                              int2 sq12, real* ka, real* kb, real* ea, real* eb) {
+  lane_t fa1, fb1, fa2, fb2;
+  hemi_phi_gk_values(ndf, gaf, p, mu, s, h, sn, p12.x, p12.y, sq12.x & 1, sq12.x >> 1, 0, &fa1, &fb1);
+  hemi_phi_gk_values(ndf, gaf, p, mu, s, h, sn, p12.z, p12.w, sq12.y & 1, sq12.y >> 1, 0, &fa2, &fb2);
+  lane_t wk = lane_load(GK15_WKL, 0), wd = lane_load(GK15_WDL, 0);
+  float4 s1 = lane_sum4(wk * fa1, wk * fb1, wd * fa1, wd * fb1);
+  float4 s2 = lane_sum4(wk * fa2, wk * fb2, wd * fa2, wd * fb2);
+  float4 r4 = lane_sum4(wk * fabs(fa1 - RC(0.5) * s1.x), wk * fabs(fb1 - RC(0.5) * s1.y),
+                        wk * fabs(fa2 - RC(0.5) * s2.x), wk * fabs(fb2 - RC(0.5) * s2.y));
+  float4 g4 = gk_error4((float4)(fabs(s1.z), fabs(s1.w), fabs(s2.z), fabs(s2.w)), r4);
+  real hw1 = RC(0.5) * (p12.y - p12.x), hw2 = RC(0.5) * (p12.w - p12.z);
+  *ka += s1.x * hw1;
+  *kb += s1.y * hw1;
+  *ea += g4.x * hw1;
+  *eb += g4.y * hw1;
+  *ka += s2.x * hw2;
+  *kb += s2.y * hw2;
+  *ea += g4.z * hw2;
+  *eb += g4.w * hw2;
+}
+#endif
 
 /* A trapezoid's running sums (values, n/2 and n/4 differences) before its last node, phi = pi,
  * which hemisphere.h evaluates for a whole outer panel's nodes in one lane vector. */
@@ -282,6 +322,11 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   }
   sort_ascending(br, nb);
   real lo = RC(0.0);
+#if BRDF_LANES >= HEMI_GK_N
+  /* the panels two at a time (hemi_phi_gk_pair), in order; an odd one last, alone */
+  real hlo = RC(0.0), hhi = RC(0.0);
+  int hsq = 0, held = 0;
+#endif
   for (int k = 0; k <= nb; ++k) {
     real hi = k < nb ? br[k] : phimax;
     if (hi > lo) {
@@ -292,10 +337,26 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
       real w = (hi - lo) / (real)pieces;
       for (int q = 0; q < pieces; ++q) {
         real a = lo + w * (real)q, b = q + 1 < pieces ? lo + w * (real)(q + 1) : hi;
-        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, a, b, q == 0 && sl, q + 1 == pieces && (sh || hz), ia, ib, ea, eb);
+        int sq = (q == 0 && sl) | ((q + 1 == pieces && (sh || hz)) << 1);
+#if BRDF_LANES >= HEMI_GK_N
+        if (held) {
+          hemi_phi_gk_pair(ndf, gaf, p, mu, s, h, sn, (float4)(hlo, hhi, a, b), (int2)(hsq, sq), ia, ib, ea, eb);
+          held = 0;
+        } else {
+          hlo = a;
+          hhi = b;
+          hsq = sq;
+          held = 1;
+        }
+#else
+        hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, a, b, sq & 1, sq >> 1, ia, ib, ea, eb);
+#endif
       }
     }
     lo = hi;
   }
+#if BRDF_LANES >= HEMI_GK_N
+  if (held) hemi_phi_gk(ndf, gaf, p, mu, s, h, sn, hlo, hhi, hsq & 1, hsq >> 1, ia, ib, ea, eb);
+#endif
 }
 #endif /* BRDF_AZIMUTH_H */

@@ -147,6 +147,11 @@ BRDF_FN float2 gk_error2(float2 kg, float2 resasc) {
   float2 q = fmin((float2)(1.0f), (float)GK_SHARP_C * kg / resasc);
   return select(kg, resasc * q * sqrt(q), isgreater(resasc, (float2)(0.0f)));
 }
+/* The same for two panels' two moments (azimuth.h hemi_phi_gk_pair). */
+BRDF_FN float4 gk_error4(float4 kg, float4 resasc) {
+  float4 q = fmin((float4)(1.0f), (float)GK_SHARP_C * kg / resasc);
+  return select(kg, resasc * q * sqrt(q), isgreater(resasc, (float4)(0.0f)));
+}
 #endif
 
 /* The error of the trapezoid rule T_n on a smooth periodic integrand from d1 = |T_n - T_{n/2}| and
