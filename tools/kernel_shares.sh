@@ -40,6 +40,10 @@ no_tails() {
   float2 g2 = gk_error2((float2)(fabs(da), fabs(db)), (float2)(ra, rb));
   real ga = g2.x, gb = g2.y;' '  }
   real ga = RC(0.0) * da, gb = RC(0.0) * db;'
+  replace kernels/integrate/azimuth.h '  float4 r4 = lane_sum4(wk * fabs(fa1 - RC(0.5) * s1.x), wk * fabs(fb1 - RC(0.5) * s1.y),
+                        wk * fabs(fa2 - RC(0.5) * s2.x), wk * fabs(fb2 - RC(0.5) * s2.y));
+  float4 g4 = gk_error4((float4)(fabs(s1.z), fabs(s1.w), fabs(s2.z), fabs(s2.w)), r4);' \
+    '  float4 g4 = RC(0.0) * (float4)(s1.z, s1.w, s2.z, s2.w);'
   replace kernels/integrate/azimuth.h '    float2 c2 = lane_sum2(ek * fa, ek * fb);' '    float2 c2 = (float2)(RC(0.0), RC(0.0));'
   replace kernels/integrate/azimuth.h '  *ea = trap_error(fabs(t.da), fabs(t.ca)) * step;
   *eb = trap_error(fabs(t.db), fabs(t.cb)) * step;' '  *ea = RC(0.0);
@@ -49,9 +53,9 @@ no_tails() {
   res->err_b += RC(0.0) * (rb + peb);'
 }
 no_nodes() {
-  replace kernels/integrate/azimuth.h 'hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(mid + hw * x), &fa, &fb);' \
-    '{ lane_t cc = mid + hw * x; fa = cc * sn; fb = cc * cc; }'
-  replace kernels/integrate/azimuth.h 'hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(phi), &fa, &fb);' '{ fa = phi * sn; fb = phi * phi; }'
+  replace kernels/integrate/azimuth.h 'hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(mid + hw * x), fa, fb);' \
+    '{ lane_t cc = mid + hw * x; *fa = cc * sn; *fb = cc * cc; }'
+  replace kernels/integrate/azimuth.h 'hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(phi), fa, fb);' '{ *fa = phi * sn; *fb = phi * phi; }'
   replace kernels/integrate/azimuth.h 'hemi_node(ndf, gaf, p, mu, s, h, sn, lane_load(cs, k), &fa, &fb);' \
     '{ lane_t cc = lane_load(cs, k); fa = cc * sn + RC(2.0); fb = cc * cc; }'
   replace kernels/integrate/hemisphere.h 'hemi_node_c(ndf, gaf, p, mu, s, lane_load(nc, k), lane_load(nsn, k), RC(-1.0), &fa, &fb);' \
@@ -60,6 +64,7 @@ no_nodes() {
   replace kernels/integrate/azimuth.h '  *ea += ga * hw;
   *eb += gb * hw;' '  *ea += RC(0.0) * ga;
   *eb += RC(0.0) * gb;'
+  replace kernels/integrate/azimuth.h '  float4 g4 = gk_error4(' '  float4 g4 = RC(0.0) * gk_error4('
   replace kernels/integrate/azimuth.h '  *ea = trap_error(fabs(t.da), fabs(t.ca)) * step;' '  *ea = RC(0.0) * trap_error(fabs(t.da), fabs(t.ca));'
   replace kernels/integrate/azimuth.h '  *eb = trap_error(fabs(t.db), fabs(t.cb)) * step;' '  *eb = RC(0.0) * trap_error(fabs(t.db), fabs(t.cb));'
   replace kernels/integrate/hemisphere.h '  res->err_a += gk_error(fabs(pda), ra, 1) + pea;
@@ -71,6 +76,14 @@ no_refine() {
 }
 skeleton() {
   no_nodes
+  replace kernels/integrate/azimuth.h '  float4 s1 = lane_sum4(wk * fa1, wk * fb1, wd * fa1, wd * fb1);
+  float4 s2 = lane_sum4(wk * fa2, wk * fb2, wd * fa2, wd * fb2);
+  float4 r4 = lane_sum4(wk * fabs(fa1 - RC(0.5) * s1.x), wk * fabs(fb1 - RC(0.5) * s1.y),
+                        wk * fabs(fa2 - RC(0.5) * s2.x), wk * fabs(fb2 - RC(0.5) * s2.y));
+  float4 g4 = RC(0.0) * gk_error4((float4)(fabs(s1.z), fabs(s1.w), fabs(s2.z), fabs(s2.w)), r4);' \
+    '  float4 s1 = (float4)(wk.s0 * fa1.s0, wk.s1 * fb1.s1, RC(0.0), RC(0.0));
+  float4 s2 = (float4)(wk.s0 * fa2.s0, wk.s1 * fb2.s1, RC(0.0), RC(0.0));
+  float4 g4 = (float4)(RC(0.0));'
   replace kernels/integrate/azimuth.h '    float2 r2 = lane_sum2(wk * fabs(fa - RC(0.5) * sa), wk * fabs(fb - RC(0.5) * sb));
     ra = r2.x;
     rb = r2.y;
