@@ -36,8 +36,8 @@ no_tails() {
     ra = r2.x;
     rb = r2.y;
   }
-  /* both moments'"'"' gk_error in one float2: lane by lane gk_error'"'"'s operations, so its bits */
-  float2 g2 = gk_error2((float2)(fabs(da), fabs(db)), (float2)(ra, rb));
+  /* both moments'"'"' gk_error at once: lane by lane gk_error'"'"'s operations, so its bits */
+  float2 g2 = gk_error4((float4)(fabs(da), fabs(db), RC(0.0), RC(0.0)), (float4)(ra, rb, RC(0.0), RC(0.0))).xy;
   real ga = g2.x, gb = g2.y;' '  }
   real ga = RC(0.0) * da, gb = RC(0.0) * db;'
   replace kernels/integrate/azimuth.h '  float4 r4 = lane_sum4(wk * fabs(fa1 - RC(0.5) * s1.x), wk * fabs(fb1 - RC(0.5) * s1.y),
@@ -88,8 +88,8 @@ skeleton() {
     ra = r2.x;
     rb = r2.y;
   }
-  /* both moments'"'"' gk_error in one float2: lane by lane gk_error'"'"'s operations, so its bits */
-  float2 g2 = gk_error2((float2)(fabs(da), fabs(db)), (float2)(ra, rb));
+  /* both moments'"'"' gk_error at once: lane by lane gk_error'"'"'s operations, so its bits */
+  float2 g2 = gk_error4((float4)(fabs(da), fabs(db), RC(0.0), RC(0.0)), (float4)(ra, rb, RC(0.0), RC(0.0))).xy;
   real ga = g2.x, gb = g2.y;' '  }
   real ga = RC(0.0), gb = RC(0.0);'
   replace kernels/integrate/azimuth.h '    float4 s4 = lane_sum4(wk * fa, wk * fb, wd * fa, wd * fb);' \

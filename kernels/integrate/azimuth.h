@@ -123,8 +123,8 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
     ra = r2.x;
     rb = r2.y;
   }
-  /* both moments' gk_error in one float2: lane by lane gk_error's operations, so its bits */
-  float2 g2 = gk_error2((float2)(fabs(da), fabs(db)), (float2)(ra, rb));
+  /* both moments' gk_error at once: lane by lane gk_error's operations, so its bits */
+  float2 g2 = gk_error4((float4)(fabs(da), fabs(db), RC(0.0), RC(0.0)), (float4)(ra, rb, RC(0.0), RC(0.0))).xy;
   real ga = g2.x, gb = g2.y;
 #endif
   *ka += sa * hw;
@@ -136,12 +136,12 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
 #if BRDF_LANES >= HEMI_GK_N
 /* hemi_phi_gk on [lo1, hi1], then on [lo2, hi2] (p12), two panels of one azimuth integral; sq12: each
  * one's sq_lo + 2 sq_hi. The same bits as the two calls: each lane vector goes through the same
- * reduction tree as alone (compat.h lane_sum4), and gk_error4 is gk_error2's operations lane by
- * lane. What it saves is the wait: a panel's resasc waits on its mean and its estimate on its
- * resasc, and the other panel's reductions run beside them. Measured: ggx + smith-correlated's
- * 128^2 split-sum kernel 0.0359 to 0.0364 s against 0.0378 to 0.0381 s with one panel at a time
- * (brdfbake-bench --times-only --repeat 5, two builds, three interleaved runs each); pairing the
- * panels of neighbouring outer nodes as well, or two nodes' trapezoids, gained nothing more. */
+ * reduction tree as alone (compat.h lane_sum4), and gk_error4 works lane by lane. What it saves is
+ * the wait: a panel's resasc waits on its mean and its estimate on its resasc, and the other
+ * panel's reductions run beside them. Measured: ggx + smith-correlated's 128^2 split-sum kernel
+ * 0.0364 to 0.0367 s against 0.0375 to 0.0383 s with one panel at a time (brdfbake-bench
+ * --times-only --repeat 5, two builds, five interleaved runs each); pairing the panels of
+ * neighbouring outer nodes as well, or two nodes' trapezoids, gained nothing more. */
 BRDF_FN void hemi_phi_gk_pair(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, float4 p12,
                               int2 sq12, real* ka, real* kb, real* ea, real* eb) {
   lane_t fa1, fb1, fa2, fb2;

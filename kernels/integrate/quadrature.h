@@ -142,12 +142,8 @@ BRDF_FN real gk_error(real kg, real resasc, int sharp) {
   return resasc * q * sqrt(q);
 }
 #if defined(__OPENCL_C_VERSION__) && !defined(BRDF_LANE_PASS)
-/* gk_error(kg, resasc, 1) of a panel's two moments at once, lane by lane (azimuth.h). */
-BRDF_FN float2 gk_error2(float2 kg, float2 resasc) {
-  float2 q = fmin((float2)(1.0f), (float)GK_SHARP_C * kg / resasc);
-  return select(kg, resasc * q * sqrt(q), isgreater(resasc, (float2)(0.0f)));
-}
-/* The same for two panels' two moments (azimuth.h hemi_phi_gk_pair). */
+/* gk_error(kg, resasc, 1) lane by lane: two panels' two moments (azimuth.h hemi_phi_gk_pair), or one
+ * panel's in .xy (hemi_phi_gk). */
 BRDF_FN float4 gk_error4(float4 kg, float4 resasc) {
   float4 q = fmin((float4)(1.0f), (float)GK_SHARP_C * kg / resasc);
   return select(kg, resasc * q * sqrt(q), isgreater(resasc, (float4)(0.0f)));
