@@ -240,7 +240,8 @@ BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle
   *ib = RC(0.0);
   *ea = RC(0.0);
   *eb = RC(0.0);
-  real kinks[4];
+  /* zeroed: only the first nk are read, which GCC's host build cannot see (-Wmaybe-uninitialized) */
+  real kinks[4] = {RC(0.0), RC(0.0), RC(0.0), RC(0.0)};
   int nk = gaf_kinks(gaf, mu, s, h.c, sn, kinks);
   /* Fresnel's kink at o.h = oc (total internal reflection): cos phi = (oc - mu c)/(s sn); F has a
    * square-root end there (panels beside it substitute) */
