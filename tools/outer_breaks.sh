@@ -43,8 +43,8 @@ open(p, "w").write(s)
 p = k + "/integrate/azimuth.h"
 s = open(p).read()
 s = s.replace('#include "integrate/quadrature.h"\n', '#include "integrate/quadrature.h"\nextern long g_nodes;\n', 1)
-for a, b in [("  real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo), len = hi - lo;",
-              "  real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo), len = hi - lo;\n  g_nodes += 15;"),
+for a, b in [("  real hw = RC(0.5) * (hi - lo);\n",  # hemi_phi_gk: once per GK15 panel
+              "  real hw = RC(0.5) * (hi - lo);\n  g_nodes += 15;\n"),
              ("  t.n = n;\n", "  t.n = n;\n  g_nodes += n + 1;\n")]:
     if a not in s: sys.exit("outer_breaks: azimuth.h changed; update this script")
     s = s.replace(a, b, 1)
