@@ -41,16 +41,13 @@ count() {
     echo "node_counts: '$2' is not in $1 any more; update this script" >&2
     exit 2
   fi
-  echo "$line" | cut -d: -f1 | tr -d ' *'
+  c=$(echo "$line" | cut -d: -f1 | tr -d ' *')
+  case "$c" in '#####'|'-') echo 0 ;; *) echo "$c" ;; esac
 }
 trap_n=$(count azimuth.h 'hemi_node(ndf, gaf, p, mu, s, h, sn, lane_load(cs, k), &fa, &fb);')
 gk_plain=$(count azimuth.h 'hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(mid + hw * x), fa, fb);')
 gk_sub=$(count azimuth.h 'hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(phi), fa, fb);')
 pi_n=$(count hemisphere.h 'hemi_node_c(ndf, gaf, p, mu, s, lane_load(nc, k), lane_load(nsn, k), RC(-1.0), &fa, &fb);')
-for v in trap_n gk_plain gk_sub pi_n; do
-  eval "x=\$$v"
-  case "$x" in ''|'#####'|'-') eval "$v=0" ;; esac
-done
 total=$((trap_n + gk_plain + gk_sub + pi_n))
 echo "integrand nodes, $ndf + $gaf, ${n}x${n} texel centres (host, float, one lane per node):"
 for v in trap_n pi_n gk_plain gk_sub; do
@@ -69,10 +66,6 @@ outer=$(count hemisphere.h 'hemi_panel(ndf, gaf, p, mu, s, t1, v1, cur, next, pa
 traps=$(count azimuth.h '  t.n = n;')
 arcs=$(count azimuth.h 'sort_ascending(br, nb);')
 panels=$(count azimuth.h 'real hw = RC(0.5) * (hi - lo);')
-for v in outer traps arcs panels; do
-  eval "x=\$$v"
-  case "$x" in ''|'#####'|'-') eval "$v=0" ;; esac
-done
 awk -v r="$rules" -v o="$outer" -v t="$traps" -v a="$arcs" -v g="$panels" 'BEGIN {
   printf "per rule run (%d runs): %.2f outer panels, %.1f trapezoids, %.1f arcs, %.2f GK15 panels per arc\n",
          r, o / r, t / r, a / r, (a > 0 ? g / a : 0) }'
