@@ -42,6 +42,8 @@ mutation() {
                      'lane_load(nsn, k), RC(-0.999), &fa, &fb);' "AllPairs/PairTest.HemisphereMatchesReference/ggx_smith_correlated" ;;
     ggx-one-division) set -- "$1" kernels/brdf/gaf.h 'g = ni * q / (ni * q * (no + clo) + RC(0.5) * no * x);' \
                         'g = ni * q / (ni * q * (no + clo) + RC(0.5) * x);' "Gaf.KernelFormsMatchTheReferencesOwnFormulas" ;;
+    gk-pair) set -- "$1" kernels/integrate/azimuth.h '  *ka += s2.x * hw2;' '  *ka += s2.x * hw1;' \
+               "AllPairs/PairTest.HemisphereMatchesReference/ggx_smith_correlated" ;;
     lane-sum4) set -- "$1" kernels/brdf/compat.h 'float16 x = (float16)(ab.even + ab.odd, cd.even + cd.odd);' \
                  'float16 x = (float16)(cd.even + cd.odd, ab.even + ab.odd);' \
                  "AllPairs/PairTest.HemisphereMatchesReference/ggx_smith_correlated" ;;
@@ -55,7 +57,7 @@ mutation() {
 }
 names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
-       canonical-gaf trap-pi-batch ggx-one-division lane-sum4 node-reuse devices-stale"
+       canonical-gaf trap-pi-batch ggx-one-division gk-pair lane-sum4 node-reuse devices-stale"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
@@ -75,7 +77,7 @@ PY
   echo "bite $name: caught by $tests"
 }
 case "${1:-}" in
-  list) echo "$names" | tr ' ' '\n' ;;
+  list) for m in $names; do echo "$m"; done ;;
   all|"")
     status=0
     for m in $names; do mutation "$m" || status=1; done
