@@ -4,8 +4,8 @@
 # replaced by stand-ins, then restores the kernels and rebuilds:
 #   full       the kernel as it is
 #   no-refine  no texel refined (the refinement target at 1): what the refined texels cost
-#   no-tails   each panel's error estimate left out (the GK15 resasc and gk_error, the trapezoid's
-#              error sums): what the estimates' reductions cost beyond the nodes
+#   no-tails   each panel's error estimate left out (the GK15 resasc and gk_error, the trapezoids'
+#              difference sums, in lanes too): what the estimates' reductions cost beyond the nodes
 #   no-nodes   every integrand node replaced by two multiplications, estimates zeroed (so that no
 #              texel is refined): what the rule's structure costs without the integrand
 #   skeleton   both: the outer nodes' set-up, the arcs' breakpoints and the control flow alone
@@ -31,7 +31,15 @@ if a not in s: sys.exit(1)
 open(p, "w").write(s.replace(a, b, 1))
 PY
 }
+# the whole-circle trapezoids in lanes (hemi_trap_lanes): only the value sums, no estimates
+trap_lanes_no_tails() {
+  replace kernels/integrate/azimuth.h '  for (int m = 0; m < 3; ++m) {
+    BRDF_TABLE real* w = wts[m];' '  for (int m = 0; m < 3; m += 3) {
+    BRDF_TABLE real* w = wts[m];'
+  replace kernels/integrate/azimuth.h '    lane_t e = select(d1, d1 * q * q, isgreater(d2, d1)) * step;' '    lane_t e = RC(0.0) * step;'
+}
 no_tails() {
+  trap_lanes_no_tails
   replace kernels/integrate/azimuth.h '    float2 r2 = lane_sum2(wk * fabs(fa - RC(0.5) * sa), wk * fabs(fb - RC(0.5) * sb));
     ra = r2.x;
     rb = r2.y;
@@ -53,6 +61,12 @@ no_tails() {
   res->err_b += RC(0.0) * (rb + peb);'
 }
 no_nodes() {
+  replace kernels/integrate/azimuth.h 'for (int q = 0; q < 4; ++q) hemi_node_c(ndf, gaf, p, mu, s, c, sn, COS_PI16[js[q]], &fa[q], &fb[q]);' \
+    'for (int q = 0; q < 4; ++q) { fa[q] = c * COS_PI16[js[q]] + RC(2.0); fb[q] = sn * sn; }'
+  replace kernels/integrate/azimuth.h '  hemi_node_c(ndf, gaf, p, mu, s, c, sn, RC(-1.0), &fa, &fb);' '  fa = c;
+  fb = sn;'
+  replace kernels/integrate/azimuth.h '    lane_t e = select(d1, d1 * q * q, isgreater(d2, d1)) * step;' \
+    '    lane_t e = RC(0.0) * select(d1, d1 * q * q, isgreater(d2, d1));'
   replace kernels/integrate/azimuth.h 'hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(mid + hw * x), fa, fb);' \
     '{ lane_t cc = mid + hw * x; *fa = cc * sn; *fb = cc * cc; }'
   replace kernels/integrate/azimuth.h 'hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(phi), fa, fb);' '{ *fa = phi * sn; *fb = phi * phi; }'
@@ -76,6 +90,10 @@ no_refine() {
 }
 skeleton() {
   no_nodes
+  replace kernels/integrate/azimuth.h '  for (int m = 0; m < 3; ++m) {
+    BRDF_TABLE real* w = wts[m];' '  for (int m = 0; m < 3; m += 3) {
+    BRDF_TABLE real* w = wts[m];'
+  replace kernels/integrate/azimuth.h '    lane_t e = RC(0.0) * select(d1, d1 * q * q, isgreater(d2, d1));' '    lane_t e = RC(0.0) * step;'
   replace kernels/integrate/azimuth.h '  float4 s1 = lane_sum4(wk * fa1, wk * fb1, wd * fa1, wd * fb1);
   float4 s2 = lane_sum4(wk * fa2, wk * fb2, wd * fa2, wd * fb2);
   float4 r4 = lane_sum4(wk * fabs(fa1 - RC(0.5) * s1.x), wk * fabs(fb1 - RC(0.5) * s1.y),

@@ -196,7 +196,9 @@ BRDF_FN void hemi_trap_finish(TrapSums t, real fa, real fb, real* ia, real* ib, 
  * estimates from the n/2- and n/4-interval rules (trap_error). Lane vectors of nodes. The last
  * nodes of a panel's 15 outer nodes go in one lane vector (hemisphere.h): one by one, in scalar
  * code, ggx + smith-correlated's split-sum kernel took 0.0547 s against 0.0456 s (brdfbake-bench
- * --times-only --repeat 5). */
+ * --times-only --repeat 5). On the device a panel whose nodes all take the 16 intervals plainly
+ * runs transposed instead (hemi_trap_lanes, the same bits); this form serves the refined budget,
+ * the panels with kinks and the host. */
 BRDF_FN TrapSums hemi_phi_trap(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, int n) {
   BRDF_TABLE real* cs = n == 32 ? COS_PI32 : COS_PI16;
   BRDF_TABLE real* w = n == 32 ? TRAP32_W : TRAP16_W;
@@ -229,6 +231,69 @@ BRDF_FN TrapSums hemi_phi_trap(int ndf, int gaf, BrdfParams p, real mu, real s, 
   }
   return t;
 }
+
+#if BRDF_LANES >= HEMI_GK_N
+/* Whether every node of a whole-circle outer panel takes the plain 16-interval trapezoid in
+ * hemi_phi (no GAF kink, no Fresnel kink, the default budget): then hemi_trap_lanes serves them. */
+BRDF_FN int hemi_trap_plain(int gaf, BrdfParams p, int refine) {
+  return refine == 0 && gaf != GAF_NEUMANN && gaf != GAF_COOK_TORRANCE && gaf != GAF_CHARLIE_SMITH &&
+         !(fresnel_kink(p.moments, p.fresnel, p.fr_x) > RC(0.0));
+}
+
+/* Six sums of the four azimuth nodes i, i + 1, i + 8, i + 9, as lane_sum4's tree pairs them:
+ * (x_i + x_(i+8)) + (x_(i+1) + x_(i+9)), each x a weight times a node's value, formed apart from
+ * the sums as lane_sum4's arguments are (no multiply-add contraction). */
+BRDF_FN void hemi_trap_quad(int ndf, int gaf, BrdfParams p, real mu, real s, lane_t c, lane_t sn, int i,
+                            lane_t* t) {
+  lane_t fa[4], fb[4];
+  int js[4] = {i, i + 8, i + 1, i + 9};
+  for (int q = 0; q < 4; ++q) hemi_node_c(ndf, gaf, p, mu, s, c, sn, COS_PI16[js[q]], &fa[q], &fb[q]);
+  BRDF_TABLE real* wts[3] = {TRAP16_W, TRAP16_D, TRAP16_D2};
+  for (int m = 0; m < 3; ++m) {
+    BRDF_TABLE real* w = wts[m];
+    lane_t a0 = w[js[0]] * fa[0], a1 = w[js[1]] * fa[1], a2 = w[js[2]] * fa[2], a3 = w[js[3]] * fa[3];
+    lane_t b0 = w[js[0]] * fb[0], b1 = w[js[1]] * fb[1], b2 = w[js[2]] * fb[2], b3 = w[js[3]] * fb[3];
+    t[2 * m] = (a0 + a1) + (a2 + a3);
+    t[2 * m + 1] = (b0 + b1) + (b2 + b3);
+  }
+}
+
+/* The 16-interval trapezoids (hemi_phi_trap, hemi_trap_finish) of an outer panel's 15 nodes at
+ * once: theta_h per lane (c, sn), the azimuth nodes in a loop (hemi_node_c, which forms a node as
+ * hemi_node does). Each lane's sums add the weighted nodes in the order of the reduction tree
+ * hemi_phi_trap uses (compat.h lane_sum4, lane_sum2) and the phi = pi node last, so every node's
+ * values and estimates are the bits hemi_phi gives; what goes is the horizontal reductions and
+ * the scalar set-up per node. Measured: ggx + smith-correlated's 128^2 split-sum kernel 0.0334 to
+ * 0.0336 s against 0.0364 to 0.0366 s (brdfbake-bench --times-only --repeat 5, three interleaved
+ * runs of both builds). */
+BRDF_FN void hemi_trap_lanes(int ndf, int gaf, BrdfParams p, real mu, real s, lane_t c, lane_t sn, lane_t* ia,
+                             lane_t* ib, lane_t* ea, lane_t* eb) {
+  lane_t t0[6], t1[6], t2[6], t3[6], sum[6];
+  hemi_trap_quad(ndf, gaf, p, mu, s, c, sn, 0, t0);
+  hemi_trap_quad(ndf, gaf, p, mu, s, c, sn, 2, t1);
+  hemi_trap_quad(ndf, gaf, p, mu, s, c, sn, 4, t2);
+  hemi_trap_quad(ndf, gaf, p, mu, s, c, sn, 6, t3);
+  for (int q = 0; q < 6; ++q) sum[q] = RC(0.0) + ((t0[q] + t1[q]) + (t2[q] + t3[q]));
+  lane_t fa, fb; /* the last node, phi = pi, as hemi_trap_finish adds it (one statement each, so the
+                  * same contraction into a fused multiply-add) */
+  hemi_node_c(ndf, gaf, p, mu, s, c, sn, RC(-1.0), &fa, &fb);
+  sum[0] += TRAP16_W[16] * fa;
+  sum[1] += TRAP16_W[16] * fb;
+  sum[2] += TRAP16_D[16] * fa;
+  sum[3] += TRAP16_D[16] * fb;
+  sum[4] += TRAP16_D2[16] * fa;
+  sum[5] += TRAP16_D2[16] * fb;
+  real step = BRDF_PI / (real)16;
+  *ia = sum[0] * step;
+  *ib = sum[1] * step;
+  for (int m = 0; m < 2; ++m) { /* trap_error, lane by lane */
+    lane_t d1 = fabs(sum[2 + m]), d2 = fabs(sum[4 + m]), q = d1 / d2;
+    lane_t e = select(d1, d1 * q * q, isgreater(d2, d1)) * step;
+    if (m == 0) *ea = e;
+    else *eb = e;
+  }
+}
+#endif
 
 /* int_0^phimax H dphi at fixed theta_h (full: phimax = pi; sn = sin theta_h, sinmax = sin phimax).
  * Results in ia, ib; bounds in ea, eb; or, on a whole circle without kinks, the trapezoid's sums

@@ -23,7 +23,9 @@
  * Cost: libm calls are counted per lane vector, not per node (compat.h): one float16 pass prepares
  * an outer panel's 15 nodes (expm1, sqrt, atan2, exp), one evaluates a GK15 azimuth panel (cos and
  * the integrand), one the 16-interval trapezoid but its last node (cosines from a table), and one
- * the last nodes, phi = pi, of all of the panel's trapezoids together.
+ * the last nodes, phi = pi, of all of the panel's trapezoids together; a whole-circle panel
+ * without kinks takes 17 passes instead, one per azimuth node over all 15 outer nodes
+ * (hemi_trap_lanes).
  */
 /* Once per pass (compat.h "Passes"). */
 #if defined(BRDF_SECOND_PASS) ? !defined(BRDF_HEMISPHERE_H_2) : !defined(BRDF_HEMISPHERE_H)
@@ -109,29 +111,41 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
     lane_store(sinmax, nsin, k);
     lane_store(RC(0.5) * jac * exp(-v) * ndf_weight(ndf, p, c, s2), nw, k);
   }
-  real va[15], vb[15], vea[15], veb[15]; /* each node's azimuth integrals and their bounds */
-  TrapSums trap[15];
-  int pending = 0;
-  for (int k = 0; k < 15; ++k) {
-    BrdfAngle h;
-    h.c = nc[k];
-    h.s2 = ns2[k];
-    h.t2 = nt2[k];
-    hemi_phi(ndf, gaf, p, mu, s, h, nsn[k], !partial, nphi[k], nsin[k], refine, &va[k], &vb[k], &vea[k], &veb[k],
-             &trap[k]);
-    pending |= trap[k].n > 0;
-  }
-  if (pending) {
-    /* the trapezoids' last nodes, phi = pi, at every outer node at once (hemi_phi_trap) */
-    real pa[16], pb[16];
-    for (int k = 0; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
-      lane_t fa, fb;
-      hemi_node_c(ndf, gaf, p, mu, s, lane_load(nc, k), lane_load(nsn, k), RC(-1.0), &fa, &fb);
-      lane_store(fa, pa, k);
-      lane_store(fb, pb, k);
+  real va[16], vb[16], vea[16], veb[16]; /* each node's azimuth integrals and their bounds (15 used) */
+#if BRDF_LANES >= HEMI_GK_N
+  if (!partial && hemi_trap_plain(gaf, p, refine)) {
+    lane_t ia, ib, ea, eb;
+    hemi_trap_lanes(ndf, gaf, p, mu, s, lane_load(nc, 0), lane_load(nsn, 0), &ia, &ib, &ea, &eb);
+    lane_store(ia, va, 0);
+    lane_store(ib, vb, 0);
+    lane_store(ea, vea, 0);
+    lane_store(eb, veb, 0);
+  } else
+#endif
+  {
+    TrapSums trap[15];
+    int pending = 0;
+    for (int k = 0; k < 15; ++k) {
+      BrdfAngle h;
+      h.c = nc[k];
+      h.s2 = ns2[k];
+      h.t2 = nt2[k];
+      hemi_phi(ndf, gaf, p, mu, s, h, nsn[k], !partial, nphi[k], nsin[k], refine, &va[k], &vb[k], &vea[k], &veb[k],
+               &trap[k]);
+      pending |= trap[k].n > 0;
     }
-    for (int k = 0; k < 15; ++k)
-      if (trap[k].n > 0) hemi_trap_finish(trap[k], pa[k], pb[k], &va[k], &vb[k], &vea[k], &veb[k]);
+    if (pending) {
+      /* the trapezoids' last nodes, phi = pi, at every outer node at once (hemi_phi_trap) */
+      real pa[16], pb[16];
+      for (int k = 0; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
+        lane_t fa, fb;
+        hemi_node_c(ndf, gaf, p, mu, s, lane_load(nc, k), lane_load(nsn, k), RC(-1.0), &fa, &fb);
+        lane_store(fa, pa, k);
+        lane_store(fb, pb, k);
+      }
+      for (int k = 0; k < 15; ++k)
+        if (trap[k].n > 0) hemi_trap_finish(trap[k], pa[k], pb[k], &va[k], &vb[k], &vea[k], &veb[k]);
+    }
   }
   real pka = RC(0.0), pkb = RC(0.0), pda = RC(0.0), pdb = RC(0.0), pea = RC(0.0), peb = RC(0.0);
   real ga[15], gb[15]; /* the nodes' values, for resasc */
