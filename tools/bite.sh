@@ -44,6 +44,8 @@ mutation() {
                         'g = ni * q / (ni * q * (no + clo) + RC(0.5) * x);' "Gaf.KernelFormsMatchTheReferencesOwnFormulas" ;;
     trap-lanes) set -- "$1" kernels/integrate/azimuth.h '  int js[4] = {i, i + 8, i + 1, i + 9};' \
                   '  int js[4] = {i, i + 1, i + 8, i + 9};' "Golden.MicrofacetTables" ;;
+    arc-lanes) set -- "$1" kernels/integrate/azimuth.h '    int16 on = (int16)(m) < count;' '    int16 on = (int16)(m) <= count;' \
+                 "Golden.MicrofacetTables" ;;
     gk-pair) set -- "$1" kernels/integrate/azimuth.h '  *ka += s2.x * hw2;' '  *ka += s2.x * hw1;' \
                "AllPairs/PairTest.HemisphereMatchesReference/ggx_smith_correlated" ;;
     lane-sum4) set -- "$1" kernels/brdf/compat.h 'float16 x = (float16)(ab.even + ab.odd, cd.even + cd.odd);' \
@@ -59,7 +61,7 @@ mutation() {
 }
 names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
-       canonical-gaf trap-pi-batch ggx-one-division trap-lanes gk-pair lane-sum4 node-reuse devices-stale"
+       canonical-gaf trap-pi-batch ggx-one-division trap-lanes arc-lanes gk-pair lane-sum4 node-reuse devices-stale"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"

@@ -5,7 +5,7 @@
 #   full       the kernel as it is
 #   no-refine  no texel refined (the refinement target at 1): what the refined texels cost
 #   no-tails   each panel's error estimate left out (the GK15 resasc and gk_error, the trapezoids'
-#              difference sums, in lanes too): what the estimates' reductions cost beyond the nodes
+#              difference sums, in the transposed forms too): what the estimates cost beyond the nodes
 #   no-nodes   every integrand node replaced by two multiplications, estimates zeroed (so that no
 #              texel is refined): what the rule's structure costs without the integrand
 #   skeleton   both: the outer nodes' set-up, the arcs' breakpoints and the control flow alone
@@ -38,8 +38,18 @@ trap_lanes_no_tails() {
     BRDF_TABLE real* w = wts[m];'
   replace kernels/integrate/azimuth.h '    lane_t e = select(d1, d1 * q * q, isgreater(d2, d1)) * step;' '    lane_t e = RC(0.0) * step;'
 }
+# the arcs in lanes (hemi_arcs_lanes): no resasc, no estimates
+arc_lanes_no_tails() {
+  replace kernels/integrate/azimuth.h '    for (int j = 0; j < 16; ++j) v[j] = GK15_WKL[j] * fabs(fa[j] - RC(0.5) * sa);
+    lane_t ra = hemi_tree16(v);
+    for (int j = 0; j < 16; ++j) v[j] = GK15_WKL[j] * fabs(fb[j] - RC(0.5) * sb);
+    lane_t rb = hemi_tree16(v);' '    lane_t ra = RC(1.0), rb = RC(1.0);'
+  replace kernels/integrate/azimuth.h '    lane_t ea_ = select(kga, ra * qa * sqrt(qa), isgreater(ra, (lane_t)(RC(0.0))));
+    lane_t eb_ = select(kgb, rb * qb * sqrt(qb), isgreater(rb, (lane_t)(RC(0.0))));' '    lane_t ea_ = RC(0.0) * qa, eb_ = RC(0.0) * qb;'
+}
 no_tails() {
   trap_lanes_no_tails
+  arc_lanes_no_tails
   replace kernels/integrate/azimuth.h '    float2 r2 = lane_sum2(wk * fabs(fa - RC(0.5) * sa), wk * fabs(fb - RC(0.5) * sb));
     ra = r2.x;
     rb = r2.y;
@@ -61,6 +71,13 @@ no_tails() {
   res->err_b += RC(0.0) * (rb + peb);'
 }
 no_nodes() {
+  replace kernels/integrate/azimuth.h '      hemi_node_c(ndf, gaf, p, mu, s, c, sn, cos_arc(phi), &fa[j], &fb[j]);' \
+    '      fa[j] = phi * sn;
+      fb[j] = phi * phi;'
+  replace kernels/integrate/azimuth.h '    lane_t ea_ = select(kga, ra * qa * sqrt(qa), isgreater(ra, (lane_t)(RC(0.0))));
+    lane_t eb_ = select(kgb, rb * qb * sqrt(qb), isgreater(rb, (lane_t)(RC(0.0))));' \
+    '    lane_t ea_ = RC(0.0) * select(kga, ra * qa * sqrt(qa), isgreater(ra, (lane_t)(RC(0.0))));
+    lane_t eb_ = RC(0.0) * select(kgb, rb * qb * sqrt(qb), isgreater(rb, (lane_t)(RC(0.0))));'
   replace kernels/integrate/azimuth.h 'for (int q = 0; q < 4; ++q) hemi_node_c(ndf, gaf, p, mu, s, c, sn, COS_PI16[js[q]], &fa[q], &fb[q]);' \
     'for (int q = 0; q < 4; ++q) { fa[q] = c * COS_PI16[js[q]] + RC(2.0); fb[q] = sn * sn; }'
   replace kernels/integrate/azimuth.h '  hemi_node_c(ndf, gaf, p, mu, s, c, sn, RC(-1.0), &fa, &fb);' '  fa = c;
@@ -90,6 +107,14 @@ no_refine() {
 }
 skeleton() {
   no_nodes
+  replace kernels/integrate/azimuth.h '    for (int j = 0; j < 16; ++j) v[j] = GK15_WDL[j] * fa[j];
+    lane_t da = hemi_tree16(v);
+    for (int j = 0; j < 16; ++j) v[j] = GK15_WDL[j] * fb[j];
+    lane_t db = hemi_tree16(v);
+    for (int j = 0; j < 16; ++j) v[j] = GK15_WKL[j] * fabs(fa[j] - RC(0.5) * sa);
+    lane_t ra = hemi_tree16(v);
+    for (int j = 0; j < 16; ++j) v[j] = GK15_WKL[j] * fabs(fb[j] - RC(0.5) * sb);
+    lane_t rb = hemi_tree16(v);' '    lane_t da = RC(0.0), db = RC(0.0), ra = RC(1.0), rb = RC(1.0);'
   replace kernels/integrate/azimuth.h '  for (int m = 0; m < 3; ++m) {
     BRDF_TABLE real* w = wts[m];' '  for (int m = 0; m < 3; m += 3) {
     BRDF_TABLE real* w = wts[m];'

@@ -23,9 +23,10 @@
  * Cost: libm calls are counted per lane vector, not per node (compat.h): one float16 pass prepares
  * an outer panel's 15 nodes (expm1, sqrt, atan2, exp), one evaluates a GK15 azimuth panel (cos and
  * the integrand), one the 16-interval trapezoid but its last node (cosines from a table), and one
- * the last nodes, phi = pi, of all of the panel's trapezoids together; a whole-circle panel
- * without kinks takes 17 passes instead, one per azimuth node over all 15 outer nodes
- * (hemi_trap_lanes).
+ * the last nodes, phi = pi, of all of the panel's trapezoids together. At the default budget the
+ * device runs most panels transposed instead, one pass per azimuth node over all 15 outer nodes:
+ * a whole-circle panel without kinks in 17 (hemi_trap_lanes), a partial one in 16 per panel of
+ * its nodes' arcs (hemi_arcs_lanes).
  */
 /* Once per pass (compat.h "Passes"). */
 #if defined(BRDF_SECOND_PASS) ? !defined(BRDF_HEMISPHERE_H_2) : !defined(BRDF_HEMISPHERE_H)
@@ -120,6 +121,8 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
     lane_store(ib, vb, 0);
     lane_store(ea, vea, 0);
     lane_store(eb, veb, 0);
+  } else if (partial && refine == 0) {
+    hemi_arcs_lanes(ndf, gaf, p, mu, s, nc, ns2, nt2, nsn, nphi, nsin, va, vb, vea, veb);
   } else
 #endif
   {
