@@ -42,9 +42,9 @@ mutation() {
                      'lane_load(nsn, k), RC(-0.999), &fa, &fb);' "AllPairs/PairTest.HemisphereMatchesReference/ggx_smith_correlated" ;;
     ggx-one-division) set -- "$1" kernels/brdf/gaf.h 'g = ni * q / (ni * q * (no + clo) + RC(0.5) * no * x);' \
                         'g = ni * q / (ni * q * (no + clo) + RC(0.5) * x);' "Gaf.KernelFormsMatchTheReferencesOwnFormulas" ;;
-    trap-lanes) set -- "$1" kernels/integrate/azimuth.h '  int js[4] = {i, i + 8, i + 1, i + 9};' \
+    trap-lanes) set -- "$1" kernels/integrate/azimuth_lanes.h '  int js[4] = {i, i + 8, i + 1, i + 9};' \
                   '  int js[4] = {i, i + 1, i + 8, i + 9};' "Golden.MicrofacetTables" ;;
-    arc-lanes) set -- "$1" kernels/integrate/azimuth.h '    int16 on = (int16)(m) < count;' '    int16 on = (int16)(m) <= count;' \
+    arc-lanes) set -- "$1" kernels/integrate/azimuth_lanes.h '    int16 on = (int16)(m) < count;' '    int16 on = (int16)(m) <= count;' \
                  "Golden.MicrofacetTables" ;;
     gk-pair) set -- "$1" kernels/integrate/azimuth.h '  *ka += s2.x * hw2;' '  *ka += s2.x * hw1;' \
                "AllPairs/PairTest.HemisphereMatchesReference/ggx_smith_correlated" ;;

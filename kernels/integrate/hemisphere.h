@@ -36,6 +36,7 @@
 #define BRDF_HEMISPHERE_H
 #endif
 #include "integrate/azimuth.h"
+#include "integrate/azimuth_lanes.h"
 #include "brdf/brdf.h"
 #include "integrate/quadrature.h"
 #define HEMI_VCAP RC(40.0)
