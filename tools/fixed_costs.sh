@@ -3,8 +3,9 @@
 # "Figures"): five runs each of
 #   pocl       dlopen of the OpenCL ICD's PoCL library, then clGetPlatformIDs and clGetDeviceIDs
 #              (a small C program linked against libOpenCL only)
-#   exr        OpenEXR's encoding of a table file: ZIP (the writer's choice), no compression, and
-#              ZIP with its blocks on two threads (Imf::setGlobalThreadCount(2), the same bytes)
+#   exr        OpenEXR's encoding of a table file (FLOAT channels): ZIP (the writer's choice for
+#              HALF tables), no compression (its choice for FLOAT ones), and ZIP with its blocks on
+#              two threads (Imf::setGlobalThreadCount(2), the same bytes)
 #   tools/fixed_costs.sh [TABLE.exr]     (default: a 128^2 split sum baked into a scratch directory)
 # Needs gcc, g++, the OpenCL and OpenEXR development packages (the build's own) and ./build/brdfbake.
 set -eu

@@ -188,11 +188,15 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
     }
   }
 
-  // the set fits in the free space (streamed writers that know no bound check their own)
+  // the set fits in the free space (streamed writers that know no bound check their own); an
+  // image's bound: its raw texels, 16 bytes of offset and block header per line (an uncompressed
+  // EXR's blocks are single lines) and the header
   uint64_t need = 0;
   for (const auto& f : files)
     need += f.bytesBound ? f.bytesBound
-                         : f.image ? uint64_t(f.image->width) * f.image->height * f.image->planes.size() * 4 + 65536 : 0;
+                         : f.image ? uint64_t(f.image->width) * f.image->height * f.image->planes.size() * 4 +
+                                         uint64_t(f.image->height) * 16 + 65536
+                                   : 0;
   const uint64_t free = need > 0 ? freeBytesAt(p) : UINT64_MAX;
   if (need > free) {
     cleanUp({}, created);

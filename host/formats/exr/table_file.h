@@ -2,7 +2,7 @@
 //
 // The table model, TableImage, and the checks every table passes live in
 // formats/table_image.h (included here, so this header alone is enough for callers).
-// Files are single-part scanline EXRs, ZIP compressed, written atomically and
+// Files are single-part scanline EXRs (FLOAT uncompressed, HALF ZIP), written atomically and
 // deterministically (the same TableImage always gives byte-identical files).
 //
 // Implemented in exr_writer.cpp (writeTableExr, writeTableExrTemporary,
@@ -18,8 +18,9 @@
 
 namespace brdfbake {
 
-// Writes a single-part scanline EXR, ZIP_COMPRESSION, channels FLOAT (or HALF when
-// half == true), INCREASING_Y line order, with every attribute of `img` in the header.
+// Writes a single-part scanline EXR, channels FLOAT with NO_COMPRESSION (or HALF with
+// ZIP_COMPRESSION when half == true), INCREASING_Y line order, with every attribute of `img` in
+// the header.
 //
 // Validates first (validateTableImage, with the HALF range when half == true and
 // OpenEXR's structural names reserved) and throws Error(kExitDataErr) naming the
@@ -91,7 +92,7 @@ bool tableExrIsHalf(const std::string& path);
 //   <path>
 //     size: WxH
 //     channels: R (FLOAT), G (FLOAT)
-//     compression: ZIP
+//     compression: NONE (ZIP, ...)
 //     <name> (<type>): <value>        one line per non-standard attribute, sorted by name;
 //                                     v2f as "(a, b)", floats with %.9g
 //     channel R: min <v> max <v>      one line per channel (%.9g)
