@@ -160,8 +160,8 @@ int coldStart(const std::string& device, int samples, int repeat, bool skipAll) 
   if (access(exe.c_str(), X_OK) != 0) throw Error(kExitUnavailable, exe + ": not found (build the brdfbake target)");
   // the baseline, in this process
   double tm = best(repeat, [&] { karisSplitSumMC(128, samples, 2); });
-  std::printf("%s bake, HOME a fresh empty directory: first run (cold: empty PoCL and program caches), then "
-              "warm (best of %d)\n", exe.c_str(), repeat);
+  std::printf("%s bake, %d rounds, each with HOME a fresh empty directory: its first run (cold: empty PoCL and "
+              "program caches), then a warm run; the best of each\n", exe.c_str(), repeat);
   std::printf("baseline: Karis MC %d spp split-sum 128x128 (C++, 2 threads) %.4f s\n", samples, tm);
   std::printf("%-46s %9s %8s %8s\n", "what", "seconds", "/ MC", "/ warm");
   // every pair: the four microfacet NDFs with every GAF but the sheen ones, and charlie with its four
@@ -183,18 +183,31 @@ int coldStart(const std::string& device, int samples, int repeat, bool skipAll) 
       for (const auto& args : set.bakes) t += timeBake(exe, home, args, device, prepared);
       return t;
     };
-    const std::string home = freshHome(), bare = freshHome();
-    const double cold = timeSet(home, true);
-    double warm = 1e30;
-    for (int r = 0; r < repeat; ++r) warm = std::min(warm, timeSet(home, true));
+    // `repeat` rounds, each in a fresh HOME: its first run, then a warm one. The best of each, so
+    // that both sides of the first-run ratio are minima over as many samples (one first run
+    // against the best of three warm ones read this machine's noise as a first-run cost), and the
+    // slowest first and warm runs too (the spread of the machine's noise).
+    double cold = 1e30, coldWorst = 0, warm = 1e30, warmWorst = 0;
+    for (int r = 0; r < repeat; ++r) {
+      const std::string home = freshHome();
+      const double c = timeSet(home, true);
+      cold = std::min(cold, c);
+      coldWorst = std::max(coldWorst, c);
+      const double w = timeSet(home, true);
+      warm = std::min(warm, w);
+      warmWorst = std::max(warmWorst, w);
+      removeTree(home);
+    }
+    const std::string bare = freshHome();
     const double source = timeSet(bare, false);
-    removeTree(home);
     removeTree(bare);
     auto row = [&](const std::string& what, double t) {
       std::printf("%-46s %9.3f %8.2f %8.2f\n", what.c_str(), t, t / tm, t / warm);
     };
     row(set.name + ", warm", warm);
+    row(set.name + ", warm, slowest", warmWorst);
     row(set.name + ", first run", cold);
+    row(set.name + ", first run, slowest", coldWorst);
     row(set.name + ", first run, nothing prepared", source);
     std::fflush(stdout);
   }
