@@ -22,11 +22,12 @@
 //               largest bound over all 32 entries, the error at every --stride-th r (default 8)
 //               plus r = 3/64, 5/64, 63/64 and the node-grid r = 0, 1/2, 1. ~10 minutes.
 //   --cold-start [--skip-all]: what a user waits for: `brdfbake bake` of the default set and of
-//               every pair (56 pairs, 173 tables), run as processes with HOME a fresh empty
-//               directory: the first run (empty PoCL and program caches; the programs the build
-//               prepared are found), warm runs (best of --repeat), and a first run with nothing
-//               prepared; as ratios against the Karis MC baseline timed in this run and against
-//               the warm run. --skip-all: the default set only. ~1.5 minutes on 2 cores.
+//               every pair (56 pairs, 173 tables), run as processes in --repeat rounds, each with
+//               HOME a fresh empty directory: its first run (empty PoCL and program caches; the
+//               programs the build prepared are found), then a warm run; the best and the slowest
+//               of each, and a first run with nothing prepared; as ratios against the Karis MC
+//               baseline timed in this run and against the best warm run. --skip-all: the default
+//               set only. ~2 minutes on 2 cores (host/bench/cold_start_bench.cpp).
 //   --materials: 32x32 dielectric albedo (ggx + smith-correlated, eta 1.5 and 1/1.5) and diffuse
 //               albedo (burley, oren-nayar) tables, kernel vs an S-sample Monte Carlo estimator of
 //               the same quantity: times, errors against the reference (dielectric on every
@@ -53,8 +54,6 @@
 //   --merl FILE [--size N]: a measured material's albedo (N texel centres, default 16) and
 //               albedo-avg tables baked as brdfbake bakes them, each claim against a rule above the
 //               ones it climbs (host/bench/merl_bench.cpp). ~2 minutes at 16.
-#include <fcntl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -88,59 +87,12 @@ int merlBench(const std::string& file, int size);                       // merl_
 int commitBench(const std::string& device, int repeat);                 // commit_bench.cpp
 int allPairs(const std::string& device, int n, int stride, const std::vector<std::pair<int, int>>& only);  // pairs_bench.cpp
 int probeSpanBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& only, int n);  // probe_bench.cpp
+int coldStart(const std::string& device, int samples, int repeat, bool skipAll);  // cold_start_bench.cpp
 int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pairs, int size, int stride,
                 const std::string& csv);  // bounds_bench.cpp
 }
 
 namespace {
-// --cold-start runs the brdfbake next to this program, as a user does: `brdfbake bake` with HOME a
-// fresh empty directory and no cache variables set (PoCL's cache and the program cache both start
-// empty; the programs the build prepared, build/programs, are found as a fresh checkout finds
-// them), then again in the same HOME (warm). Returns the process's wall seconds.
-double timeBake(const std::string& exe, const std::string& home, const std::vector<std::string>& args,
-                const std::string& device, bool prepared) {
-  auto t0 = std::chrono::steady_clock::now();
-  pid_t pid = fork();
-  if (pid == 0) {
-    int null = ::open("/dev/null", O_WRONLY);
-    if (null >= 0) {
-      dup2(null, 1);
-      dup2(null, 2);
-    }
-    setenv("HOME", home.c_str(), 1);
-    for (const char* v : {"POCL_CACHE_DIR", "XDG_CACHE_HOME", "BRDFBAKE_PROGRAM_CACHE", "BRDFBAKE_PREPARED_PROGRAMS"})
-      unsetenv(v);
-    if (!prepared) setenv("BRDFBAKE_PREPARED_PROGRAMS", "off", 1);
-    if (chdir(home.c_str()) != 0) _exit(127);
-    std::vector<const char*> argv = {exe.c_str(), "bake"};
-    for (const auto& a : args) argv.push_back(a.c_str());
-    if (!device.empty()) {
-      argv.push_back("--device");
-      argv.push_back(device.c_str());
-    }
-    argv.push_back(nullptr);
-    execv(exe.c_str(), const_cast<char* const*>(argv.data()));
-    _exit(127);
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  double t = seconds(t0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw Error(kExitSoftware, exe + " bake failed (status " + std::to_string(status) + ")");
-  return t;
-}
-
-std::string freshHome() {
-  char tmpl[] = "/tmp/brdfbake-bench-homeXXXXXX";
-  if (!mkdtemp(tmpl)) throw Error(kExitCantCreat, "cannot create a temporary HOME");
-  return tmpl;
-}
-
-void removeTree(const std::string& dir) {
-  std::string rm = "rm -rf '" + dir + "'";
-  if (std::system(rm.c_str()) != 0) std::fprintf(stderr, "could not remove %s\n", dir.c_str());
-}
-
 // albedo-avg against albedo (ggx + smith-correlated, size 32), best of `repeat`, interleaved.
 void avgVsAlbedo(KernelRunner& runner, int repeat, double* tAvg, double* tAlb) {
   runner.prepareAll(std::vector<KernelNeed>{{KernelNeed::Hemisphere, 0, 10}});
@@ -149,69 +101,6 @@ void avgVsAlbedo(KernelRunner& runner, int repeat, double* tAvg, double* tAlb) {
     *tAvg = std::min(*tAvg, best(1, [&] { runner.albedoAvg(0, 10, 32, false); }));
     *tAlb = std::min(*tAlb, best(1, [&] { runner.hemisphere(0, 10, 32, 32, false); }));
   }
-}
-
-int coldStart(const std::string& device, int samples, int repeat, bool skipAll) {
-  char self[4096];
-  ssize_t len = readlink("/proc/self/exe", self, sizeof self - 1);
-  if (len <= 0) throw Error(kExitSoftware, "cannot find this program's path");
-  const std::string here(self, static_cast<size_t>(len));
-  const std::string exe = here.substr(0, here.find_last_of('/')) + "/brdfbake";
-  if (access(exe.c_str(), X_OK) != 0) throw Error(kExitUnavailable, exe + ": not found (build the brdfbake target)");
-  // the baseline, in this process
-  double tm = best(repeat, [&] { karisSplitSumMC(128, samples, 2); });
-  std::printf("%s bake, %d rounds, each with HOME a fresh empty directory: its first run (cold: empty PoCL and "
-              "program caches), then a warm run; the best of each\n", exe.c_str(), repeat);
-  std::printf("baseline: Karis MC %d spp split-sum 128x128 (C++, 2 threads) %.4f s\n", samples, tm);
-  std::printf("%-46s %9s %8s %8s\n", "what", "seconds", "/ MC", "/ warm");
-  // every pair: the four microfacet NDFs with every GAF but the sheen ones, and charlie with its four
-  std::string gafs;
-  for (int g = 0; g < static_cast<int>(gafNames().size()); ++g)
-    if (!isSheenGaf(g)) gafs += (gafs.empty() ? "" : ",") + gafNames()[g];
-  struct Set {
-    std::string name;
-    std::vector<std::vector<std::string>> bakes;  // one process each
-  };
-  std::vector<Set> sets = {{"default set (4 tables)", {{"-o", "out"}}},
-                           {"every pair (56 pairs: 173 tables)",
-                            {{"--ndf", "ggx,beckmann,blinn-phong,gaussian", "--gaf", gafs, "-o", "all"},
-                             {"--ndf", "charlie", "--gaf", "none,implicit,charlie-smith,neubelt", "-o", "sheen"}}}};
-  for (const Set& set : sets) {
-    if (skipAll && set.bakes.size() > 1) break;
-    auto timeSet = [&](const std::string& home, bool prepared) {
-      double t = 0;
-      for (const auto& args : set.bakes) t += timeBake(exe, home, args, device, prepared);
-      return t;
-    };
-    // `repeat` rounds, each in a fresh HOME: its first run, then a warm one. The best of each, so
-    // that both sides of the first-run ratio are minima over as many samples (one first run
-    // against the best of three warm ones read this machine's noise as a first-run cost), and the
-    // slowest first and warm runs too (the spread of the machine's noise).
-    double cold = 1e30, coldWorst = 0, warm = 1e30, warmWorst = 0;
-    for (int r = 0; r < repeat; ++r) {
-      const std::string home = freshHome();
-      const double c = timeSet(home, true);
-      cold = std::min(cold, c);
-      coldWorst = std::max(coldWorst, c);
-      const double w = timeSet(home, true);
-      warm = std::min(warm, w);
-      warmWorst = std::max(warmWorst, w);
-      removeTree(home);
-    }
-    const std::string bare = freshHome();
-    const double source = timeSet(bare, false);
-    removeTree(bare);
-    auto row = [&](const std::string& what, double t) {
-      std::printf("%-46s %9.3f %8.2f %8.2f\n", what.c_str(), t, t / tm, t / warm);
-    };
-    row(set.name + ", warm", warm);
-    row(set.name + ", warm, slowest", warmWorst);
-    row(set.name + ", first run", cold);
-    row(set.name + ", first run, slowest", coldWorst);
-    row(set.name + ", first run, nothing prepared", source);
-    std::fflush(stdout);
-  }
-  return 0;
 }
 
 // Every pair's albedo-avg (32 texel centres, and the node grid r = 0, 1/2, 1) against the reference.
