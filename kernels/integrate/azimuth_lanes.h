@@ -83,9 +83,6 @@ BRDF_FN lane_t hemi_tree16(const lane_t* v) {
   return (t0 + t1) + (t2 + t3);
 }
 
-/* The most GK15 panels one arc of hemi_phi takes at the default budget: its breakpoints and phimax. */
-#define HEMI_ARC_PANELS 17
-
 /* hemi_phi on the arcs of an outer panel's 15 nodes at once, at the default budget (partial
  * panels: no node takes the trapezoid). Each node's panels come from hemi_phi_plan as hemi_phi
  * makes them; then panel m of every node is one pass, theta_h, the panel's ends and its
@@ -111,21 +108,8 @@ BRDF_FN void hemi_arcs_lanes(int ndf, int gaf, BrdfParams p, real mu, real s, co
     h.c = nc[k];
     h.s2 = ns2[k];
     h.t2 = nt2[k];
-    ArcPlan plan;
-    hemi_phi_plan(gaf, p, mu, s, h, nsn[k], 0, nphi[k], nsin[k], 0, &plan);
-    real lo = RC(0.0);
-    for (int q = 0; q <= plan.nb; ++q) {
-      real hi = q < plan.nb ? plan.br[q] : nphi[k];
-      if (hi > lo) { /* hemi_phi's panel, at one piece: a = lo + 0 w, b = hi */
-        int sl = lo == plan.fk, sh = hi == plan.fk;
-        int hz = hi == nphi[k] && gaf_root_at_horizon(gaf);
-        plo[np[k]][k] = lo;
-        phi_[np[k]][k] = hi;
-        psq[np[k]][k] = sl | ((sh || hz) << 1);
-        np[k]++;
-      }
-      lo = hi;
-    }
+    /* hemi_phi's panels, each at one piece (a = lo + 0 w, b = hi), panel m of node k at [m][k] */
+    hemi_phi_plan(gaf, p, mu, s, h, nsn[k], 0, nphi[k], nsin[k], 0, &plo[0][k], &phi_[0][k], &psq[0][k], 16, &np[k]);
     most = np[k] > most ? np[k] : most;
   }
   for (int k = 0; k < 16; ++k) /* the passes a node sits out: defined ends, their sums unused */
