@@ -36,7 +36,9 @@ trap_lanes_no_tails() {
   replace kernels/integrate/azimuth_lanes.h '  for (int m = 0; m < 3; ++m) {
     BRDF_TABLE real* w = wts[m];' '  for (int m = 0; m < 3; m += 3) {
     BRDF_TABLE real* w = wts[m];'
-  replace kernels/integrate/azimuth_lanes.h '    lane_t e = select(d1, d1 * q * q, isgreater(d2, d1)) * step;' '    lane_t e = RC(0.0) * step;'
+  replace kernels/integrate/azimuth_lanes.h '  *ea = trap_error16(fabs(sum[2]), fabs(sum[4])) * step;
+  *eb = trap_error16(fabs(sum[3]), fabs(sum[5])) * step;' '  *ea = RC(0.0) * step;
+  *eb = RC(0.0) * step;'
 }
 # the arcs in lanes (hemi_arcs_lanes): no resasc, no estimates
 arc_lanes_no_tails() {
@@ -44,8 +46,8 @@ arc_lanes_no_tails() {
     lane_t ra = hemi_tree16(v);
     for (int j = 0; j < 16; ++j) v[j] = GK15_WKL[j] * fabs(fb[j] - RC(0.5) * sb);
     lane_t rb = hemi_tree16(v);' '    lane_t ra = RC(1.0), rb = RC(1.0);'
-  replace kernels/integrate/azimuth_lanes.h '    lane_t ea_ = select(kga, ra * qa * sqrt(qa), isgreater(ra, (lane_t)(RC(0.0))));
-    lane_t eb_ = select(kgb, rb * qb * sqrt(qb), isgreater(rb, (lane_t)(RC(0.0))));' '    lane_t ea_ = RC(0.0) * qa, eb_ = RC(0.0) * qb;'
+  replace kernels/integrate/azimuth_lanes.h '    lane_t ea_ = gk_error16(fabs(da), ra), eb_ = gk_error16(fabs(db), rb);' \
+    '    lane_t ea_ = RC(0.0) * da, eb_ = RC(0.0) * db;'
 }
 no_tails() {
   trap_lanes_no_tails
@@ -74,16 +76,15 @@ no_nodes() {
   replace kernels/integrate/azimuth_lanes.h '      hemi_node_c(ndf, gaf, p, mu, s, c, sn, cos_arc(phi), &fa[j], &fb[j]);' \
     '      fa[j] = phi * sn;
       fb[j] = phi * phi;'
-  replace kernels/integrate/azimuth_lanes.h '    lane_t ea_ = select(kga, ra * qa * sqrt(qa), isgreater(ra, (lane_t)(RC(0.0))));
-    lane_t eb_ = select(kgb, rb * qb * sqrt(qb), isgreater(rb, (lane_t)(RC(0.0))));' \
-    '    lane_t ea_ = RC(0.0) * select(kga, ra * qa * sqrt(qa), isgreater(ra, (lane_t)(RC(0.0))));
-    lane_t eb_ = RC(0.0) * select(kgb, rb * qb * sqrt(qb), isgreater(rb, (lane_t)(RC(0.0))));'
+  replace kernels/integrate/azimuth_lanes.h '    lane_t ea_ = gk_error16(fabs(da), ra), eb_ = gk_error16(fabs(db), rb);' \
+    '    lane_t ea_ = RC(0.0) * gk_error16(fabs(da), ra), eb_ = RC(0.0) * gk_error16(fabs(db), rb);'
   replace kernels/integrate/azimuth_lanes.h 'for (int q = 0; q < 4; ++q) hemi_node_c(ndf, gaf, p, mu, s, c, sn, COS_PI16[js[q]], &fa[q], &fb[q]);' \
     'for (int q = 0; q < 4; ++q) { fa[q] = c * COS_PI16[js[q]] + RC(2.0); fb[q] = sn * sn; }'
   replace kernels/integrate/azimuth_lanes.h '  hemi_node_c(ndf, gaf, p, mu, s, c, sn, RC(-1.0), &fa, &fb);' '  fa = c;
   fb = sn;'
-  replace kernels/integrate/azimuth_lanes.h '    lane_t e = select(d1, d1 * q * q, isgreater(d2, d1)) * step;' \
-    '    lane_t e = RC(0.0) * select(d1, d1 * q * q, isgreater(d2, d1));'
+  replace kernels/integrate/azimuth_lanes.h '  *ea = trap_error16(fabs(sum[2]), fabs(sum[4])) * step;
+  *eb = trap_error16(fabs(sum[3]), fabs(sum[5])) * step;' '  *ea = RC(0.0) * trap_error16(fabs(sum[2]), fabs(sum[4]));
+  *eb = RC(0.0) * trap_error16(fabs(sum[3]), fabs(sum[5]));'
   replace kernels/integrate/azimuth.h 'hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(mid + hw * x), fa, fb);' \
     '{ lane_t cc = mid + hw * x; *fa = cc * sn; *fb = cc * cc; }'
   replace kernels/integrate/azimuth.h 'hemi_node(ndf, gaf, p, mu, s, h, sn, cos_arc(phi), fa, fb);' '{ *fa = phi * sn; *fb = phi * phi; }'
@@ -112,7 +113,9 @@ skeleton() {
   replace kernels/integrate/azimuth_lanes.h '  for (int m = 0; m < 3; ++m) {
     BRDF_TABLE real* w = wts[m];' '  for (int m = 0; m < 3; m += 3) {
     BRDF_TABLE real* w = wts[m];'
-  replace kernels/integrate/azimuth_lanes.h '    lane_t e = RC(0.0) * select(d1, d1 * q * q, isgreater(d2, d1));' '    lane_t e = RC(0.0) * step;'
+  replace kernels/integrate/azimuth_lanes.h '  *ea = RC(0.0) * trap_error16(fabs(sum[2]), fabs(sum[4]));
+  *eb = RC(0.0) * trap_error16(fabs(sum[3]), fabs(sum[5]));' '  *ea = RC(0.0) * step;
+  *eb = RC(0.0) * step;'
   replace kernels/integrate/azimuth.h '  float4 s1 = lane_sum4(wk * fa1, wk * fb1, wd * fa1, wd * fb1);
   float4 s2 = lane_sum4(wk * fa2, wk * fb2, wd * fa2, wd * fb2);
   float4 r4 = lane_sum4(wk * fabs(fa1 - RC(0.5) * s1.x), wk * fabs(fb1 - RC(0.5) * s1.y),

@@ -67,12 +67,8 @@ BRDF_FN void hemi_trap_lanes(int ndf, int gaf, BrdfParams p, real mu, real s, la
   real step = BRDF_PI / (real)16;
   *ia = sum[0] * step;
   *ib = sum[1] * step;
-  for (int m = 0; m < 2; ++m) { /* trap_error, lane by lane */
-    lane_t d1 = fabs(sum[2 + m]), d2 = fabs(sum[4 + m]), q = d1 / d2;
-    lane_t e = select(d1, d1 * q * q, isgreater(d2, d1)) * step;
-    if (m == 0) *ea = e;
-    else *eb = e;
-  }
+  *ea = trap_error16(fabs(sum[2]), fabs(sum[4])) * step;
+  *eb = trap_error16(fabs(sum[3]), fabs(sum[5])) * step;
 }
 
 /* One lane per outer node: the sum of sixteen weighted node values v[j] in the order of the tree
@@ -165,12 +161,7 @@ BRDF_FN void hemi_arcs_lanes(int ndf, int gaf, BrdfParams p, real mu, real s, co
     lane_t ra = hemi_tree16(v);
     for (int j = 0; j < 16; ++j) v[j] = GK15_WKL[j] * fabs(fb[j] - RC(0.5) * sb);
     lane_t rb = hemi_tree16(v);
-    /* gk_error4, lane by lane */
-    lane_t kga = fabs(da), kgb = fabs(db);
-    lane_t qa = fmin((lane_t)(RC(1.0)), (float)GK_SHARP_C * kga / ra);
-    lane_t qb = fmin((lane_t)(RC(1.0)), (float)GK_SHARP_C * kgb / rb);
-    lane_t ea_ = select(kga, ra * qa * sqrt(qa), isgreater(ra, (lane_t)(RC(0.0))));
-    lane_t eb_ = select(kgb, rb * qb * sqrt(qb), isgreater(rb, (lane_t)(RC(0.0))));
+    lane_t ea_ = gk_error16(fabs(da), ra), eb_ = gk_error16(fabs(db), rb);
     int16 on = (int16)(m) < count;
     lane_t nka = ka, nkb = kb, nga = ga, ngb = gb;
     nka += sa * hw;

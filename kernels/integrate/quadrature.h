@@ -142,12 +142,17 @@ BRDF_FN real gk_error(real kg, real resasc, int sharp) {
   return resasc * q * sqrt(q);
 }
 #if defined(__OPENCL_C_VERSION__) && !defined(BRDF_LANE_PASS)
-/* gk_error(kg, resasc, 1) lane by lane: two panels' two moments (azimuth.h hemi_phi_gk_pair), or one
- * panel's in .xy (hemi_phi_gk). */
-BRDF_FN float4 gk_error4(float4 kg, float4 resasc) {
-  float4 q = fmin((float4)(1.0f), (float)GK_SHARP_C * kg / resasc);
-  return select(kg, resasc * q * sqrt(q), isgreater(resasc, (float4)(0.0f)));
-}
+/* gk_error(kg, resasc, 1) lane by lane, with its operations, so each lane's bits: gk_error4 for two
+ * panels' two moments (azimuth.h hemi_phi_gk_pair), or one panel's in .xy (hemi_phi_gk);
+ * gk_error16 for one panel of each of 16 outer nodes (azimuth_lanes.h hemi_arcs_lanes). */
+#define BRDF_GK_ERROR_LANES(T, NAME)                                 \
+  BRDF_FN T NAME(T kg, T resasc) {                                   \
+    T q = fmin((T)(1.0f), (float)GK_SHARP_C * kg / resasc);          \
+    return select(kg, resasc * q * sqrt(q), isgreater(resasc, (T)(0.0f))); \
+  }
+BRDF_GK_ERROR_LANES(float4, gk_error4)
+BRDF_GK_ERROR_LANES(float16, gk_error16)
+#undef BRDF_GK_ERROR_LANES
 #endif
 
 /* The error of the trapezoid rule T_n on a smooth periodic integrand from d1 = |T_n - T_{n/2}| and
@@ -160,4 +165,12 @@ BRDF_FN real trap_error(real d1, real d2) {
   real q = d1 / d2;
   return d1 * q * q;
 }
+#if defined(__OPENCL_C_VERSION__) && !defined(BRDF_LANE_PASS)
+/* trap_error lane by lane, with its operations (azimuth_lanes.h hemi_trap_lanes: one trapezoid of
+ * each of 16 outer nodes). */
+BRDF_FN float16 trap_error16(float16 d1, float16 d2) {
+  float16 q = d1 / d2;
+  return select(d1, d1 * q * q, isgreater(d2, d1));
+}
+#endif
 #endif /* BRDF_QUADRATURE_H */
