@@ -188,14 +188,11 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
     }
   }
 
-  // the set fits in the free space (streamed writers that know no bound check their own); an
-  // image's bound: its raw texels, 16 bytes of offset and block header per line (an uncompressed
-  // EXR's blocks are single lines) and the header
+  // the set fits in the free space (streamed writers that know no bound check their own)
   uint64_t need = 0;
   for (const auto& f : files)
     need += f.bytesBound ? f.bytesBound
-                         : f.image ? uint64_t(f.image->width) * f.image->height * f.image->planes.size() * 4 +
-                                         uint64_t(f.image->height) * 16 + 65536
+                         : f.image ? tableExrBytesBound(f.image->width, f.image->height, f.image->planes.size(), f.half)
                                    : 0;
   const uint64_t free = need > 0 ? freeBytesAt(p) : UINT64_MAX;
   if (need > free) {

@@ -21,7 +21,7 @@ struct OutputFile {
   // the set then removes every temporary as for any other failure.
   std::function<void(const std::string& tmp)> write;
   // The most bytes the file can take, checked against the free space before anything is written;
-  // 0: from `image` (raw texels plus 64 KiB), or unknown (a writer that checks its own, brdf3d).
+  // 0: from `image` (tableExrBytesBound), or unknown (a writer that checks its own, brdf3d).
   uint64_t bytesBound = 0;
 };
 

@@ -108,8 +108,8 @@ uint64_t volumeBytesBound(const VolumeJob& job) {
   const uint64_t texels = static_cast<uint64_t>(s.nx) * s.ny * s.nz;
   uint64_t bytes = 0;
   for (FileFormat f : job.formats) {
-    if (f == FileFormat::Exr)  // raw pixels (ZIP stores a block raw when it does not shrink), 16 bytes of offset
-      bytes += w * h * 3 * (job.half ? 2 : 4) + h * 16 + 65536;  // and block header a line at most, the header
+    if (f == FileFormat::Exr)  // the slices side by side in one image
+      bytes += tableExrBytesBound(w, h, 3, job.half);
     else if (f == FileFormat::Header)  // .h and .mjs: at most 17 characters per value ("-1.23456789e-05f, ")
       bytes += 2 * (texels * 3 * 18 + 65536);
     else  // KTX2, DDS: RGBA texels and a header

@@ -119,6 +119,10 @@ class TempFileGuard {
 
 std::string temporaryPathFor(const std::string& path) { return makeTemporaryFor(path); }
 
+uint64_t tableExrBytesBound(uint64_t width, uint64_t height, uint64_t channels, bool half) {
+  return width * height * channels * (half ? 2 : 4) + height * 16 + 65536;
+}
+
 void writeTableExr(const std::string& path, const TableImage& img, bool half) {
   const std::string tmp = temporaryPathFor(path);
   try {

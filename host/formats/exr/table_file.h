@@ -9,6 +9,7 @@
 // temporaryPathFor), exr_reader.cpp (readTableExr, tableExrIsHalf) and
 // exr_describe.cpp (describeTableExr).
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -41,6 +42,12 @@ namespace brdfbake {
 // Deterministic: no timestamps or other varying attributes, fixed zip level, and
 // OpenEXR is called with numThreads = 0 (the global thread count is not touched).
 void writeTableExr(const std::string& path, const TableImage& img, bool half);
+
+// The most bytes such a file of width x height texels and `channels` channels takes: the raw
+// texels (ZIP stores a block raw when it does not shrink), 16 bytes of offset and block header a
+// line at most (an uncompressed file's blocks are single lines) and 64 KiB for the header. The
+// output set checks it against the free space before anything is written.
+uint64_t tableExrBytesBound(uint64_t width, uint64_t height, uint64_t channels, bool half);
 
 // The first half of writeTableExr, for sets of files that land together (formats/output_set.h):
 // validates, writes `tmp` (the temporary for `path`, named in messages) and fsyncs it; no rename.
