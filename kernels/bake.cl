@@ -27,7 +27,7 @@ static inline float grid_coord(int i, int n, float lo, float hi, int node_grid) 
 /* The albedo's two moments over (mu, r), split by the weight w(o.h) that `moments` names (ndf.h
  * BrdfParams): A = int H (1 - w), B = int H w, E = A + B (the F = 1 albedo), and a bound on the
  * texel's largest error relative to max(1, |value|). HEMI_SPLIT gives the split-sum pair;
- * HEMI_FRESNEL with a Fresnel model and its parameters (fr_x, fr_y) gives that model's albedo in B.
+ * HEMI_FRESNEL with a Fresnel model and its parameters (fr_x, fr_y; fr_z: fresnel_e2m1) gives that model's albedo in B.
  * mu_list = 1: the quadrature nodes of the average albedo instead (host/cl/runner_avg.cpp): work-item
  * (i, j) takes (mu, r, refinement target) from nodes[j * nx + i], and out_e, out_err hold the value
  * the average needs (E for the split, else the weighted moment B, a Fresnel model's albedo) and its
@@ -38,7 +38,7 @@ static inline float grid_coord(int i, int n, float lo, float hi, int node_grid) 
 kernel void bake_hemisphere(global float* out_a, global float* out_b, global float* out_e,
                             global float* out_err, int nx, int ny, float mu_lo, float mu_hi,
                             float r_lo, float r_hi, int node_grid, int moments, int fresnel,
-                            float fr_x, float fr_y, int level, int mu_list, global const float4* nodes, int sel_ndf,
+                            float fr_x, float fr_y, float fr_z, int level, int mu_list, global const float4* nodes, int sel_ndf,
                             int sel_gaf) {
   int i = get_global_id(0), j = get_global_id(1);
   if (i >= nx || j >= ny) return;
@@ -59,6 +59,7 @@ kernel void bake_hemisphere(global float* out_a, global float* out_b, global flo
   p.moments = moments;
   p.fresnel = fresnel;
   p.fr_x = fr_x;
+  p.fr_z = fr_z;
   p.fr_y = fr_y;
   /* level < 0: the bake's adaptive budget; else that one everywhere (brdfbake convergence: 0
    * default, 1 refined, more finer) */

@@ -40,10 +40,10 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
     for (int i = 6; i < 10; ++i) k.setArg(i, 0.0f);
     k.setArg(10, 0);
     setWeightArgs(k, 11, {});
-    k.setArg(15, -1);
-    k.setArg(16, 0);
-    k.setArg(17, dummy);
-    setPairArgs(k, 18, 0, 0);
+    k.setArg(11 + kWeightArgs, -1);
+    k.setArg(12 + kWeightArgs, 0);
+    k.setArg(13 + kWeightArgs, dummy);
+    setPairArgs(k, 14 + kWeightArgs, 0, 0);
   } else if (name == kDielectric || name == kDielectricNodes) {
     // (out, etas, nx, ny, zn, grid, target) or (out, mus, rs, etas, n, target)
     int bufs = name == kDielectric ? 2 : 4, ints = name == kDielectric ? 4 : 1;

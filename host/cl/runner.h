@@ -46,7 +46,12 @@ struct HemiWeight {
   int moments = 0;  // HEMI_SPLIT, HEMI_FRESNEL, HEMI_F82C
   int fresnel = 0;  // FRESNEL_*
   float x = 0, y = 0;
+  float z = 0;  // what float x takes from eta^2 - 1 (kernels/brdf/fresnel.h fresnel_e2m1)
 };
+// The Fresnel weight of a model with its parameters in double: x and y rounded to float, and for
+// the models of eta (dielectric, schlick-tir, conductor) z, so that the kernels see eta^2 - 1 of
+// the eta asked for, not of its float neighbour.
+HemiWeight fresnelWeight(int model, double x, double y);
 
 struct KernelTable {
   int width = 0, height = 0;

@@ -196,7 +196,7 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
   // 32-entry table, against 2.8e-6 (ggx + schlick-ggx, r = 0.05 to 0.15, where E(mu) changes on the
   // scale mu ~ alpha).
   const bool sheen = isSheenNdf(ndf);
-  const bool sharp = brdf64::fresnel_kink(w.moments, w.fresnel, w.x) < 0;
+  const bool sharp = brdf64::fresnel_kink(w.moments, w.fresnel, w.x, w.z) < 0;
   // The plain albedo of those pairs takes the nodes' bare estimates and the floor measured on E_avg
   // itself (kernels/integrate/albedo_avg.h AVG_ERR_FLOOR); the rest, every node's own floor.
   const bool bare = sharp && w.moments == HEMI_SPLIT;

@@ -22,12 +22,14 @@ inline const char* const kDielectricNodes = "bake_dielectric_points";
 constexpr size_t kLocalX = 8, kLocalY = 1;
 inline size_t roundUp(size_t n, size_t m) { return (n + m - 1) / m * m; }
 
-// The weight arguments (moments, fresnel, fr_x, fr_y) from index `first` on.
+// The weight arguments (moments, fresnel, fr_x, fr_y, fr_z) from index `first` on: kWeightArgs.
+constexpr int kWeightArgs = 5;
 inline void setWeightArgs(cl::Kernel& k, int first, const HemiWeight& w) {
   k.setArg(first, w.moments);
   k.setArg(first + 1, w.fresnel);
   k.setArg(first + 2, w.x);
   k.setArg(first + 3, w.y);
+  k.setArg(first + 4, w.z);
 }
 
 // The pair arguments (sel_ndf, sel_gaf) at `first`, `first + 1`: read by the shared program,

@@ -62,6 +62,15 @@ void KernelRunner::runRows(Compiled& c, cl::Kernel& k, size_t gx, size_t gy) {
   }
 }
 
+HemiWeight fresnelWeight(int model, double x, double y) {
+  HemiWeight w{HEMI_FRESNEL, model, static_cast<float>(x), static_cast<float>(y), 0.0f};
+  if (model == FRESNEL_DIELECTRIC || model == FRESNEL_SCHLICK_TIR || model == FRESNEL_CONDUCTOR) {
+    double xf = w.x;
+    w.z = static_cast<float>((x - 1) * (x + 1) - (xf - 1) * (xf + 1));
+  }
+  return w;
+}
+
 KernelTable KernelRunner::hemisphere(int ndf, int gaf, int nx, int ny, bool nodeGrid, const HemiWeight& w,
                                      bool muSqrt) {
   return hemisphereRange(ndf, gaf, nx, ny, 0.0f, 1.0f, 0.0f, 1.0f, nodeGrid, w, -1, muSqrt);
@@ -89,7 +98,7 @@ std::string launchKey(char tag, const T&... v) {
   (k.append(reinterpret_cast<const char*>(&v), sizeof v), ...);
   return k;
 }
-std::string weightKey(const HemiWeight& w) { return launchKey('w', w.moments, w.fresnel, w.x, w.y); }
+std::string weightKey(const HemiWeight& w) { return launchKey('w', w.moments, w.fresnel, w.x, w.y, w.z); }
 }  // namespace
 
 const std::vector<std::vector<float>>* KernelRunner::reused(const std::string& key) const {
@@ -137,10 +146,10 @@ KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, floa
   setGridArgs(k, 4, nx, ny, muLo, muHi, rLo, rHi, nodeGrid);
   if (muSqrt) k.setArg(10, (nodeGrid ? 1 : 0) | 2);  // x is sqrt(mu) (bake.cl)
   setWeightArgs(k, 11, w);
-  k.setArg(15, level);
-  k.setArg(16, 0);  // the grid's mu, not a list
-  k.setArg(17, a);  // (unread)
-  setPairArgs(k, 18, ndf, gaf);
+  k.setArg(11 + kWeightArgs, level);
+  k.setArg(12 + kWeightArgs, 0);  // the grid's mu, not a list
+  k.setArg(13 + kWeightArgs, a);  // (unread)
+  setPairArgs(k, 14 + kWeightArgs, ndf, gaf);
   runRows(c, k, nx, ny);
   KernelTable t;
   t.width = nx;
@@ -216,10 +225,10 @@ std::vector<std::vector<float>> KernelRunner::nodesLaunch(int ndf, int gaf, cons
   k.setArg(3, err);
   setGridArgs(k, 4, static_cast<int>(count), 1, 0.0f, 1.0f, 0.0f, 1.0f, false);
   setWeightArgs(k, 11, w);
-  k.setArg(15, -1);
-  k.setArg(16, bare ? 2 : 1);  // (mu, r, target) from the list
-  k.setArg(17, in);
-  setPairArgs(k, 18, ndf, gaf);
+  k.setArg(11 + kWeightArgs, -1);
+  k.setArg(12 + kWeightArgs, bare ? 2 : 1);  // (mu, r, target) from the list
+  k.setArg(13 + kWeightArgs, in);
+  setPairArgs(k, 14 + kWeightArgs, ndf, gaf);
   run(c, k, count, 1);
   return {readBack(s.queue, e, count), readBack(s.queue, err, count), readBack(s.queue, a, count),
           readBack(s.queue, b, count)};

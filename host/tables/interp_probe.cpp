@@ -23,7 +23,7 @@ std::vector<ProbePlane> probePlanes(const TableJob& job) {
   std::vector<ProbePlane> v;
   for (int c = 0; c < fc.channels(); ++c) {
     auto [x, y] = fc.kernelParams(c);
-    v.push_back({HemiWeight{HEMI_FRESNEL, fc.model, static_cast<float>(x), static_cast<float>(y)}, 1});
+    v.push_back({fresnelWeight(fc.model, x, y), 1});
   }
   return v;
 }

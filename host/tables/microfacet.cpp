@@ -54,7 +54,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
   // one run per colour channel of a Fresnel model's parameters; every run's bound counts
   auto weight = [&](int c) {
     auto [x, y] = fc.kernelParams(c);
-    return HemiWeight{HEMI_FRESNEL, fc.model, static_cast<float>(x), static_cast<float>(y)};
+    return fresnelWeight(fc.model, x, y);
   };
   // each texel's claim (before storage), the largest over the runs that fill the table
   std::vector<double> claim;

@@ -31,6 +31,7 @@ std::array<double, 2> mcTexel(int ndf, int gaf, const HemiWeight& hw, double mu,
   p.fresnel = hw.fresnel;
   p.fr_x = hw.x;
   p.fr_y = hw.y;
+  p.fr_z = hw.z;
   float fm = static_cast<float>(mu), s = std::sqrt((1 - fm) * (1 + fm));
   double sum[2] = {0, 0}, sum2[2] = {0, 0};
   for (int k = 0; k < n; ++k) {
@@ -65,7 +66,7 @@ Weights weightsOf(const FresnelChoice& fc) {
   if (!fc.isOne()) {
     auto [x, y] = fc.kernelParams(0);
     auto [mx, my] = fc.modelParams(0);
-    w.hw = HemiWeight{HEMI_FRESNEL, fc.model, static_cast<float>(x), static_cast<float>(y)};
+    w.hw = fresnelWeight(fc.model, x, y);
     w.rw = reference::Weight{reference::Weight::Fresnel, {fc.model, mx, my}};
   }
   return w;
@@ -128,7 +129,7 @@ Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
     ladder::onTwoThreads(texels, [&](size_t k) {
       double mu = centre(static_cast<int>(k % n), n), r = centre(static_cast<int>(k / n), n);
       brdf64::BrdfParams p = brdf64::hemisphere_texel_params(ndf, gaf, mu, r);
-      p.moments = w.hw.moments, p.fresnel = w.hw.fresnel, p.fr_x = w.hw.x, p.fr_y = w.hw.y;
+      p.moments = w.hw.moments, p.fresnel = w.hw.fresnel, p.fr_x = w.hw.x, p.fr_y = w.hw.y, p.fr_z = w.hw.z;
       brdf64::HemiResult h = brdf64::hemisphere_moments(ndf, gaf, p, mu, level);
       auto x = pick(h.a, h.b);
       for (size_t c = 0; c < nv; ++c) v[k * nv + c] = x[c];

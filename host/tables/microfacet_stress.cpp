@@ -70,7 +70,7 @@ struct Recorder {
                 const std::string& limitText = "", double limit = NAN, double tol = 0) {
     HemiWeight hw;
     if (w.kind == reference::Weight::Fresnel)
-      hw = HemiWeight{HEMI_FRESNEL, w.f.model, static_cast<float>(w.f.x), static_cast<float>(w.f.y)};
+      hw = fresnelWeight(w.f.model, w.f.x, w.f.y);
     float fm = static_cast<float>(mu), fr = static_cast<float>(r);
     KernelTable t = k.hemisphereRange(ndf, gaf, 1, 1, fm, fm, fr, fr, true, hw);
     bool fres = w.kind == reference::Weight::Fresnel;

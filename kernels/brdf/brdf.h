@@ -61,6 +61,7 @@ BRDF_FN BrdfParams brdf_params_kp(int gaf, real r, real inv_kp) {
   p.fresnel = FRESNEL_ONE;
   p.fr_x = RC(0.0);
   p.fr_y = RC(0.0);
+  p.fr_z = RC(0.0);
   p.has_view = 0;
   p.view_cl = RC(0.0);
   p.smith_col = 0;

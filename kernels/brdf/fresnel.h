@@ -28,29 +28,43 @@ BRDF_FN real fresnel_schlick_weight(real c) {
 /* Schlick 1994: F0 + (1 - F0)(1 - c)^5 */
 BRDF_FN real fresnel_schlick(param_t f0, real c) { return f0 + (RC(1.0) - f0) * fresnel_schlick_weight(c); }
 
+/* eta^2 - 1 as (eta - 1)(eta + 1) + z. z: what eta's float rounding takes from eta^2 - 1 (0 in
+ * double): near eta = 1 the Fresnel term depends on eta only through eta^2 - 1, which float eta
+ * holds to 1.7e-5 of its value at eta = 0.9999 and to 6% at 1 - 1e-6. The albedo at eta = 0.9999,
+ * ggx + smith-correlated, mu = 1/64, r = 3/64 is 0.2821800; at float(0.9999) it is 0.2823513, the
+ * 1.7e-4 that a table without z missed by. The host passes z from the eta it was given, in double
+ * (HemiWeight, host/cl/runner.h). */
+#ifndef BRDF_LANE_PASS
+BRDF_FN param_t fresnel_e2m1(param_t eta, param_t z) { return (eta - RC(1.0)) * (eta + RC(1.0)) + z; }
+#endif
+
 /* Exact unpolarised dielectric (Cook and Torrance 1982, with MODELS.md errata):
  * g^2 = eta^2 + c^2 - 1, F = 1/2 (g-c)^2/(g+c)^2 (1 + (c(g+c) - 1)^2/(c(g-c) + 1)^2); F = 1 when g^2 < 0.
  * g^2 as (eta - 1)(eta + 1) + c^2: eta^2 - 1 + c^2 loses c^2 next to 1 near eta = 1 (at eta = 1 and
  * c < 1e-8 in double it gave g = 0, F = 1 instead of 0; the rough dielectric's grazing corner). */
-BRDF_FN real fresnel_dielectric(param_t eta, real c) {
+BRDF_FN real fresnel_dielectric_z(param_t eta, param_t z, real c) {
   c = fabs(c);
-  real g2 = (eta - RC(1.0)) * (eta + RC(1.0)) + c * c;
+  real g2 = fresnel_e2m1(eta, z) + c * c;
   real g = sqrt(fmax(g2, RC(0.0)));
   real a = (g - c) / fmax(g + c, RC(1e-30)); /* eta = 1 at c = 0: 0, the limit of F = 0 */
   real b = (c * (g + c) - RC(1.0)) / (c * (g - c) + RC(1.0));
   real f = RC(0.5) * a * a * (RC(1.0) + b * b);
   return g2 < RC(0.0) ? RC(1.0) : f;
 }
+BRDF_FN real fresnel_dielectric(param_t eta, real c) { return fresnel_dielectric_z(eta, RC(0.0), c); }
 
 /* Schlick on the transmitted angle where eta < 1 (Burley 2015, MODELS.md errata):
- * cos^2 t = 1 - (1 - c^2)/eta^2; F = 1 when that is negative. F0 = ((eta-1)/(eta+1))^2. */
-BRDF_FN real fresnel_schlick_tir(param_t eta, real c) {
+ * cos^2 t = 1 - (1 - c^2)/eta^2 = (c^2 + eta^2 - 1)/eta^2 (the second form: no cancellation near
+ * the critical angle); F = 1 when that is negative. F0 = ((eta-1)/(eta+1))^2. z: fresnel_e2m1. */
+BRDF_FN real fresnel_schlick_tir_z(param_t eta, param_t z, real c) {
   param_t f0 = (eta - RC(1.0)) / (eta + RC(1.0));
   f0 *= f0;
-  real ct2 = RC(1.0) - (RC(1.0) - c * c) / (eta * eta);
-  real f = fresnel_schlick(f0, eta >= RC(1.0) ? c : sqrt(fmax(ct2, RC(0.0))));
-  return (eta < RC(1.0) && ct2 < RC(0.0)) ? RC(1.0) : f;
+  param_t d = fresnel_e2m1(eta, z);
+  real ct2 = (c * c + d) / (eta * eta);
+  real f = fresnel_schlick(f0, d >= RC(0.0) ? c : sqrt(fmax(ct2, RC(0.0))));
+  return (d < RC(0.0) && ct2 < RC(0.0)) ? RC(1.0) : f;
 }
+BRDF_FN real fresnel_schlick_tir(param_t eta, real c) { return fresnel_schlick_tir_z(eta, RC(0.0), c); }
 
 /* Exact unpolarised reflectance of a conductor with complex relative IOR eta + i k (Born and Wolf
  * 1999, sec. 14.2, in the real form of e.g. Lagarde 2013): with s2 = 1 - c^2,
@@ -58,11 +72,11 @@ BRDF_FN real fresnel_schlick_tir(param_t eta, real c) {
  *   Rs = (a^2 + b^2 - 2 a c + c^2)/(a^2 + b^2 + 2 a c + c^2),
  *   Rp = Rs (c^2 (a^2 + b^2) - 2 a c s2 + s2^2)/(c^2 (a^2 + b^2) + 2 a c s2 + s2^2),  F = (Rs + Rp)/2.
  * k = 0 gives the dielectric (eta >= 1). At c = 0, Rs = Rp = 1. */
-BRDF_FN real fresnel_conductor(param_t eta, param_t k, real c) {
+BRDF_FN real fresnel_conductor_z(param_t eta, param_t k, param_t z, real c) {
   c = fmin(fabs(c), RC(1.0));
   real s2 = (RC(1.0) - c) * (RC(1.0) + c);
   param_t e2 = eta * eta, k2 = k * k;
-  real t = (eta - RC(1.0)) * (eta + RC(1.0)) + c * c - k2; /* e2 - k2 - s2 without cancellation near eta = 1 */
+  real t = fresnel_e2m1(eta, z) + c * c - k2; /* e2 - k2 - s2 without cancellation near eta = 1 */
   real ab2 = sqrt(t * t + RC(4.0) * e2 * k2);
   real a = sqrt(fmax(RC(0.5) * (ab2 + t), RC(0.0)));
   real c2 = c * c, ac = RC(2.0) * a * c;
@@ -71,6 +85,7 @@ BRDF_FN real fresnel_conductor(param_t eta, param_t k, real c) {
   real rp = rs * (u - v) / (u + v);
   return RC(0.5) * (rs + rp);
 }
+BRDF_FN real fresnel_conductor(param_t eta, param_t k, real c) { return fresnel_conductor_z(eta, k, RC(0.0), c); }
 
 #ifndef BRDF_LANE_PASS
 /* F82-tint (Hoffman 2019, "Fresnel equations considered harmful"; Kutz et al. 2021; OpenPBR 1.1):
@@ -97,31 +112,66 @@ BRDF_FN real fresnel_f82_tint(param_t f0, param_t b, real c) {
   return fresnel_schlick(f0, c) - b * fresnel_f82_weight(c);
 }
 
-/* Any model by id (a uniform branch: model, x and y are the same for every lane). x: F0 (schlick,
- * f82-tint) or eta (dielectric, schlick-tir, conductor); y: k (conductor) or b (f82-tint). */
-BRDF_FN real fresnel_F(int model, param_t x, param_t y, real c) {
+/* Any model by id (a uniform branch: model, x, y and z are the same for every lane). x: F0
+ * (schlick, f82-tint) or eta (dielectric, schlick-tir, conductor); y: k (conductor) or b
+ * (f82-tint); z: eta's correction (fresnel_e2m1) for the models of eta. */
+BRDF_FN real fresnel_Fz(int model, param_t x, param_t y, param_t z, real c) {
   if (model == FRESNEL_SCHLICK) return fresnel_schlick(x, c);
-  if (model == FRESNEL_DIELECTRIC) return fresnel_dielectric(x, c);
-  if (model == FRESNEL_SCHLICK_TIR) return fresnel_schlick_tir(x, c);
-  if (model == FRESNEL_CONDUCTOR) return fresnel_conductor(x, y, c);
+  if (model == FRESNEL_DIELECTRIC) return fresnel_dielectric_z(x, z, c);
+  if (model == FRESNEL_SCHLICK_TIR) return fresnel_schlick_tir_z(x, z, c);
+  if (model == FRESNEL_CONDUCTOR) return fresnel_conductor_z(x, y, z, c);
   if (model == FRESNEL_F82_TINT) return fresnel_f82_tint(x, y, c);
   return RC(1.0) + RC(0.0) * c;
 }
+BRDF_FN real fresnel_F(int model, param_t x, param_t y, real c) { return fresnel_Fz(model, x, y, RC(0.0), c); }
 
 #ifndef BRDF_LANE_PASS
 /* Where F has a kink: total internal reflection sets in at o.h = sqrt(1 - eta^2) for eta < 1
  * (dielectric, schlick-tir); the integrators split there. -1: nowhere. */
-BRDF_FN real fresnel_kink(int moments, int model, real x) {
-  int tir = moments == HEMI_FRESNEL && (model == FRESNEL_DIELECTRIC || model == FRESNEL_SCHLICK_TIR) && x < RC(1.0);
-  return tir ? sqrt((RC(1.0) - x) * (RC(1.0) + x)) : RC(-1.0);
+BRDF_FN real fresnel_kink(int moments, int model, real x, real z) {
+  real d = fresnel_e2m1(x, z);
+  int tir = moments == HEMI_FRESNEL && (model == FRESNEL_DIELECTRIC || model == FRESNEL_SCHLICK_TIR) && d < RC(0.0);
+  return tir ? sqrt(-d) : RC(-1.0);
 }
 /* The scale of o.h on which a dielectric (or schlick-tir) of eta slightly above 1 falls from 1 at
  * grazing to its F0: sqrt(eta^2 - 1). 0 where no such layer needs resolving (eta >= 1.5, or other
  * weights). */
-BRDF_FN real fresnel_soft_scale(int moments, int model, real x) {
-  int soft = moments == HEMI_FRESNEL && (model == FRESNEL_DIELECTRIC || model == FRESNEL_SCHLICK_TIR) && x > RC(1.0) &&
+BRDF_FN real fresnel_soft_scale(int moments, int model, real x, real z) {
+  real d = fresnel_e2m1(x, z);
+  int soft = moments == HEMI_FRESNEL && (model == FRESNEL_DIELECTRIC || model == FRESNEL_SCHLICK_TIR) && d > RC(0.0) &&
              x < RC(1.5);
-  return soft ? sqrt((x - RC(1.0)) * (x + RC(1.0))) : RC(0.0);
+  return soft ? sqrt(d) : RC(0.0);
+}
+/* The o.h layer over which a Fresnel of refractive index near 1 falls from 1 to its F0: F is
+ * singular where g^2 = n^2 - 1 + c^2 = 0, at c* = sqrt(1 - n^2) (n = eta + i k; real for a
+ * dielectric, the critical cosine when eta < 1, 0 when eta > 1), and changes on the scale
+ * w = |c*| = |1 - n^2|^(1/2) beside x0 = Re c*. There a narrow lobe meets a steep F: ggx +
+ * smith-correlated at eta = 0.9999, mu = 1/64, r = 3/64 missed by 1.7e-4 while its estimate said
+ * 7.9e-7 without the graded breaks x0 + w FRESNEL_GRADES[j] (and x0 - w FRESNEL_GRADES[j] for a
+ * conductor, whose singularity sits off the real axis at Im c*, so F is smooth but steep on
+ * both sides of x0). Returns w (0: no layer to resolve, w >= FRESNEL_GRADE_MAX or a weight
+ * without one) and x0 in *x0; *both: graded on both sides. */
+#define FRESNEL_NGRADES 8
+BRDF_CONST real FRESNEL_GRADES[FRESNEL_NGRADES] = {RC(0.015625), RC(0.0625), RC(0.25), RC(1.0),
+                                                   RC(4.0),      RC(16.0),   RC(64.0), RC(256.0)};
+#define FRESNEL_GRADE_MAX RC(0.5)
+BRDF_FN real fresnel_layer(int moments, int model, real x, real y, real z, real* x0, int* both) {
+  *x0 = RC(0.0);
+  *both = 0;
+  if (moments != HEMI_FRESNEL) return RC(0.0);
+  real w = RC(0.0);
+  if (model == FRESNEL_DIELECTRIC || model == FRESNEL_SCHLICK_TIR) {
+    real d = -fresnel_e2m1(x, z); /* 1 - eta^2 */
+    w = sqrt(fabs(d));
+    *x0 = d > RC(0.0) ? w : RC(0.0);
+  } else if (model == FRESNEL_CONDUCTOR) {
+    real a = y * y - fresnel_e2m1(x, z), b = RC(2.0) * x * y; /* 1 - n^2 = a - i b */
+    real m = sqrt(a * a + b * b);
+    w = sqrt(m);
+    *x0 = sqrt(fmax(RC(0.5) * (m + a), RC(0.0)));
+    *both = 1;
+  }
+  return w < FRESNEL_GRADE_MAX ? w : RC(0.0);
 }
 #endif
 #endif /* BRDF_FRESNEL_H */

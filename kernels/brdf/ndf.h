@@ -42,6 +42,7 @@ typedef struct BrdfParams {
   int moments;      /* HEMI_SPLIT, HEMI_FRESNEL, HEMI_F82C */
   int fresnel;      /* FRESNEL_* for HEMI_FRESNEL */
   real fr_x, fr_y;  /* its parameters: F0 or eta; k (conductor) or b (f82-tint) */
+  real fr_z;        /* eta's correction (fresnel.h fresnel_e2m1), 0 but for float etas near 1 */
   /* The view's c Lambda that the GAF uses (gaf_view_cLambda), when has_view: the estimators fix
    * the view per texel and set it once (hemi_view, integrate/integrand.h), so that gaf_G_over_no
    * does not recompute it at every node. has_view = 0: gaf_G_over_no computes it from its n.o. */

@@ -235,8 +235,10 @@ BRDF_FN TrapSums hemi_phi_trap(int ndf, int gaf, BrdfParams p, real mu, real s, 
   return t;
 }
 
-/* The most panels one arc takes: its breakpoints (at most 16) and phimax. */
-#define HEMI_ARC_PANELS 17
+/* The most breakpoints inside one arc, and the most panels it takes (its breakpoints and phimax):
+ * room for the GAF's and Fresnel's kinks, the horizon grading and the Fresnel layer's grades. */
+#define HEMI_PHI_MAXB 32
+#define HEMI_ARC_PANELS (HEMI_PHI_MAXB + 1)
 
 
 /* hemi_phi's set-up at fixed theta_h: 1 when the node takes the whole-circle trapezoid, else 0
@@ -253,7 +255,7 @@ BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, r
   int nk = gaf_kinks(gaf, mu, s, h.c, sn, kinks);
   /* Fresnel's kink at o.h = oc (total internal reflection): cos phi = (oc - mu c)/(s sn); F has a
    * square-root end there (panels beside it substitute) */
-  real oc = fresnel_kink(p.moments, p.fresnel, p.fr_x);
+  real oc = fresnel_kink(p.moments, p.fresnel, p.fr_x, p.fr_z);
   real fk = RC(-1.0);
   /* Where the kink nearly touches phi = pi, F's square root sits close to the real axis without
    * being on a panel end: sqrt(x - oc) with x - oc ~ d + (s sn/2)(pi - phi)^2 near pi, singular at
@@ -273,7 +275,26 @@ BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, r
     }
     fw = sqrt_near_pi(ck, &fg);
   }
-  if (full && nk == 0 && fw <= RC(0.0) && refine <= 1) return 1;
+  /* The Fresnel layer's graded o.h values (fresnel_layer) where the arc crosses them: their own
+   * breakpoints, so that each panel sees F change by a bounded factor. */
+  real lx0 = RC(0.0);
+  int lboth = 0;
+  real lw = fresnel_layer(p.moments, p.fresnel, p.fr_x, p.fr_y, p.fr_z, &lx0, &lboth);
+  real lbr[2 * FRESNEL_NGRADES + 1];
+  int nl = 0;
+  if (lw > RC(0.0) && s * sn > RC(0.0)) {
+    for (int j = -1; j < 2 * FRESNEL_NGRADES; ++j) {
+      real x = j < 0 ? lx0 : j < FRESNEL_NGRADES ? lx0 + lw * FRESNEL_GRADES[j] : lx0 - lw * FRESNEL_GRADES[j - FRESNEL_NGRADES];
+      if (j < 0 && !lboth) continue; /* a dielectric's x0 is its kink, already a break */
+      if (j >= FRESNEL_NGRADES && !lboth) break;
+      real cp = (x - mu * h.c) / (s * sn);
+      if (x > RC(0.0) && cp > RC(-1.0) && cp < RC(1.0)) {
+        real a = acos(cp);
+        if (a < phimax) lbr[nl++] = a;
+      }
+    }
+  }
+  if (full && nk == 0 && nl == 0 && fw <= RC(0.0) && refine <= 1) return 1;
   /* Breakpoints inside (0, phimax): the GAF's kinks, and on a partial arc a geometric grading
    * towards phimax. There n.i -> 0, and many GAFs (kelemen's 1/(o.h)^2, Smith's n.i/(n.o Lambda_i),
    * cook-torrance) change on the scale where n.i ~ mu, a layer of width
@@ -281,8 +302,9 @@ BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, r
    * on the scale n.i ~ alpha where that is finer (hemi_gaf_alpha_layer: at alpha << mu the mu
    * layer left it inside one panel, which both under-resolved it and inflated |K15 - G7| there).
    * Panels of width dphi 4^k resolve it with a fixed number of nodes per panel, whatever mu. */
-  real br[16];
+  real br[HEMI_PHI_MAXB];
   int nb = 0;
+  for (int k = 0; k < nl; ++k) br[nb++] = lbr[k];
   for (int k = 0; k < nk; ++k) {
     if (kinks[k] < RC(1.0) && kinks[k] > RC(-1.0)) {
       real a = acos(kinks[k]);
@@ -301,7 +323,7 @@ BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, r
     real layer = (own ? RC(2.0) * p.alpha : mu) / (RC(2.0) * h.c * den);
     /* Fresnel of eta slightly above 1 changes on the scale o.h ~ sqrt(eta^2 - 1), which the arc
      * reaches near its horizon end (o.h = mu/(2c) there, 0 at mu = 0): grade from that scale too. */
-    real fs = fresnel_soft_scale(p.moments, p.fresnel, p.fr_x);
+    real fs = fresnel_soft_scale(p.moments, p.fresnel, p.fr_x, p.fr_z);
     if (fs > RC(0.0)) {
       layer = layer > RC(0.0) ? fmin(layer, fs / den) : fs / den;
       own = 0; /* Fresnel's layer is not G1's: the 4-fold grading */
@@ -318,12 +340,12 @@ BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, r
      * the pair tests' edge texels against the reference, and `brdfbake-bench --bounds --stride 8
      * --pair ggx+cook-torrance --pair beckmann+none --pair gaussian+neumann` (0 texels over). */
     int graded = !(gaf_polynomial_arc(gaf) && p.moments != HEMI_FRESNEL);
-    for (real d = layer; graded && d < RC(0.5) * phimax && nb < 16; d *= grow)
+    for (real d = layer; graded && d < RC(0.5) * phimax && nb < HEMI_PHI_MAXB; d *= grow)
       if (!(fk >= RC(0.0) && fabs(phimax - d - fk) < RC(0.25) * d)) br[nb++] = phimax - d;
   }
   if (fw > RC(0.0)) {
     real grow = refine ? RC(0.5) * HEMI_PHI_GROW : HEMI_PHI_GROW;
-    for (real d = fw; d < RC(0.5) * fg && nb < 16; d *= grow)
+    for (real d = fw; d < RC(0.5) * fg && nb < HEMI_PHI_MAXB; d *= grow)
       if (fg - d < phimax) br[nb++] = fg - d;
   }
   sort_ascending(br, nb);

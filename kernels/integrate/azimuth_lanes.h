@@ -15,10 +15,14 @@
 #include "integrate/azimuth.h"
 #if BRDF_LANES >= HEMI_GK_N
 /* Whether every node of a whole-circle outer panel takes the plain 16-interval trapezoid in
- * hemi_phi (no GAF kink, no Fresnel kink, the default budget): then hemi_trap_lanes serves them. */
+ * hemi_phi (no GAF kink, no Fresnel kink or layer, the default budget): then hemi_trap_lanes
+ * serves them. */
 BRDF_FN int hemi_trap_plain(int gaf, BrdfParams p, int refine) {
+  real x0;
+  int both;
   return refine == 0 && gaf != GAF_NEUMANN && gaf != GAF_COOK_TORRANCE && gaf != GAF_CHARLIE_SMITH &&
-         !(fresnel_kink(p.moments, p.fresnel, p.fr_x) > RC(0.0));
+         !(fresnel_kink(p.moments, p.fresnel, p.fr_x, p.fr_z) > RC(0.0)) &&
+         !(fresnel_layer(p.moments, p.fresnel, p.fr_x, p.fr_y, p.fr_z, &x0, &both) > RC(0.0));
 }
 
 /* Six sums of the four azimuth nodes i, i + 1, i + 8, i + 9, as lane_sum4's tree pairs them:

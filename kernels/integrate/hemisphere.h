@@ -57,7 +57,31 @@ BRDF_CONST real HEMI_REFINE_CUTS[4] = {RC(0.0625), RC(0.25), RC(0.75), RC(0.9375
 
 /* The outer breakpoints after the ones at v1, v2: the e^-v decay wants panels of growing width. */
 #define HEMI_NBREAKS 5
+/* Room for every outer breakpoint: the fixed ones twice, the horizon layer, the GAF's theta
+ * breaks, Fresnel's kink crossings and the Fresnel layer's (fresnel_layer). */
+#define HEMI_MAX_BREAKS 96
 BRDF_CONST real HEMI_BREAKS[HEMI_NBREAKS] = {RC(1.0), RC(3.0), RC(7.0), RC(15.0), RC(40.0)};
+
+/* Where the curve o.h = x (0 < x < 1) meets the ends of the arc at the view o = (s, 0, mu): at
+ * phi = 0, o.h = cos(theta_h - theta_o), so theta_h = |theta_o - theta_x| and theta_o + theta_x
+ * (theta_x = acos x); at the horizon end, o.h = mu/(2 cos theta_h). Their tan^2 theta_h (those
+ * with theta_h in (0, pi/2)) go to t2; returns how many. From sines and cosines of the sums
+ * rather than the angles' difference: theta_o - theta_x in float loses the digits of two angles
+ * near pi/2 (mu = 1/64, x = 0.01414 for eta = 0.9999: 0.0014 from 1.555 and 1.557, 1e-4 of it),
+ * and the break that far off F's square-root end left the albedo 1.7e-4 off in float. */
+BRDF_FN int hemi_cross_tan2(real mu, real s, real x, real* t2) {
+  real sx = sqrt((RC(1.0) - x) * (RC(1.0) + x));
+  int n = 0;
+  real d = s * x - mu * sx, c = mu * x + s * sx; /* sin, cos of theta_o - theta_x */
+  if (d != RC(0.0) && c > RC(0.0)) t2[n++] = (d * d) / (c * c);
+  real su = s * x + mu * sx, cu = mu * x - s * sx; /* of theta_o + theta_x */
+  if (cu > RC(0.0)) t2[n++] = (su * su) / (cu * cu);
+  if (mu < RC(2.0) * x) {
+    real q = mu / (RC(2.0) * x);
+    if (q > RC(0.0)) t2[n++] = (RC(1.0) - q) * (RC(1.0) + q) / (q * q);
+  }
+  return n;
+}
 
 /* One GK15 panel [a, b] of the outer v axis, added to res (values; errors: the outer rule's
  * estimate, gk_error, plus the inner rules' estimates weighted as the values are).
@@ -238,7 +262,7 @@ BRDF_FN HemiResult hemi_rule_peaked(int ndf, int gaf, BrdfParams p, real mu, int
    * same widths counted from v1 (the integrand decays like e^-(v - v1) there too). A break that
    * would leave a panel ending within half its width of v1 or v2 is dropped: such a panel would see
    * the square-root end just outside itself, unsubstituted. Plus the GAF's kink crossings. */
-  real bp[24];
+  real bp[HEMI_MAX_BREAKS];
   int nbp = 0;
   real prev = RC(0.0);
   for (int k = 0; k < HEMI_NBREAKS; ++k) {
@@ -276,18 +300,35 @@ BRDF_FN HemiResult hemi_rule_peaked(int ndf, int gaf, BrdfParams p, real mu, int
    * form: at phi = 0 (o.h = cos(theta_h - theta_o)): theta_h = theta_o -+ tk; at phi = pi
    * (o.h = cos(theta_h + theta_o)): theta_h = tk - theta_o; at the horizon end (n.i = 0, so
    * o.h = mu/(2 c)): c = mu/(2 oc). */
-  real oc = fresnel_kink(p.moments, p.fresnel, p.fr_x);
+  real oc = fresnel_kink(p.moments, p.fresnel, p.fr_x, p.fr_z);
   real fv[4]; /* there the phi integral has a square-root end in theta: panels beside them substitute */
   int nfv = 0;
   if (oc > RC(0.0)) {
-    real to = atan2(s, mu), tk = acos(oc);
-    real cand[4] = {to - tk, to + tk, tk - to, mu < RC(2.0) * oc ? acos(mu / (RC(2.0) * oc)) : RC(-1.0)};
-    for (int k = 0; k < 4; ++k)
-      if (cand[k] > RC(0.0) && cand[k] < RC(0.5) * BRDF_PI) {
-        real t = tan(cand[k]);
-        fv[nfv] = ndf_v_of_tan2(ndf, p, t * t);
-        bp[nbp++] = fv[nfv++];
+    real ct2[3];
+    int nc = hemi_cross_tan2(mu, s, oc, ct2);
+    for (int k = 0; k < nc; ++k) {
+      fv[nfv] = ndf_v_of_tan2(ndf, p, ct2[k]);
+      bp[nbp++] = fv[nfv++];
+    }
+  }
+  /* The Fresnel layer's graded o.h values X (fresnel_layer) enter or leave the arc's o.h range
+   * where the kink's crossings are for X = oc: the phi integral changes form there, and without
+   * these breaks one outer panel spans the whole layer (azimuth.h hemi_phi_plan grades phi). */
+  real lx0 = RC(0.0);
+  int lboth = 0;
+  real lw = fresnel_layer(p.moments, p.fresnel, p.fr_x, p.fr_y, p.fr_z, &lx0, &lboth);
+  if (lw > RC(0.0)) {
+    for (int j = -1; j < 2 * FRESNEL_NGRADES; ++j) {
+      if (j < 0 && !lboth) continue;
+      if (j >= FRESNEL_NGRADES && !lboth) break;
+      real x = j < 0 ? lx0 : j < FRESNEL_NGRADES ? lx0 + lw * FRESNEL_GRADES[j] : lx0 - lw * FRESNEL_GRADES[j - FRESNEL_NGRADES];
+      real ct2[3];
+      int nc = x > RC(0.0) && x < RC(1.0) ? hemi_cross_tan2(mu, s, x, ct2) : 0;
+      for (int k = 0; k < nc && nbp < HEMI_MAX_BREAKS; ++k) {
+        real vb = ndf_v_of_tan2(ndf, p, ct2[k]);
+        if (vb > RC(0.0) && vb < vend) bp[nbp++] = vb;
       }
+    }
   }
   sort_ascending(bp, nbp);
   real cur = RC(0.0);

@@ -45,7 +45,7 @@ BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, Br
   param_t ic = RC(1.0) / h.c;
   real H = gaf_G_over_no(gaf, ndf, p, ni, mu, h.c, oh, s2i, s2o) * oh * ic;
   real w;
-  if (p.moments == HEMI_FRESNEL) w = fresnel_F(p.fresnel, p.fr_x, p.fr_y, oh);
+  if (p.moments == HEMI_FRESNEL) w = fresnel_Fz(p.fresnel, p.fr_x, p.fr_y, p.fr_z, oh);
   else if (p.moments == HEMI_F82C) w = fresnel_f82_weight(oh);
   else w = fresnel_schlick_weight(oh);
   *fb = H * w;
@@ -66,7 +66,7 @@ BRDF_FN void hemi_node_c(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, 
   /* written as hemi_node forms it (1/c, then the product), so the two differ only in where c varies */
   real H = gaf_G_over_no(gaf, ndf, p, ni, mu, c, oh, s2i, s2o) * oh * (RC(1.0) / c);
   real w;
-  if (p.moments == HEMI_FRESNEL) w = fresnel_F(p.fresnel, p.fr_x, p.fr_y, oh);
+  if (p.moments == HEMI_FRESNEL) w = fresnel_Fz(p.fresnel, p.fr_x, p.fr_y, p.fr_z, oh);
   else if (p.moments == HEMI_F82C) w = fresnel_f82_weight(oh);
   else w = fresnel_schlick_weight(oh);
   *fb = H * w;

@@ -116,7 +116,7 @@ BRDF_FN real sqrt_near_pi(real cphi, real* g) {
   return RC(0.0);
 }
 
-/* Insertion sort of a few breakpoints (at most 16), ascending. */
+/* Insertion sort of a few breakpoints (a few dozen at most), ascending. */
 BRDF_FN void sort_ascending(real* v, int n) {
   for (int i = 1; i < n; ++i)
     for (int j = i; j > 0 && v[j - 1] > v[j]; --j) {
