@@ -619,14 +619,15 @@ TEST(CliEvidence, StressIsCleanAndWritesItsPage) {
   fs::path d = freshDir("stress");
   CmdResult r = run("stress -o " + d.string());
   ASSERT_EQ(r.code, 0) << r.out;
-  // each family's stress points: 81 microfacet, 5 F_avg, 6 Ashikhmin-Shirley, 10 brdf3d, 12 rough glass
-  EXPECT_NE(r.out.find("all 114 points pass: finite, within their bounds, limits met"), std::string::npos) << r.out;
+  // each family's stress points: 96 microfacet, 5 F_avg, 6 Ashikhmin-Shirley, 10 brdf3d, 12 rough glass
+  EXPECT_NE(r.out.find("all 129 points pass: finite, within their bounds, limits met"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Tex2(1, v) = exp(-v^2/2) (met)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("brdf3d grazing, r 0.01"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("E_T -> (1 + L) G_T(L, L) as eta -> 1 (met)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("F_avg -> 1 as eta -> 0 (total internal reflection) (met)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("blinn-phong exponent 1e+12"), std::string::npos);
   EXPECT_NE(r.out.find("dielectric eta 1.0001"), std::string::npos);
+  EXPECT_NE(r.out.find("stiff corner, dielectric eta 1.000001"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("oren-nayar sigma 1.571"), std::string::npos);
   for (const char* f : {"index.html", "stress.csv", "stress.svg"}) {
     ASSERT_TRUE(fs::exists(d / "stress" / f)) << f;

@@ -55,13 +55,18 @@ mutation() {
                      'current = f == hex64(entryHash(want)) + ".clbin";' "FirstRun.DevicesPreparesAndListsPrograms" ;;
     node-reuse) set -- "$1" host/cl/runner_launch.cpp '(*known[k])[q] : out[q][next];' '(*known[k])[q] : out[q][0];' \
                   "KernelReuse.NodesOverlapping" ;;
+    fresnel-eta-z) set -- "$1" host/cl/runner_launch.cpp 'w.z = static_cast<float>(' 'w.z = 0 * static_cast<float>(' \
+                     "FresnelEdge.StiffCornerWithinItsClaim" ;;
+    fresnel-layer) set -- "$1" kernels/brdf/fresnel.h '  return w < FRESNEL_GRADE_MAX ? w : RC(0.0);' '  return RC(0.0);' \
+                     "FresnelEdge.StiffCornerWithinItsClaim" ;;
     *) return 64 ;;
   esac
   run_one "$@"
 }
 names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
-       canonical-gaf trap-pi-batch ggx-one-division trap-lanes arc-lanes gk-pair lane-sum4 node-reuse devices-stale"
+       canonical-gaf trap-pi-batch ggx-one-division trap-lanes arc-lanes gk-pair lane-sum4 node-reuse devices-stale
+       fresnel-eta-z fresnel-layer"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
