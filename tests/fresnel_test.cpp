@@ -45,12 +45,7 @@ const Case kCases[] = {
 };
 
 HemiWeight weightOf(const Case& c) {
-  HemiWeight w;
-  w.moments = HEMI_FRESNEL;
-  w.fresnel = c.model;
-  w.x = static_cast<float>(c.x);
-  w.y = static_cast<float>(c.model == FRESNEL_F82_TINT ? brdf64::fresnel_f82_b(c.x, c.y) : c.y);
-  return w;
+  return fresnelWeight(c.model, c.x, c.model == FRESNEL_F82_TINT ? brdf64::fresnel_f82_b(c.x, c.y) : c.y);
 }
 
 TEST(Fresnel, ClosedForms) {
