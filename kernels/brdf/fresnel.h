@@ -145,12 +145,13 @@ BRDF_FN real fresnel_soft_scale(int moments, int model, real x, real z) {
 /* The o.h layer over which a Fresnel of refractive index near 1 falls from 1 to its F0: F is
  * singular where g^2 = n^2 - 1 + c^2 = 0, at c* = sqrt(1 - n^2) (n = eta + i k; real for a
  * dielectric, the critical cosine when eta < 1, 0 when eta > 1), and changes on the scale
- * w = |c*| = |1 - n^2|^(1/2) beside x0 = Re c*. There a narrow lobe meets a steep F: ggx +
- * smith-correlated at eta = 0.9999, mu = 1/64, r = 3/64 missed by 1.7e-4 while its estimate said
- * 7.9e-7 without the graded breaks x0 + w FRESNEL_GRADES[j] (and x0 - w FRESNEL_GRADES[j] for a
- * conductor, whose singularity sits off the real axis at Im c*, so F is smooth but steep on
- * both sides of x0). Returns w (0: no layer to resolve, w >= FRESNEL_GRADE_MAX or a weight
- * without one) and x0 in *x0; *both: graded on both sides. */
+ * w = |c*| = |1 - n^2|^(1/2) beside x0 = Re c* (on both sides for a conductor, whose singularity
+ * sits off the real axis at Im c*). The integrators break at the graded levels
+ * fresnel_layer_levels gives. Measured at eta = 0.9999, ggx + smith-correlated, mu = 1/64: without
+ * them the values still hold their claims (the estimates see the layer and the texel is refined),
+ * but the refined budget's estimate rises to 2.0e-7 against below 2e-9 with them
+ * (tests/fresnel_edge_test.cpp, tools/bite.sh fresnel-layer). Returns w (0: no layer to resolve,
+ * w >= FRESNEL_GRADE_MAX or a weight without one) and x0 in *x0; *both: graded on both sides. */
 #define FRESNEL_NGRADES 8
 BRDF_CONST real FRESNEL_GRADES[FRESNEL_NGRADES] = {RC(0.015625), RC(0.0625), RC(0.25), RC(1.0),
                                                    RC(4.0),      RC(16.0),   RC(64.0), RC(256.0)};
@@ -172,6 +173,23 @@ BRDF_FN real fresnel_layer(int moments, int model, real x, real y, real z, real*
     *both = 1;
   }
   return w < FRESNEL_GRADE_MAX ? w : RC(0.0);
+}
+/* The layer's graded o.h levels inside (0, 1), into lv: x0 + w FRESNEL_GRADES[j], and for a
+ * conductor x0 itself and x0 - w FRESNEL_GRADES[j] (a dielectric's x0 is its kink, a break
+ * already, and F = 1 below it). Returns how many, at most FRESNEL_MAX_LEVELS; 0 without a layer. */
+#define FRESNEL_MAX_LEVELS (2 * FRESNEL_NGRADES + 1)
+BRDF_FN int fresnel_layer_levels(int moments, int model, real x, real y, real z, real* lv) {
+  real x0;
+  int both, n = 0;
+  real w = fresnel_layer(moments, model, x, y, z, &x0, &both);
+  if (w <= RC(0.0)) return 0;
+  if (both && x0 > RC(0.0) && x0 < RC(1.0)) lv[n++] = x0;
+  for (int j = 0; j < FRESNEL_NGRADES; ++j) {
+    real up = x0 + w * FRESNEL_GRADES[j], down = x0 - w * FRESNEL_GRADES[j];
+    if (up < RC(1.0)) lv[n++] = up;
+    if (both && down > RC(0.0)) lv[n++] = down;
+  }
+  return n;
 }
 #endif
 #endif /* BRDF_FRESNEL_H */

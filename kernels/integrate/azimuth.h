@@ -275,26 +275,17 @@ BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, r
     }
     fw = sqrt_near_pi(ck, &fg);
   }
-  /* The Fresnel layer's graded o.h values (fresnel_layer) where the arc crosses them: their own
-   * breakpoints, so that each panel sees F change by a bounded factor. */
-  real lx0 = RC(0.0);
-  int lboth = 0;
-  real lw = fresnel_layer(p.moments, p.fresnel, p.fr_x, p.fr_y, p.fr_z, &lx0, &lboth);
-  real lbr[2 * FRESNEL_NGRADES + 1];
-  int nl = 0;
-  if (lw > RC(0.0) && s * sn > RC(0.0)) {
-    for (int j = -1; j < 2 * FRESNEL_NGRADES; ++j) {
-      real x = j < 0 ? lx0 : j < FRESNEL_NGRADES ? lx0 + lw * FRESNEL_GRADES[j] : lx0 - lw * FRESNEL_GRADES[j - FRESNEL_NGRADES];
-      if (j < 0 && !lboth) continue; /* a dielectric's x0 is its kink, already a break */
-      if (j >= FRESNEL_NGRADES && !lboth) break;
-      real cp = (x - mu * h.c) / (s * sn);
-      if (x > RC(0.0) && cp > RC(-1.0) && cp < RC(1.0)) {
-        real a = acos(cp);
-        if (a < phimax) lbr[nl++] = a;
-      }
-    }
+  /* The Fresnel layer's graded o.h levels (fresnel_layer_levels) where the arc crosses them: their
+   * own breakpoints, so that each panel sees F change by a bounded factor. */
+  real br[HEMI_PHI_MAXB];
+  int nb = 0;
+  real lv[FRESNEL_MAX_LEVELS];
+  int nlv = s * sn > RC(0.0) ? fresnel_layer_levels(p.moments, p.fresnel, p.fr_x, p.fr_y, p.fr_z, lv) : 0;
+  for (int k = 0; k < nlv; ++k) {
+    real cp = (lv[k] - mu * h.c) / (s * sn);
+    if (cp > RC(-1.0) && cp < RC(1.0) && acos(cp) < phimax) br[nb++] = acos(cp);
   }
-  if (full && nk == 0 && nl == 0 && fw <= RC(0.0) && refine <= 1) return 1;
+  if (full && nk == 0 && nb == 0 && fw <= RC(0.0) && refine <= 1) return 1;
   /* Breakpoints inside (0, phimax): the GAF's kinks, and on a partial arc a geometric grading
    * towards phimax. There n.i -> 0, and many GAFs (kelemen's 1/(o.h)^2, Smith's n.i/(n.o Lambda_i),
    * cook-torrance) change on the scale where n.i ~ mu, a layer of width
@@ -302,9 +293,6 @@ BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, r
    * on the scale n.i ~ alpha where that is finer (hemi_gaf_alpha_layer: at alpha << mu the mu
    * layer left it inside one panel, which both under-resolved it and inflated |K15 - G7| there).
    * Panels of width dphi 4^k resolve it with a fixed number of nodes per panel, whatever mu. */
-  real br[HEMI_PHI_MAXB];
-  int nb = 0;
-  for (int k = 0; k < nl; ++k) br[nb++] = lbr[k];
   for (int k = 0; k < nk; ++k) {
     if (kinks[k] < RC(1.0) && kinks[k] > RC(-1.0)) {
       real a = acos(kinks[k]);

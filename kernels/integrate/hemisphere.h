@@ -67,8 +67,9 @@ BRDF_CONST real HEMI_BREAKS[HEMI_NBREAKS] = {RC(1.0), RC(3.0), RC(7.0), RC(15.0)
  * (theta_x = acos x); at the horizon end, o.h = mu/(2 cos theta_h). Their tan^2 theta_h (those
  * with theta_h in (0, pi/2)) go to t2; returns how many. From sines and cosines of the sums
  * rather than the angles' difference: theta_o - theta_x in float loses the digits of two angles
- * near pi/2 (mu = 1/64, x = 0.01414 for eta = 0.9999: 0.0014 from 1.555 and 1.557, 1e-4 of it),
- * and the break that far off F's square-root end left the albedo 1.7e-4 off in float. */
+ * near pi/2 (mu = 1/64, x = 0.01414 for eta = 0.9999: 0.0014 from 1.555 and 1.557, 1e-4 of it, a
+ * break that far from F's square-root end); the sine form's break, in float, is at v = 0.37503681
+ * against 0.37503688 in double (r = 3/64). */
 BRDF_FN int hemi_cross_tan2(real mu, real s, real x, real* t2) {
   real sx = sqrt((RC(1.0) - x) * (RC(1.0) + x));
   int n = 0;
@@ -311,23 +312,17 @@ BRDF_FN HemiResult hemi_rule_peaked(int ndf, int gaf, BrdfParams p, real mu, int
       bp[nbp++] = fv[nfv++];
     }
   }
-  /* The Fresnel layer's graded o.h values X (fresnel_layer) enter or leave the arc's o.h range
-   * where the kink's crossings are for X = oc: the phi integral changes form there, and without
-   * these breaks one outer panel spans the whole layer (azimuth.h hemi_phi_plan grades phi). */
-  real lx0 = RC(0.0);
-  int lboth = 0;
-  real lw = fresnel_layer(p.moments, p.fresnel, p.fr_x, p.fr_y, p.fr_z, &lx0, &lboth);
-  if (lw > RC(0.0)) {
-    for (int j = -1; j < 2 * FRESNEL_NGRADES; ++j) {
-      if (j < 0 && !lboth) continue;
-      if (j >= FRESNEL_NGRADES && !lboth) break;
-      real x = j < 0 ? lx0 : j < FRESNEL_NGRADES ? lx0 + lw * FRESNEL_GRADES[j] : lx0 - lw * FRESNEL_GRADES[j - FRESNEL_NGRADES];
-      real ct2[3];
-      int nc = x > RC(0.0) && x < RC(1.0) ? hemi_cross_tan2(mu, s, x, ct2) : 0;
-      for (int k = 0; k < nc && nbp < HEMI_MAX_BREAKS; ++k) {
-        real vb = ndf_v_of_tan2(ndf, p, ct2[k]);
-        if (vb > RC(0.0) && vb < vend) bp[nbp++] = vb;
-      }
+  /* The Fresnel layer's graded o.h levels X (fresnel_layer_levels) enter or leave the arc's o.h
+   * range where the kink's crossings are for X = oc: the phi integral changes form there, and
+   * without these breaks one outer panel spans the whole layer (azimuth.h hemi_phi_plan grades phi). */
+  real lv[FRESNEL_MAX_LEVELS];
+  int nlv = fresnel_layer_levels(p.moments, p.fresnel, p.fr_x, p.fr_y, p.fr_z, lv);
+  for (int j = 0; j < nlv; ++j) {
+    real ct2[3];
+    int nc = hemi_cross_tan2(mu, s, lv[j], ct2);
+    for (int k = 0; k < nc && nbp < HEMI_MAX_BREAKS; ++k) {
+      real vb = ndf_v_of_tan2(ndf, p, ct2[k]);
+      if (vb > RC(0.0) && vb < vend) bp[nbp++] = vb;
     }
   }
   sort_ascending(bp, nbp);
