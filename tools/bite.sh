@@ -59,6 +59,8 @@ mutation() {
                      "FresnelEdge.StiffCornerWithinItsClaim" ;;
     fresnel-layer) set -- "$1" kernels/brdf/fresnel.h '  return w < FRESNEL_GRADE_MAX ? w : RC(0.0);' '  return RC(0.0);' \
                      "FresnelEdge.StiffCornerWithinItsClaim" ;;
+    fresnel-claim-inflated) set -- "$1" kernels/bake.cl '    out_err[t] = hemi_rel_error(h);' \
+                              '    out_err[t] = 10.0f * hemi_rel_error(h);' "FresnelEdge.StiffCornerWithinItsClaim" ;;
     *) return 64 ;;
   esac
   run_one "$@"
@@ -66,7 +68,7 @@ mutation() {
 names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
        canonical-gaf trap-pi-batch ggx-one-division trap-lanes arc-lanes gk-pair lane-sum4 node-reuse devices-stale
-       fresnel-eta-z fresnel-layer"
+       fresnel-eta-z fresnel-layer fresnel-claim-inflated"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
