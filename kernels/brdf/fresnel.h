@@ -129,18 +129,17 @@ BRDF_FN real fresnel_F(int model, param_t x, param_t y, real c) { return fresnel
 /* Where F has a kink: total internal reflection sets in at o.h = sqrt(1 - eta^2) for eta < 1
  * (dielectric, schlick-tir); the integrators split there. -1: nowhere. */
 BRDF_FN real fresnel_kink(int moments, int model, real x, real z) {
+  if (moments != HEMI_FRESNEL || (model != FRESNEL_DIELECTRIC && model != FRESNEL_SCHLICK_TIR)) return RC(-1.0);
   real d = fresnel_e2m1(x, z);
-  int tir = moments == HEMI_FRESNEL && (model == FRESNEL_DIELECTRIC || model == FRESNEL_SCHLICK_TIR) && d < RC(0.0);
-  return tir ? sqrt(-d) : RC(-1.0);
+  return d < RC(0.0) ? sqrt(-d) : RC(-1.0);
 }
 /* The scale of o.h on which a dielectric (or schlick-tir) of eta slightly above 1 falls from 1 at
  * grazing to its F0: sqrt(eta^2 - 1). 0 where no such layer needs resolving (eta >= 1.5, or other
  * weights). */
 BRDF_FN real fresnel_soft_scale(int moments, int model, real x, real z) {
+  if (moments != HEMI_FRESNEL || (model != FRESNEL_DIELECTRIC && model != FRESNEL_SCHLICK_TIR)) return RC(0.0);
   real d = fresnel_e2m1(x, z);
-  int soft = moments == HEMI_FRESNEL && (model == FRESNEL_DIELECTRIC || model == FRESNEL_SCHLICK_TIR) && d > RC(0.0) &&
-             x < RC(1.5);
-  return soft ? sqrt(d) : RC(0.0);
+  return d > RC(0.0) && x < RC(1.5) ? sqrt(d) : RC(0.0);
 }
 /* The o.h layer over which a Fresnel of refractive index near 1 falls from 1 to its F0: F is
  * singular where g^2 = n^2 - 1 + c^2 = 0, at c* = sqrt(1 - n^2) (n = eta + i k; real for a
