@@ -19,9 +19,13 @@ mutation() {
     progress-on-pipe) set -- "$1" host/cli/console.cpp 'const bool progress = !quiet && ::isatty(STDERR_FILENO);' \
                         'const bool progress = !quiet;' "FirstRun.ProgressLineOnATerminalOnly" ;;
     render-lobe) set -- "$1" host/render/furnace.cpp 'v = vec3(e + a);' 'v = vec3(e + 0.9 * a);' \
-                   "Render.FurnaceRowsVanish" ;;
+                   "Render.DefaultBoundsAreLocalAndTight" ;;
     render-glass) set -- "$1" host/render/furnace.cpp 'v = vec3(glassE(mu, r));' 'v = vec3(glassE(mu, r) * 1.001);' \
                     "Render.FurnaceRowsVanish" ;;
+    render-single) set -- "$1" host/render/furnace.cpp 'v = vec3(ab.x + ab.y);' 'v = vec3(ab.x + 0.95 * ab.y);' \
+                     "Render.DefaultBoundsAreLocalAndTight" ;;
+    render-glass-dark) set -- "$1" host/render/furnace.cpp 'v = vec3(glassE(mu, r));' 'v = vec3(glassE(mu, r) * 0.97);' \
+                         "Render.DefaultBoundsAreLocalAndTight" ;;
     glass-eta-axis) set -- "$1" host/shader/atlas_lookups.cpp 's += "  float s = (eta - 1.0) / (eta + 1.0);\n";' \
                       's += "  float s = (eta - 1.0) / (eta + 1.5);\n";' "GlPipeline.GeneratedGlslSamplesTheDielectricTablesByEta" ;;
     beckmann-fit) set -- "$1" kernels/brdf/ndf.h 'RC(0.56851845943975654)' 'RC(0.5685)' \
@@ -65,7 +69,7 @@ mutation() {
   esac
   run_one "$@"
 }
-names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass glass-eta-axis
+names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass render-single render-glass-dark glass-eta-axis
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
        canonical-gaf trap-pi-batch ggx-one-division trap-lanes arc-lanes gk-pair lane-sum4 node-reuse devices-stale
        fresnel-eta-z fresnel-layer fresnel-claim-inflated"

@@ -7,12 +7,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <memory>
 
 #include "brdfbake/brdfbake.h"
 #include "common/errors.h"
 #include "common/format.h"
 #include "common/models.h"
+#include "reference/dielectric_reference.h"
 #include "reference/reference.h"
+#include "render/furnace_bounds.h"
 #include "render/shader_parts.h"
 #include "shader/shader_gen.h"
 
@@ -28,15 +31,13 @@ constexpr float kDielectricF0 = 0.04f;  // a dielectric of IOR 1.5: ((1.5 - 1)/(
 // (s = (eta - 1)/(eta + 1), docs/rough-glass.md), the range's ends 0.01 either side of it.
 constexpr double kGlassS = 0.2, kGlassHalfWidth = 0.01;
 
-// A table's claim and its interpolation error (relative to max(1, |value|)).
-double budgetOf(const Table& t) {
-  auto num = [&](const char* k) { return t.metadata.count(k) ? std::stod(t.metadata.at(k)) : 0.0; };
-  return num("brdf.error") + num("brdf.interp-error");
-}
+// What a float texture lookup and the float arithmetic after it add: the lerp's rounding of values
+// up to 1 (a few ulps, 6e-8 each) with a wide margin.
+constexpr double kFloatLookup = 1e-5;
 
-// The shader: one invocation per pixel; .a holds the bound the pixel's row predicts (-1:
-// background, -2: no prediction).
-std::string furnaceSource(const FurnaceSpec& s, const FurnaceTables& t, double dE, double dAvg) {
+// The shader: one invocation per pixel; .a is -1 on the background, the Kulla-Conty row's rule error
+// estimate, 1e-5 (float rounding) on the rows that conserve by algebra, -2 elsewhere.
+std::string furnaceSource(const FurnaceSpec& s, const FurnaceTables& t) {
   const int W = s.columns * s.cell, H = static_cast<int>(s.rows.size()) * s.cell;
   std::vector<double> x32, w32, x16, w16;
   gaussLegendre(32, &x32, &w32);
@@ -53,7 +54,6 @@ std::string furnaceSource(const FurnaceSpec& s, const FurnaceTables& t, double d
   src += "const int ROW[NROWS] = int[NROWS](" + rowList + ");\n";
   src += "const float X32[32] = float[32](" + floats(x32) + ");\nconst float W32[32] = float[32](" + floats(w32) + ");\n";
   src += "const float X16[16] = float[16](" + floats(x16) + ");\nconst float W16[16] = float[16](" + floats(w16) + ");\n";
-  src += "const float D_E = " + lit(dE) + ", D_AVG = " + lit(dAvg) + ";\n";
   src += "const vec3 GOLD = vec3(" + lit(kGold[0]) + ", " + lit(kGold[1]) + ", " + lit(kGold[2]) + ");\n";
   src += "const float F0_DIELECTRIC = " + lit(kDielectricF0) + ", SPHERE = " + lit(kSphere) + ";\n";
   // test hook: BRDFBAKE_TEST_RENDER_LOBE_SCALE scales the Kulla-Conty lobe, so that a test can see
@@ -109,11 +109,7 @@ void main() {
     float e = lookupE(mu, r);
     float a = LOBE_SCALE * kcAlbedo32(mu, r), a16 = LOBE_SCALE * kcAlbedo16(mu, r);
     v = vec3(e + a);
-    // P = E + (1 - E) I/(1 - E_avg), I = 2 int (1 - E) mu dmu: E's error moves I by at most D_E,
-    // E_avg's moves the ratio by D_AVG/(1 - E_avg); P's own E cancels to first order
-    float lost = max(1.0 - lookupEavg(r), MS_FLOOR);
-    float ratio = a / max(1.0 - e, MS_FLOOR);
-    bound = max(1.0 - e, 0.0) * (D_E + D_AVG) / lost + abs(a - a16) + D_E * abs(1.0 - ratio) + 1e-5;
+    bound = abs(a - a16);  // the light integral's rule error; the host adds the tables' (furnace_bounds.h)
   } else if (kind == 2) {
     v = fdezAgueraSingle(mu, r, vec3(1.0)) + fdezAgueraMultiple(mu, r, vec3(1.0));
     bound = 1e-5;
@@ -186,14 +182,22 @@ GLuint bindTableTexture(const GlContext& gl, const Table& t, int unit) {
 }
 
 const std::vector<FurnaceRow>& furnaceRows() {
+  using C = FurnaceRow::Checks;
   static const std::vector<FurnaceRow> rows = {
-      {"single", "F = 1, single scattering: E = A + B from the split sum", false},
-      {"kulla-conty", "F = 1, single scattering + the Kulla-Conty lobe (albedo, albedo-avg), integrated over the light", true},
-      {"single-table", "F = 1, compensated from the split sum alone (Fdez-Aguera 2019)", true},
-      {"dielectric-lambert", "specular F0 = 0.04 (compensated) over Lambert rho = 1 with albedo scaling", true},
-      {"gold", "gold, Schlick F0 = (1, 0.71, 0.29), compensated: absorbs, so darker than the background", false},
-      {"sheen", "the Charlie sheen's albedo alone (charlie + charlie-smith split sum)", false},
-      {"glass", "rough glass, eta 1.5: E_R + E_T from the dielectric table, single scattering (never above 1)", false},
+      {"single", "F = 1, single scattering: E = A + B from the split sum", false, C::Tables, "(|pixel - E_ref|)",
+       "below 1 as r grows: single scattering loses energy"},
+      {"kulla-conty", "F = 1, single scattering + the Kulla-Conty lobe (albedo, albedo-avg), integrated over the light", true,
+       C::Tables, "(|pixel - 1|)", "vanishes: tests the albedo tables"},
+      {"single-table", "F = 1, compensated from the split sum alone (Fdez-Aguera 2019)", true, C::Algebra, "(|pixel - 1|)",
+       "vanishes: 1 by algebra"},
+      {"dielectric-lambert", "specular F0 = 0.04 (compensated) over Lambert rho = 1 with albedo scaling", true, C::Algebra,
+       "(|pixel - 1|)", "vanishes: 1 by algebra"},
+      {"gold", "gold, Schlick F0 = (1, 0.71, 0.29), compensated: absorbs, so darker than the background", false, C::None, "",
+       "darker: gold absorbs blue most"},
+      {"sheen", "the Charlie sheen's albedo alone (charlie + charlie-smith split sum): dark, a sheen reflects little", false,
+       C::None, "", "black at r = 0 is expected: a sheen reflects little"},
+      {"glass", "rough glass, eta 1.5: E_R + E_T from the dielectric table, single scattering (never above 1)", false,
+       C::Tables, "(|pixel - E_ref|)", "below 1 as r grows: single scattering"},
   };
   return rows;
 }
@@ -277,12 +281,7 @@ FurnaceTables bakeFurnaceTables(const FurnaceSpec& s, const std::string& dir, co
 
 FurnacePicture renderFurnace(const GlContext& gl, const FurnaceSpec& s, const FurnaceTables& t) {
   const std::map<std::string, Table>& tables = t.read;
-  const double dE = t.albedo.empty() ? 0 : budgetOf(tables.at(t.albedo));
-  const double dAvg = t.albedoAvg.empty() ? 0 : budgetOf(tables.at(t.albedoAvg));
-  const double dSplit = t.splitsum.empty() ? 0 : budgetOf(tables.at(t.splitsum));
-  // the glass row: never above 1 by more than the table's claim and the float lerp's rounding
-  const double dGlass = t.glass.empty() ? 0 : std::stod(tables.at(t.glass).metadata.at("brdf.error")) + 1e-6;
-  const GLuint prog = gl.computeProgram(furnaceSource(s, t, dE, dAvg));
+  const GLuint prog = gl.computeProgram(furnaceSource(s, t));
   std::vector<std::pair<const Table*, std::string>> bind;
   for (const std::string* p : {&t.splitsum, &t.albedo, &t.albedoAvg})
     if (!p->empty()) bind.push_back({&tables.at(*p), shaderPrefix(*p) + "_tex"});
@@ -297,77 +296,112 @@ FurnacePicture renderFurnace(const GlContext& gl, const FurnaceSpec& s, const Fu
   pic.renderer = gl.renderer();
   pic.rows.resize(static_cast<size_t>(nrows));
   pic.rgb.assign(3, std::vector<float>(static_cast<size_t>(W) * H));
-  const int glassRow = furnaceRowIndex("glass"), singleRow = furnaceRowIndex("single");
+  for (size_t i = 0; i < px.size() / 4; ++i)
+    for (int c = 0; c < 3; ++c) {
+      if (!std::isfinite(px[i * 4 + c]))
+        throw Error(kExitSoftware, "render: a pixel is not finite (row " + std::to_string(i / W / s.cell) + ")");
+      pic.rgb[c][i] = px[i * 4 + c];
+    }
+  // The tables as the lookups read them, with their local errors (render/furnace_bounds.h).
+  std::unique_ptr<LocalTable> split, albedo, avg, glass;
+  if (!t.splitsum.empty()) split = std::make_unique<LocalTable>(tables.at(t.splitsum), std::vector<int>{0, 1});
+  if (!t.albedo.empty()) albedo = std::make_unique<LocalTable>(tables.at(t.albedo), std::vector<int>{0});
+  if (!t.albedoAvg.empty()) avg = std::make_unique<LocalTable>(tables.at(t.albedoAvg), std::vector<int>{0});
+  if (!t.glass.empty()) glass = std::make_unique<LocalTable>(tables.at(t.glass), std::vector<int>{2});
+  std::vector<double> x32, w32;
+  gaussLegendre(32, &x32, &w32);
+  // The rows compared with the reference (one integral a pixel, up to 0.1 s for glass) take the
+  // pixels on each sphere's radius to the right along its middle pixel row, every 3rd: a pixel's
+  // value depends on mu = n.v and the column's r only, and that radius runs from the centre (mu ~ 1)
+  // to the rim (mu ~ 0.07 at 48 pixels).
+  constexpr int kRefStride = 3;
+  const int singleRow = furnaceRowIndex("single"), kcRow = furnaceRowIndex("kulla-conty"), glassRow = furnaceRowIndex("glass");
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       const size_t i = static_cast<size_t>(y) * W + x;
       const float* q = &px[i * 4];
-      for (int c = 0; c < 3; ++c) {
-        if (!std::isfinite(q[c])) throw Error(kExitSoftware, "render: a pixel is not finite (row " + std::to_string(y / s.cell) + ")");
-        pic.rgb[c][i] = q[c];
-      }
       if (q[3] == -1.0f) continue;  // background
       const int row = y / s.cell, kind = s.rows[static_cast<size_t>(row)];
+      const FurnaceRow& fr = furnaceRows()[static_cast<size_t>(kind)];
       RowMeasure& rm = pic.rows[static_cast<size_t>(row)];
       ++rm.pixels;
+      if (fr.checks == FurnaceRow::Checks::None) continue;
+      const bool sampled = y % s.cell == s.cell / 2 && x % s.cell >= s.cell / 2 && (x % s.cell - s.cell / 2) % kRefStride == 0;
+      if ((kind == singleRow || kind == glassRow) && !sampled) continue;
+      const double cx = ((x % s.cell) + 0.5) / s.cell * 2 - 1, cy = ((y % s.cell) + 0.5) / s.cell * 2 - 1;
+      const double mu = std::sqrt(std::max(0.0, 1 - (cx * cx + cy * cy) / (static_cast<double>(kSphere) * kSphere)));
+      const double r = static_cast<double>(x / s.cell) / (s.columns - 1);
       double dev = 0, bound = 0;
-      if (furnaceRows()[static_cast<size_t>(kind)].conserves) {
+      if (kind == singleRow) {
+        // E = A + B against the reference's E(mu, r) in double
+        dev = std::fabs(q[0] - reference::albedo(s.ndf, s.gaf, r, mu).e());
+        bound = split->error(mu, r) + kFloatLookup;
+      } else if (kind == kcRow) {
+        // P = E + (1 - E) I/(1 - E_avg) with I = 2 sum_k w_k (1 - E(x_k)) x_k, the lobe's light
+        // integral, and E_avg = 1 - I in exact arithmetic: P = 1 whatever E(mu) is. The tables' errors
+        // move I by at most 2 sum_k w_k x_k e_E(x_k) and E_avg by e_avg, so P by (1 - E)(that)/(1 - E_avg);
+        // the pixel's own E enters through (1 - I/(1 - E_avg)) only (first order). Where albedo-avg's
+        // texels sit on albedo's r rows, both lookups blend the same two rows with the same weights and
+        // I - (1 - E_avg) is that blend of each row's: the r interpolation cancels, and e_E is the mu
+        // axis' term and the claims (e_avg the claim). Plus the rule's error estimate (the shader's
+        // 32- and 16-node difference) and float rounding.
+        const double e = albedo->value(mu, r), lost = std::max(1 - avg->value(r, 0.5), 1e-6);
+        const bool shared = avg->width() == albedo->height() && avg->height() == 1;
+        double moved = shared ? avg->claim() : avg->error(r, 0.5);
+        for (size_t k = 0; k < x32.size(); ++k)
+          moved += 2 * w32[k] * x32[k] * (shared ? albedo->errorAlongX(x32[k], r) : albedo->error(x32[k], r));
+        const double ratio = (q[0] - e) / std::max(1 - e, 1e-6);
         dev = std::max({std::fabs(q[0] - 1.0), std::fabs(q[1] - 1.0), std::fabs(q[2] - 1.0)});
-        bound = q[3];
+        bound = std::max(1 - e, 0.0) * moved / lost + albedo->error(mu, r) * std::fabs(1 - ratio) + q[3] + kFloatLookup;
       } else if (kind == glassRow) {
-        dev = q[0] - 1.0;  // signed: a glass that creates light is above 0
-        bound = dGlass;
+        // E_R + E_T against the reference's (a smooth interface keeps all of it: 1 at r = 0)
+        double ref = 1;
+        if (r > 0) {
+          const reference::DielectricAlbedo d = reference::dielectricAlbedo(s.ndf, s.gaf, std::max(mu, 1e-6), r, kGlassEta);
+          ref = d.r + d.t;
+        }
+        dev = std::fabs(q[0] - ref);
+        bound = glass->error(mu, r) + kFloatLookup;
+        if (q[0] > 1 + kFloatLookup) ++rm.created;  // more light out than in
       } else {
-        continue;
+        dev = std::max({std::fabs(q[0] - 1.0), std::fabs(q[1] - 1.0), std::fabs(q[2] - 1.0)});
+        bound = q[3];  // algebra: 1 up to float rounding whatever the tables hold
       }
       if (!rm.measured || dev >= rm.worst) {
         rm.worst = dev;
         rm.worstBound = bound;
       }
       rm.measured = true;
+      rm.largestBound = std::max(rm.largestBound, bound);
       if (dev > bound) ++rm.over;
     }
-  // the single row: every 6th pixel of each sphere against reference::albedo in double, within the
-  // split sum's claim and interpolation error
-  for (int row = 0; row < nrows; ++row) {
-    if (s.rows[static_cast<size_t>(row)] != singleRow) continue;
-    RowMeasure& rm = pic.rows[static_cast<size_t>(row)];
-    rm.measured = true;
-    rm.worstBound = dSplit;
-    for (int y = row * s.cell; y < (row + 1) * s.cell; y += 6)
-      for (int x = 0; x < W; x += 6) {
-        const float* q = &px[(static_cast<size_t>(y) * W + x) * 4];
-        if (q[3] == -1.0f) continue;
-        const double cx = ((x % s.cell) + 0.5) / s.cell * 2 - 1, cy = ((y % s.cell) + 0.5) / s.cell * 2 - 1;
-        const double mu = std::sqrt(std::max(0.0, 1 - (cx * cx + cy * cy) / (kSphere * kSphere)));
-        const double r = static_cast<double>(x / s.cell) / (s.columns - 1);
-        const double ref = reference::albedo(s.ndf, s.gaf, r, mu).e();
-        const double dev = std::fabs(q[0] - ref) / std::max(1.0, std::fabs(ref));
-        rm.worst = std::max(rm.worst, dev);
-        if (dev > dSplit) ++rm.over;
-      }
-  }
-  for (const RowMeasure& rm : pic.rows) pic.fail = pic.fail || rm.over > 0;
+  for (const RowMeasure& rm : pic.rows) pic.fail = pic.fail || rm.over > 0 || rm.created > 0;
   return pic;
 }
 
 std::string furnaceTable(const FurnaceSpec& s, const FurnacePicture& p) {
-  char line[256];
-  std::snprintf(line, sizeof line, "%-19s %-9s %-34s %-12s %s\n", "row", "conserves", "largest deviation", "its bound", "pixels over");
+  char line[320];
+  const char* fmt = "%-19s %-9s %-22s %-30s %-11s %-13s %s\n";
+  std::snprintf(line, sizeof line, fmt, "row", "conserves", "tests", "largest deviation", "bound there", "largest bound", "pixels over");
   std::string out = line;
   for (size_t row = 0; row < s.rows.size(); ++row) {
     const FurnaceRow& fr = furnaceRows()[static_cast<size_t>(s.rows[row])];
     const RowMeasure& rm = p.rows[row];
-    char dev[64] = "-", bnd[32] = "-", over[32] = "-";
+    char dev[64] = "-", bnd[32] = "-", big[32] = "-", over[32] = "-";
     if (rm.measured) {
-      const char* against = fr.conserves ? "(|pixel - 1|)" : fr.name == "single" ? "(|pixel - E_ref|)" : "(pixel - 1)";
-      std::snprintf(dev, sizeof dev, "%.3g %s", rm.worst, against);
+      std::snprintf(dev, sizeof dev, "%.3g %s", rm.worst, fr.against.c_str());
       std::snprintf(bnd, sizeof bnd, "%.3g", rm.worstBound);
-      std::snprintf(over, sizeof over, "%ld", rm.over);
+      std::snprintf(big, sizeof big, "%.3g", rm.largestBound);
+      std::snprintf(over, sizeof over, "%ld", rm.over + rm.created);
     }
-    std::snprintf(line, sizeof line, "%-19s %-9s %-34s %-12s %s\n", fr.name.c_str(), fr.conserves ? "yes" : "no", dev, bnd, over);
+    const char* tests = fr.checks == FurnaceRow::Checks::Tables ? "the tables" : fr.checks == FurnaceRow::Checks::Algebra ? "algebra only" : "nothing (looks)";
+    std::snprintf(line, sizeof line, fmt, fr.name.c_str(), fr.conserves ? "yes" : "no", tests, dev, bnd, big, over);
     out += line;
   }
+  out += "tests: \"the tables\": the row's pixels move with the tables' values and are held to bounds from the texels each "
+         "lookup reads; \"algebra only\": the row is 1 by construction whatever the tables hold (it checks the shading "
+         "code, not the tables); gold and sheen are for the eye: gold is darker than the background, the sheen black at "
+         "r = 0 and dim elsewhere, as they should be\n";
   return out;
 }
 

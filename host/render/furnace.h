@@ -1,9 +1,10 @@
 // The white furnace grid: spheres of roughness 0 to 1 across, one material per row, under a uniform
 // white environment (radiance 1 everywhere, the background 1), each pixel shaded on GL by the
 // generated lookup code sampling baked files, read back as an engine loads them; and the
-// measurement: rows that conserve energy must be 1 within what the tables' claims and
-// interpolation errors predict, the single-scattering row must match the independent reference's
-// E(n.v, r), the glass row must never exceed 1. `brdfbake render` and the report pages draw it.
+// measurement: each pixel is held to a bound built from the texels its lookups read
+// (render/furnace_bounds.h): the Kulla-Conty row to 1, the single-scattering row to the independent
+// reference's E(n.v, r), the glass row to the reference's E_R + E_T (and never above 1); the rows
+// that are 1 by algebra to float rounding. `brdfbake render` and the report pages draw it.
 #pragma once
 #include <map>
 #include <string>
@@ -18,6 +19,12 @@ namespace brdfbake {
 struct FurnaceRow {
   std::string name, what;
   bool conserves;  // should vanish into the background (E = 1)
+  // What the row's measurement tests: the tables (its pixels move with their values: single and
+  // glass against the reference, kulla-conty against 1), algebra only (1 whatever the tables hold:
+  // single-table, dielectric-lambert check the shading code), or nothing (gold, sheen: for the eye).
+  enum class Checks { Tables, Algebra, None } checks;
+  std::string against;  // what the deviation is measured against, as printed
+  std::string expect;   // what a reader of the picture should see, under the row's name in the PNG
 };
 const std::vector<FurnaceRow>& furnaceRows();
 int furnaceRowIndex(const std::string& name);  // -1 for none
@@ -49,7 +56,9 @@ FurnaceTables bakeFurnaceTables(const FurnaceSpec& s, const std::string& dir, co
 
 struct RowMeasure {
   double worst = 0, worstBound = 0;  // the largest deviation and the bound at that pixel
+  double largestBound = 0;           // the largest of the measured pixels' bounds
   long over = 0, pixels = 0;         // pixels past their bound, sphere pixels
+  long created = 0;                  // glass pixels above 1 (more light out than in)
   bool measured = false;
 };
 struct FurnacePicture {

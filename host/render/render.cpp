@@ -13,6 +13,7 @@
 #include "formats/output_set.h"
 #include "formats/writers.h"
 #include "render/furnace.h"
+#include "render/labels.h"
 #include "render/gl_context.h"
 #include "render/shader_parts.h"
 #include "shader/shader_gen.h"
@@ -176,6 +177,10 @@ int runRender(const RenderOptions& o) {
   lobeImg.strings["render.rows"] = "single scattering (kernels/brdf on the host), + the Kulla-Conty lobe (GL)";
   lobeImg.strings["render.columns"] = "perceptual roughness 0.4, 0.7, 1";
   const std::vector<std::pair<std::string, std::string>> text = textOf(img), lobeText = textOf(lobeImg);
+  // the PNG to look at: the grid with its rows named and its columns' roughness on top
+  std::vector<std::pair<std::string, std::string>> rowLabels;
+  for (int k : spec.rows) rowLabels.push_back({furnaceRows()[static_cast<size_t>(k)].name, furnaceRows()[static_cast<size_t>(k)].expect});
+  const LabelledPicture shown = labelFurnace(img.planes, W, H, spec.cell, spec.columns, rowLabels);
   const std::string exr = o.outDir + "/furnace.exr", png = o.outDir + "/furnace.png";
   const std::string lobeExr = o.outDir + "/lobe.exr", lobePng = o.outDir + "/lobe.png";
   const size_t n = static_cast<size_t>(W) * H, ln = static_cast<size_t>(lobeImg.width) * lobeImg.height;
@@ -185,8 +190,10 @@ int runRender(const RenderOptions& o) {
   files[0].write = [&img, exr](const std::string& tmp) { writeTableExrTemporary(tmp, exr, img, false); };
   files[0].bytesBound = n * 12 + (1 << 16);
   files[1].path = png;
-  files[1].write = [&img, &text, png, W, H](const std::string& tmp) { writePng8SrgbTemporary(tmp, png, W, H, img.planes, text); };
-  files[1].bytesBound = n * 3 + (1 << 16);
+  files[1].write = [&shown, &text, png](const std::string& tmp) {
+    writePng8SrgbTemporary(tmp, png, shown.width, shown.height, shown.planes, text);
+  };
+  files[1].bytesBound = static_cast<size_t>(shown.width) * shown.height * 3 + (1 << 16);
   files[2].path = lobeExr;
   files[2].write = [&lobeImg, lobeExr](const std::string& tmp) { writeTableExrTemporary(tmp, lobeExr, lobeImg, false); };
   files[2].bytesBound = ln * 12 + (1 << 16);
