@@ -25,6 +25,13 @@
 
 namespace fs = std::filesystem;
 namespace {
+// A report page's first line under its title: the verdict.
+std::string verdictLine(const std::string& html) {
+  const size_t h1 = html.find("</h1>\n");
+  if (h1 == std::string::npos) return "(no title)";
+  const size_t at = h1 + 6;
+  return html.substr(at, html.find('\n', at) - at);
+}
 
 using brdfbake::testing_cli::bytes;
 using brdfbake::testing_cli::CmdResult;
@@ -456,7 +463,7 @@ TEST(CliMaterials, EnergyWritesItsPageWithTheFurnace) {
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("report: " + (d / "energy/index.html").string()), std::string::npos) << r.out;
   const std::string html = bytes(d / "energy/index.html");
-  EXPECT_NE(html.find("<h2>Summary: all 1 material(s) conserve energy"), std::string::npos) << html;
+  EXPECT_EQ(verdictLine(html), "<p class=\"verdict pass\"><strong>PASS: </strong>all 1 material(s) conserve energy</p>") << html;
   EXPECT_NE(html.find("\nglass               no"), std::string::npos) << html;
   EXPECT_NE(html.find("every measured pixel within its bound"), std::string::npos) << html;
   EXPECT_NE(bytes(d / "energy/energy.csv").find("material,mu,r,param,channel,lobe1,lobe2,total,bound\n\"ggx+smith-correlated, rough glass"),
@@ -567,9 +574,7 @@ TEST(CliEvidence, VerifyPassesTheDefaultPairAndWritesItsPage) {
   EXPECT_EQ(countFiles(d), 9u) << "the page, its CSV, two data files, scripts, plots and the render; no temporaries";
   // the page opens with its summary; a passing pair's heat map has no failure legend, and its
   // colour scale marks E = 1
-  const size_t summary = html.find("<h2>Summary: all 1 pair(s) pass"), pair = html.find("<h2>ggx+smith-correlated");
-  EXPECT_NE(summary, std::string::npos) << html;
-  EXPECT_LT(summary, pair) << html;
+  EXPECT_EQ(verdictLine(html), "<p class=\"verdict pass\"><strong>PASS: </strong>all 1 pair(s) pass every check</p>") << html;
   const std::string gp = bytes(d / "verify/furnace_ggx_smith-correlated.gp");
   EXPECT_EQ(gp.find("E > 1 + bound"), std::string::npos) << gp;
   EXPECT_NE(gp.find("set cbtics add ('E = 1' 1)"), std::string::npos) << gp;
@@ -599,8 +604,7 @@ TEST(CliEvidence, VerifyFlagsBrokenModels) {
   // a failing pair's map marks the texels over their bound; the summary counts the failures
   EXPECT_NE(bytes(d / "verify/furnace_blinn-phong_smith.gp").find("E > 1 + bound"), std::string::npos);
   const std::string html = bytes(d / "verify/index.html");
-  EXPECT_NE(html.find(" of 4 pair(s) FAIL"), std::string::npos);
-  EXPECT_LT(html.find("<h2>Summary: "), html.find("<h2>blinn-phong+smith"));
+  EXPECT_EQ(verdictLine(html), "<p class=\"verdict fail\"><strong>FAIL: </strong>3 of 4 pair(s) fail a check (below)</p>") << html;
   EXPECT_NE(r.out.find("pass  ggx+smith:"), std::string::npos) << r.out;
 }
 
@@ -635,7 +639,15 @@ TEST(CliEvidence, StressIsCleanAndWritesItsPage) {
   }
   // and the default pair's white furnace rendered on GL, measured
   EXPECT_TRUE(fs::exists(d / "stress/render_ggx_smith-correlated.png"));
-  EXPECT_NE(bytes(d / "stress/index.html").find("every measured pixel within its bound"), std::string::npos);
+  const std::string html = bytes(d / "stress/index.html");
+  EXPECT_NE(html.find("every measured pixel within its bound"), std::string::npos);
+  // the verdict first; the plot's legend below the data, with no failure entry when nothing fails
+  EXPECT_EQ(verdictLine(html),
+            "<p class=\"verdict pass\"><strong>PASS: </strong>all 129 points pass: finite, within their bounds, limits met</p>")
+      << html;
+  const std::string gp = bytes(d / "stress/stress.gp");
+  EXPECT_NE(gp.find("set key outside"), std::string::npos) << gp;
+  EXPECT_EQ(gp.find("failing point"), std::string::npos) << gp;
   brdfbake::testing_browser::expectPageWorks(d / "stress/index.html", fs::path(d.string() + "-browser"), 2);
   r = run("stress --ndf ggx");
   EXPECT_EQ(r.code, 64) << r.out;
@@ -649,6 +661,8 @@ TEST(CliEvidence, ConvergenceShowsEachMethodAgainstTheReference) {
   CmdResult r = run("convergence --size 4 -o " + d.string());
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_TRUE(fs::exists(d / "convergence/render_ggx_smith-correlated.png"));
+  EXPECT_EQ(verdictLine(bytes(d / "convergence/index.html")).rfind("<p class=\"verdict measured\">quadrature (device, float): true error ", 0), 0u)
+      << bytes(d / "convergence/index.html");
   brdfbake::testing_browser::expectPageWorks(d / "convergence/index.html", fs::path(d.string() + "-browser"), 2);
   for (const char* m : {"quadrature (device, float)  ", "quadrature (host, double)  ", "Monte Carlo (Hammersley, float)  "})
     EXPECT_NE(r.out.find(m), std::string::npos) << m << "\n" << r.out;

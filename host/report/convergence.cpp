@@ -86,6 +86,17 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
                  "rounding or the reference's accuracy from the first rung). " + ladder.note;
 
   ReportPage page("brdfbake convergence");
+  {
+    // the bake's method (the ladder's first): its finest rung, and how often its estimate covers the truth
+    std::vector<Rung> rs;
+    for (const Rung& r : res.rungs)
+      if (r.method == methods.front()) rs.push_back(r);
+    size_t covered = 0;
+    for (const Rung& r : rs) covered += r.estimate >= r.error;
+    page.verdict(ReportPage::Outcome::Measured,
+                 methods.front() + ": true error " + fmt3(rs.back().error) + " in " + fmt3(rs.back().seconds) + " s at its finest rung; its own estimate is at or above the true error at " +
+                     std::to_string(covered) + " of " + std::to_string(rs.size()) + " rungs");
+  }
   page.paragraph(res.table);
   page.preformatted(formatConvergence(res));
   std::string dat;

@@ -209,8 +209,9 @@ std::string writeEnergyPage(const BakeRequest& req, const std::vector<EnergyResu
   ReportPage page("brdfbake energy");
   int violating = 0;
   for (const EnergyResult& r : results) violating += r.violates;
-  page.heading(violating ? "Summary: " + std::to_string(violating) + " of " + std::to_string(results.size()) + " material(s) VIOLATE"
-                         : "Summary: all " + std::to_string(results.size()) + " material(s) conserve energy");
+  page.verdict(violating ? ReportPage::Outcome::Fail : ReportPage::Outcome::Pass,
+               violating ? std::to_string(violating) + " of " + std::to_string(results.size()) + " material(s) violate energy conservation"
+                         : "all " + std::to_string(results.size()) + " material(s) conserve energy");
   page.preformatted(formatEnergy(results));
   std::string csv = "material,mu,r,param,channel,lobe1,lobe2,total,bound\n";
   for (const EnergyResult& r : results)

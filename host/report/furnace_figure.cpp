@@ -11,6 +11,7 @@
 #include "formats/writers.h"
 #include "render/furnace.h"
 #include "render/gl_context.h"
+#include "render/labels.h"
 
 namespace fs = std::filesystem;
 
@@ -95,11 +96,14 @@ bool FurnaceFigures::add(ReportPage& page, int ndf, int gaf) {
       {"render.columns", "perceptual roughness r = column/" + std::to_string(spec.columns - 1)},
       {"render.renderer", pic.renderer},
       {"render.generator", "brdfbake (report page)"}};
-  const int W = pic.width, H = pic.height;
+  std::vector<std::pair<std::string, std::string>> rowLabels;
+  for (int k : spec.rows) rowLabels.push_back({furnaceRows()[static_cast<size_t>(k)].name, furnaceRows()[static_cast<size_t>(k)].expect});
+  LabelledPicture shown = labelFurnace(pic.rgb, pic.width, pic.height, spec.cell, spec.columns, rowLabels);
+  const int W = shown.width, H = shown.height;
   page.image(file,
              "White furnace, " + pair + ": rows " + rowNames + "; roughness 0 to 1 across; shaded on " + pic.renderer +
                  " by the generated lookups of the baked tables (rows that conserve vanish into the background)",
-             [W, H, rgb = std::move(pic.rgb), text](const std::string& path) {
+             [W, H, rgb = std::move(shown.planes), text](const std::string& path) {
                writePng8SrgbTemporary(path, path, W, H, rgb, text);
              });
   page.preformatted(furnaceTable(spec, pic) + (pic.fail ? "FAIL: a row's pixels are off by more than the tables predict\n"

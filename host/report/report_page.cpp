@@ -79,6 +79,10 @@ bool ReportPage::gnuplotAvailable() {
   return false;
 }
 
+void ReportPage::verdict(Outcome outcome, const std::string& text) {
+  outcome_ = outcome;
+  verdict_ = text;
+}
 void ReportPage::heading(const std::string& text) { items_.push_back({Item::Heading, text, "", "", {}}); }
 void ReportPage::paragraph(const std::string& text) { items_.push_back({Item::Paragraph, text, "", "", {}}); }
 void ReportPage::preformatted(const std::string& text) { items_.push_back({Item::Pre, text, "", "", {}}); }
@@ -111,8 +115,16 @@ std::string ReportPage::write(const std::string& dirName) const {
   bool drawnAll = true;
   std::string html = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + escape(title_) +
                      "</title>\n<style>body{font-family:sans-serif;max-width:70em;margin:2em auto}"
-                     "pre{background:#f4f4f4;padding:.5em;overflow-x:auto}img{max-width:100%}</style></head>"
+                     "pre{background:#f4f4f4;padding:.5em;overflow-x:auto;font-size:.8em}img{max-width:100%}"
+                     ".verdict{font-size:1.2em;padding:.4em .6em;border-left:.4em solid #888}"
+                     ".verdict.pass{border-color:#2a2}.verdict.fail{border-color:#c22}</style></head>"
                      "<body>\n<h1>" + escape(title_) + "</h1>\n";
+  if (!verdict_.empty()) {
+    const char* cls = outcome_ == Outcome::Pass ? "pass" : outcome_ == Outcome::Fail ? "fail" : "measured";
+    const char* word = outcome_ == Outcome::Pass ? "PASS: " : outcome_ == Outcome::Fail ? "FAIL: " : "";
+    html += std::string("<p class=\"verdict ") + cls + "\">" + (*word ? std::string("<strong>") + word + "</strong>" : "") +
+            escape(verdict_) + "</p>\n";
+  }
   try {
     for (const Item& it : items_) {
       switch (it.kind) {

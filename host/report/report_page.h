@@ -14,6 +14,10 @@ class ReportPage {
  public:
   explicit ReportPage(std::string title) : title_(std::move(title)) {}
 
+  // The page's one-line verdict, shown first under the title whatever order the page is built in:
+  // PASS or FAIL (a check), or a measurement's summary line (Outcome::Measured).
+  enum class Outcome { Pass, Fail, Measured };
+  void verdict(Outcome outcome, const std::string& text);
   void heading(const std::string& text);
   void paragraph(const std::string& text);    // HTML-escaped
   void preformatted(const std::string& text);  // the terminal table, as printed
@@ -40,6 +44,8 @@ class ReportPage {
   };
   std::string title_;
   std::vector<Item> items_;
+  Outcome outcome_ = Outcome::Measured;
+  std::string verdict_;
 };
 
 }  // namespace brdfbake

@@ -20,6 +20,11 @@ std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine
 
   // the page: the table, the data, a plot of error and bound per point
   ReportPage page("brdfbake stress");
+  size_t bad = 0;
+  for (const StressPoint& p : pts) bad += !p.pass();
+  page.verdict(bad ? ReportPage::Outcome::Fail : ReportPage::Outcome::Pass,
+               bad ? std::to_string(bad) + " of " + std::to_string(pts.size()) + " points fail (marked in the table and the plot)"
+                   : "all " + std::to_string(pts.size()) + " points pass: finite, within their bounds, limits met");
   page.paragraph("Each point: the kernel's value, its error against the independent reference (relative to "
                  "max(1, |value|)), the claimed bound (the kernel's estimate + its float arithmetic, as the bake claims it), and the expected limit.");
   page.preformatted(formatStress(pts));
@@ -37,11 +42,12 @@ std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine
   page.plot("stress",
             "set title 'stress: error against the reference, and the claimed bound, per point'\n"
             "set logscale y\nset format y '10^{%L}'\nset xlabel 'point (see the table)'\nset ylabel 'relative error'\n"
-            "set key left top\nset grid\n"
+            "set key outside bottom center horizontal\nset grid\n"
             "plot 'stress.dat' using 1:3 with steps lw 2 title 'claimed bound', "
-            "'' using 1:2 with points pt 7 title 'error', '' using 1:($4 < 1 ? $2 : 1/0) with points pt 6 ps 2 "
-            "lc rgb 'red' title 'fails'",
-            "Errors below the steps are within their claim.");
+            "'' using 1:2 with points pt 7 title 'error'" +
+                std::string(bad ? ", '' using 1:($4 < 1 ? $2 : 1/0) with points pt 6 ps 2 lc rgb 'red' title 'failing point'" : ""),
+            bad ? "Errors below the steps are within their claim; red circles mark the failing points."
+                : "Errors below the steps are within their claim; no point fails.");
   // the white furnace of the request's pairs, as `brdfbake render` draws it
   FurnaceFigures figures(req.device);
   for (int ndf : req.ndfs)

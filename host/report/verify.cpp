@@ -102,7 +102,7 @@ void energyLoss(const Table& t, const Table& avg, int n, bool node, ReportPage& 
   page.data("loss_" + stem + ".dat", csv);
   page.plot("loss_" + stem,
             "set title '" + pairName(ndf, gaf) + ": energy lost by single scattering, 1 - E'\n"
-            "set xlabel 'r (perceptual roughness)'\nset ylabel '1 - E'\nset key left top\nset grid\n"
+            "set xlabel 'r (perceptual roughness)'\nset ylabel '1 - E'\nset key outside right top\nset grid\n"
             "plot 'loss_" + stem + ".dat' using 1:2 with lines lw 2 title '1 - E_{avg}', "
             "'' using 1:3 with lines title 'mu = 1', '' using 1:4 with lines title 'mu = 1/2', "
             "'' using 1:5 with lines title 'mu = 1/8'",
@@ -284,8 +284,9 @@ std::vector<VerifyResult> runVerify(const BakeRequest& req, std::string* pageLin
     summary += r.summary();
     failed += !r.pass();
   }
-  page.heading(failed ? "Summary: " + std::to_string(failed) + " of " + std::to_string(out.size()) + " pair(s) FAIL"
-                      : "Summary: all " + std::to_string(out.size()) + " pair(s) pass");
+  page.verdict(failed ? ReportPage::Outcome::Fail : ReportPage::Outcome::Pass,
+               failed ? std::to_string(failed) + " of " + std::to_string(out.size()) + " pair(s) fail a check (below)"
+                      : "all " + std::to_string(out.size()) + " pair(s) pass every check");
   page.preformatted(summary);
   page.paragraph(checksText);
   FurnaceFigures figures(req.device);
