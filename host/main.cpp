@@ -63,6 +63,10 @@ int main(int argc, char** argv) {
         return code;
       }
       case Command::Kind::Shader: {
+        if (!cmd.file.empty()) {  // before any table is read
+          checkReplaceableFile(cmd.file, "-o");
+          checkNotAnInput(cmd.file, cmd.files, "-o");
+        }
         std::string code = shaderForFiles(cmd.files, cmd.hlsl ? ShaderLang::Hlsl : ShaderLang::Glsl);
         if (cmd.file.empty()) std::cout << code;
         else writeTextFile(cmd.file, code);

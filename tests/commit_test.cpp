@@ -6,6 +6,10 @@
 // BRDFBAKE_TEST_RENAME_DELAY_MS (pause between renames), BRDFBAKE_TEST_KILL_AT (SIGKILL at a step).
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -31,6 +35,14 @@ std::vector<std::string> hidden(const fs::path& d) {
   for (const auto& e : fs::directory_iterator(d))
     if (e.path().filename().string()[0] == '.') h.push_back(e.path().filename().string());
   return h;
+}
+
+// A PID no process has: a child's, reaped.
+pid_t deadPid() {
+  const pid_t c = ::fork();
+  if (c == 0) ::_exit(0);
+  ::waitpid(c, nullptr, 0);
+  return c;
 }
 
 const char* const kSmall = "--table splitsum,albedo,albedo-avg,kp --size 8";
@@ -93,22 +105,59 @@ TEST(Commit, KilledCommitIsFinishedByTheNextBake) {
     EXPECT_EQ(contents(d / "o"), ref) << step;
     EXPECT_TRUE(hidden(d / "o").empty()) << step;
   }
-  // a kill before the record (temporaries only): swept, with the temporaries of earlier releases
+  // a kill before the record (temporaries only): swept, as they carry a PID that is gone
   fs::remove_all(d / "o");
   fs::create_directory(d / "o");
-  for (const char* n : {".kp_ggx.exr.tmp-12345", ".kp_ggx.exr.tmp-12345.old", ".x.exr.brdfbake-tmp-AbC123"})
+  const std::string gone = std::to_string(deadPid());
+  for (const std::string n : {".kp_ggx.exr.brdfbake-tmp-" + gone + "-AbC123", ".kp_ggx.exr.brdfbake-tmp-" + gone + "-AbC123.old"})
     std::ofstream(d / "o" / n) << "partial";
   std::ofstream(d / "o" / ".mine") << "not ours";
   ASSERT_EQ(run(std::string(kSmall) + " -o o", d.string()).code, 0);
   EXPECT_EQ(hidden(d / "o"), std::vector<std::string>{".mine"});
 }
 
+// A sweep removes only what it can prove its own: its marker with the PID of a process that is
+// gone. Names that merely look like a temporary (a user's `.notes.tmp-123`, the marker without a
+// PID) and a live process's temporary (a writer in progress) stay, byte for byte.
+TEST(Commit, ASweepRemovesOnlyWhatIsProvablyOurs) {
+  const fs::path d = freshDir("commit", "ownership");
+  fs::create_directories(d / "o");
+  const std::string gone = std::to_string(deadPid()), live = std::to_string(::getpid());
+  const std::vector<std::string> keep = {".notes.tmp-123", ".notes.tmp-123.old", ".x.exr.brdfbake-tmp-AbC123",
+                                         ".x.exr.brdfbake-tmp-" + live + "-AbC123", ".x.exr.brdfbake-tmp-" + gone + "-toolong1",
+                                         ".brdfbake-tmp-" + gone + "-AbC123"};
+  for (const std::string& n : keep) std::ofstream(d / "o" / n) << "keep " << n;
+  std::ofstream(d / "o" / (".kp_ggx.exr.brdfbake-tmp-" + gone + "-Zz9Yy8")) << "a killed bake's";
+  fs::create_directories(d / "o" / (".notes.brdfbake-tmp-" + gone + "-AbC123"));  // a directory, not a page's
+  CmdResult r = run("bake --table kp -o o", d.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::vector<std::string> want = keep;
+  want.push_back(".notes.brdfbake-tmp-" + gone + "-AbC123");
+  std::vector<std::string> got = hidden(d / "o");
+  std::sort(want.begin(), want.end());
+  std::sort(got.begin(), got.end());
+  EXPECT_EQ(got, want);
+  for (const std::string& n : keep) EXPECT_EQ(bytes(d / "o" / n), "keep " + n);
+}
+
+// Where the file system has no hard links, the commit keeps its backups as copies: a rebake over
+// an existing set lands as on any other file system.
+TEST(Commit, NoHardLinksFallsBackToACopy) {
+  const fs::path d = freshDir("commit", "nolinks");
+  ASSERT_EQ(run(std::string(kOther) + " -o o", d.string()).code, 0);
+  CmdResult r = run(std::string(kSmall) + " -o o", d.string(), "BRDFBAKE_TEST_NO_HARDLINKS=1");
+  ASSERT_EQ(r.code, 0) << r.out;
+  ASSERT_EQ(run(std::string(kSmall) + " -o ref", d.string()).code, 0);
+  EXPECT_EQ(contents(d / "o"), contents(d / "ref"));
+}
+
 // A report killed while writing its page leaves a temporary directory beside it; the next bake
 // there sweeps it (under the lock, as it sweeps a killed bake's files) instead of failing on it.
 TEST(Commit, AKilledReportsTemporaryDirectoryIsSwept) {
   const fs::path d = freshDir("commit", "report");
-  fs::create_directories(d / "o/.verify.tmp-99999");
-  std::ofstream(d / "o/.verify.tmp-99999/index.html") << "<html>";
+  const fs::path page = d / "o" / (".verify.brdfbake-tmp-" + std::to_string(deadPid()) + "-AbC123");
+  fs::create_directories(page);
+  std::ofstream(page / "index.html") << "<html>";
   CmdResult r = run("bake --table kp -o o", d.string());
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_TRUE(hidden(d / "o").empty()) << r.out;

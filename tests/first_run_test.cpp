@@ -132,7 +132,32 @@ TEST(FirstRun, AnUnwritableCacheIsNotAFailure) {
   CmdResult r = bakeWith(d, (d / "file" / "programs").string(), "a", "--timings");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("binary not stored: "), std::string::npos) << r.out;
+  // and the summary says so, instead of promising that the next bake loads it
+  EXPECT_NE(r.out.find("1 program compiled (its binary was not kept: --timings says why; the next bake compiles again)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("the next bake loads"), std::string::npos) << r.out;
   EXPECT_TRUE(fs::exists(d / "a" / "albedo_ggx_smith-correlated.exr"));
+}
+
+// A store that was interrupted leaves its temporary; the next store sweeps it once its process is
+// gone, and leaves a live process's (a store in progress) and names that only look like one.
+TEST(FirstRun, InterruptedStoresAreSwept) {
+  const fs::path d = freshDir("firstrun", "sweep");
+  const fs::path programs = d / "programs";
+  fs::create_directories(programs);
+  const pid_t c = ::fork();
+  if (c == 0) ::_exit(0);
+  ::waitpid(c, nullptr, 0);
+  const std::string gone = ".program.brdfbake-tmp-" + std::to_string(c) + "-AbC123";
+  const std::string live = ".program.brdfbake-tmp-" + std::to_string(::getpid()) + "-AbC123";
+  for (const std::string& n : {gone, live, std::string(".program.brdfbake-tmp-XyZ789")}) std::ofstream(programs / n) << "torn";
+  CmdResult r = bakeWith(d, programs.string(), "a");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_FALSE(fs::exists(programs / gone));
+  EXPECT_TRUE(fs::exists(programs / live));
+  EXPECT_TRUE(fs::exists(programs / ".program.brdfbake-tmp-XyZ789"));
+  EXPECT_EQ(entries(programs).size(), 1u);
 }
 
 // `devices --prepare DIR` keeps the default set's and the shared program's binaries; `devices`

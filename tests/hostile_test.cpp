@@ -83,6 +83,28 @@ TEST(Hostile, StampThatIsNotAFileIsRefusedBeforeBaking) {
   EXPECT_TRUE(S_ISFIFO(st.st_mode)) << "the FIFO was replaced";
 }
 
+// A command never replaces what it reads: `--stamp` naming the scene and `shader -o` naming one of
+// its tables are refused (73) before anything is baked or generated, and the input is unchanged.
+TEST(Hostile, AnOutputThatIsAnInputIsRefused) {
+  const fs::path d = freshDir("hostile", "inout");
+  fs::copy_file(fs::path(BRDFBAKE_SOURCE_DIR) / "examples/scenes/pbr-desktop.toml", d / "s.toml");
+  const std::string manifest = bytes(d / "s.toml");
+  expectRefused(runBounded("bake s.toml -o out --stamp s.toml", d.string()), 73,
+                "--stamp s.toml: is an input of this command; it would be replaced by its output", "stamp = scene");
+  expectRefused(runBounded("bake s.toml -o out --stamp ./s.toml", d.string()), 73,
+                "--stamp ./s.toml: is the same file as s.toml, an input of this command", "stamp = scene, spelt otherwise");
+  EXPECT_EQ(bytes(d / "s.toml"), manifest);
+  EXPECT_FALSE(fs::exists(d / "out")) << "baked before the stamp was checked";
+  ASSERT_EQ(runBounded("bake --table kp -o t", d.string()).code, 0);
+  const std::string table = bytes(d / "t/kp_ggx.exr");
+  expectRefused(runBounded("shader --lang glsl -o t/kp_ggx.exr t/kp_ggx.exr", d.string()), 73,
+                "-o t/kp_ggx.exr: is an input of this command", "shader over its input");
+  EXPECT_EQ(bytes(d / "t/kp_ggx.exr"), table);
+  fs::create_directory(d / "adir");
+  expectRefused(runBounded("shader --lang glsl -o adir t/kp_ggx.exr", d.string()), 73, "-o adir: a directory",
+                "shader -o a directory");
+}
+
 // The device layer says what is wrong: --cache-dir is made absolute before PoCL sees it (PoCL
 // passes it to its linker, which took "-1/..." for an option and aborted), and a cache that
 // cannot be written is named as such, not as a missing OpenCL platform.

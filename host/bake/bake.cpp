@@ -57,15 +57,18 @@ double since(std::chrono::steady_clock::time_point t0) {
 
 // The report's words for how the programs were made ready: "1 loaded from its binary", ...
 std::string buildHow(const std::vector<KernelRunner::ProgramEvent>& events) {
-  int loaded = 0, built = 0;
-  for (const auto& e : events) (e.loaded ? loaded : built)++;
+  int loaded = 0, stored = 0, lost = 0;
+  for (const auto& e : events) (e.loaded ? loaded : e.stored ? stored : lost)++;
+  auto programs = [](int n) { return n == 1 ? std::string("1 program") : std::to_string(n) + " programs"; };
   std::string s;
   if (loaded) s += loaded == 1 ? "1 program loaded from its kept binary"
                                : std::to_string(loaded) + " programs loaded from their kept binaries";
-  if (built)
-    s += (s.empty() ? "" : ", ") + std::to_string(built) + (built == 1 ? " program" : " programs") +
-         " compiled (" + (built == 1 ? "its binary is" : "their binaries are") + " kept: the next bake loads " +
-         (built == 1 ? "it" : "them") + ")";
+  if (stored)
+    s += (s.empty() ? "" : ", ") + programs(stored) + " compiled (" + (stored == 1 ? "its binary is" : "their binaries are") +
+         " kept: the next bake loads " + (stored == 1 ? "it" : "them") + ")";
+  if (lost)
+    s += (s.empty() ? "" : ", ") + programs(lost) + " compiled (" + (lost == 1 ? "its binary was" : "their binaries were") +
+         " not kept: --timings says why; the next bake compiles again)";
   return s;
 }
 }  // namespace

@@ -14,6 +14,7 @@
 #include <cstring>
 
 #include "cl/programs.h"
+#include "formats/commit_record.h"
 
 #ifndef BRDFBAKE_PROGRAMS_BUILD_DIR
 #define BRDFBAKE_PROGRAMS_BUILD_DIR ""
@@ -213,7 +214,16 @@ std::string storeProgram(const std::string& identity, const ProgramBinary& binar
   data.append(reinterpret_cast<const char*>(binary.data()), binary.size());
   putU64(data, entryHash(binary.data(), binary.size()));
   const std::string path = dir + "/" + hex64(entryHash(identity)) + ".clbin";
-  std::string tmp = dir + "/.program.brdfbake-tmp-XXXXXX";
+  // first the temporaries of stores that were interrupted (their process is gone), then ours, marked
+  // with this process's PID (formats/commit_record.h)
+  if (DIR* d = ::opendir(dir.c_str())) {
+    std::vector<std::string> gone;
+    while (dirent* e = ::readdir(d))
+      if (std::string(e->d_name).rfind(".program.", 0) == 0 && ownerIsGone(temporaryOwner(e->d_name))) gone.push_back(e->d_name);
+    ::closedir(d);
+    for (const std::string& g : gone) ::unlink((dir + "/" + g).c_str());
+  }
+  std::string tmp = dir + "/.program" + temporaryMarker() + "XXXXXX";
   int fd = ::mkstemp(&tmp[0]);
   if (fd < 0) return dir + ": " + std::strerror(errno);
   size_t put = 0;

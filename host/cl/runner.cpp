@@ -125,14 +125,16 @@ void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* don
   done->program = prog;
   for (const std::string& k : w.kernels) compileKernel(*done, k);
   std::string how = loaded ? "loaded " + where : "built from source";
+  bool stored = false;
   if (!loaded && cacheUse_ != ProgramCacheUse::Off) {
     cl::Program::Binaries bins = prog.getInfo<CL_PROGRAM_BINARIES>();
     const std::string dir = cacheUse_ == ProgramCacheUse::Refresh ? cacheDir_ : programCacheWriteDir();
     const std::string why = storeProgram(identity, bins.empty() ? ProgramBinary{} : bins.front(), dir);
-    how += why.empty() ? ", binary stored in " + dir : ", binary not stored: " + why;
+    stored = why.empty();
+    how += stored ? ", binary stored in " + dir : ", binary not stored: " + why;
   }
   std::lock_guard<std::mutex> lock(eventsMutex_);
-  events_.push_back({name, how, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), loaded});
+  events_.push_back({name, how, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), loaded, stored});
 }
 
 void KernelRunner::compileKernel(Compiled& c, const std::string& name) {

@@ -174,6 +174,7 @@ class KernelRunner {
     std::string program, how;
     double seconds = 0;
     bool loaded = false;
+    bool stored = false;  // built, and its binary kept for the next run
   };
   std::vector<ProgramEvent> programEvents() const {
     std::lock_guard<std::mutex> lock(eventsMutex_);

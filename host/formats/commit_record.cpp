@@ -64,38 +64,50 @@ void throwFileError(int err, const std::string& what) {
   throw Error(full ? kExitIoErr : kExitCantCreat, what + ": " + std::strerror(err));
 }
 
+unsigned currentUmask() {
+  static const mode_t mask = [] {
+    const mode_t m = ::umask(0);
+    ::umask(m);
+    return m;
+  }();
+  return mask;
+}
+
 std::string makeTemporaryFor(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
   const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
   if (name.empty() || name == "." || name == "..")
     throw Error(kExitCantCreat, "cannot create " + path + ": not a file name");
-  std::string tmpl = dir + "." + name + ".brdfbake-tmp-XXXXXX";
+  std::string tmpl = dir + "." + name + temporaryMarker() + "XXXXXX";
   int fd = ::mkstemp(tmpl.data());
   if (fd < 0) throwFileError(errno, "cannot create a temporary for " + path);
   // mkstemp makes it 0600; a table is as readable as any file the user creates (0666 & ~umask)
-  static const mode_t mask = [] {
-    const mode_t m = ::umask(0);
-    ::umask(m);
-    return m;
-  }();
-  ::fchmod(fd, 0666 & ~mask);
+  ::fchmod(fd, 0666 & ~currentUmask());
   ::close(fd);
   return tmpl;
 }
 
-bool isOurTemporary(const std::string& name) {
-  if (name.empty() || name[0] != '.') return false;
-  if (name.find(".brdfbake-tmp-") != std::string::npos) return true;
-  // `.<name>.tmp-<digits>` and its `.old` backup
+std::string temporaryMarker() { return ".brdfbake-tmp-" + std::to_string(::getpid()) + "-"; }
+
+long temporaryOwner(const std::string& name) {
+  // `.<name>.brdfbake-tmp-<pid>-<6 of mkstemp's>` and its `.old` backup
+  if (name.empty() || name[0] != '.') return -1;
   std::string n = name;
   if (n.size() > 4 && n.compare(n.size() - 4, 4, ".old") == 0) n.resize(n.size() - 4);
-  const size_t t = n.rfind(".tmp-");
-  if (t == std::string::npos || t + 5 >= n.size()) return false;
-  for (size_t i = t + 5; i < n.size(); ++i)
-    if (n[i] < '0' || n[i] > '9') return false;
-  return true;
+  const size_t t = n.rfind(".brdfbake-tmp-");
+  if (t == std::string::npos || t == 0) return -1;
+  const size_t p = t + 14, dash = n.find('-', p);
+  if (dash == std::string::npos || dash == p || dash - p > 9 || n.size() - dash - 1 != 6) return -1;
+  long pid = 0;
+  for (size_t i = p; i < dash; ++i) {
+    if (n[i] < '0' || n[i] > '9') return -1;
+    pid = pid * 10 + (n[i] - '0');
+  }
+  return pid > 0 ? pid : -1;
 }
+
+bool ownerIsGone(long pid) { return pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH; }
 
 DirLock::DirLock(const std::string& dir, bool wait) : info_(joinPath(dir, kLockInfoName)) {
   fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
@@ -164,22 +176,24 @@ void recoverDirectory(const std::string& dir) {
     std::cerr << "brdfbake: " << dir << ": finished the commit of a bake that was killed (" << finished
               << " file(s) renamed)" << std::endl;
   }
-  // sweep every temporary and backup of this tool: under the lock, no other writer owns one
+  // sweep the temporaries and backups this tool can prove its own: its marker with the PID of a
+  // process that is gone (a live one's, a writer without the lock, is left alone; so is any name
+  // that only looks like ours)
   DIR* d = ::opendir(dir.c_str());
   if (!d) return;
   std::vector<std::string> sweep;
   while (dirent* e = ::readdir(d))
-    if (isOurTemporary(e->d_name)) sweep.push_back(joinPath(dir, e->d_name));
+    if (ownerIsGone(temporaryOwner(e->d_name))) sweep.push_back(joinPath(dir, e->d_name));
   ::closedir(d);
   for (const auto& p : sweep) {
     // a report page's temporary is a directory (report/report_page.h), a table's a file
     struct stat st {};
     if (::lstat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
-      // only a page's own directory name: a user's `.x.tmp-1` directory is not ours to remove
+      // only a page's own directory name
       const std::string base = p.substr(p.find_last_of('/') + 1);
       bool page = false;
-      for (const char* name : {".verify.tmp-", ".stress.tmp-", ".convergence.tmp-", ".energy.tmp-"})
-        page = page || base.rfind(name, 0) == 0;
+      for (const char* name : {".verify.", ".stress.", ".convergence.", ".energy."})
+        page = page || base.rfind(std::string(name) + "brdfbake-tmp-", 0) == 0;
       if (!page) continue;
       std::error_code ec;
       std::filesystem::remove_all(p, ec);

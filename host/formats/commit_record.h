@@ -5,8 +5,8 @@
 //  - the commit record: before the first rename, the list of (temporary, target) pairs, synced;
 //    removed once every rename has landed;
 //  - recoverDirectory: under the lock, finishes the renames of a record a killed run left (its
-//    temporaries were synced before the record was written), then removes every temporary and
-//    backup of this tool in the directory.
+//    temporaries were synced before the record was written), then removes the temporaries and
+//    backups this tool can prove its own: its marker and the PID of a process that is gone.
 #pragma once
 #include <string>
 #include <utility>
@@ -17,13 +17,20 @@ namespace brdfbake {
 // The hidden names this tool uses in an output directory.
 inline const char* const kLockInfoName = ".brdfbake-lock";     // who holds the lock (while held)
 inline const char* const kCommitRecordName = ".brdfbake-commit";  // a commit in progress
-// A temporary for `path` in the same directory, unique (mkstemp): `.<name>.brdfbake-tmp-XXXXXX`.
+// A temporary for `path` in the same directory, unique (mkstemp):
+// `.<name>.brdfbake-tmp-<pid>-XXXXXX`, the marker and this process's PID saying whose it is.
 // The file exists (empty) when this returns. Error(kExitCantCreat), or kExitIoErr when the file
 // system is full (no space, quota or inodes).
 std::string makeTemporaryFor(const std::string& path);
-// Whether a directory entry's name is one of this tool's temporaries or backups (also the
-// `.<name>.tmp-<pid>` form of earlier releases).
-bool isOurTemporary(const std::string& name);
+// The process's umask (read once, at the first call).
+unsigned currentUmask();
+// The marker a temporary's name carries after `.<name>`: ".brdfbake-tmp-<pid>-".
+std::string temporaryMarker();
+// The PID a directory entry's name says made it, when the name is exactly this tool's temporary
+// or backup form (`.<name>.brdfbake-tmp-<pid>-XXXXXX`, `.old` after a backup); -1 otherwise.
+long temporaryOwner(const std::string& name);
+// Whether that process is gone (no process with the PID). A sweep removes only such temporaries.
+bool ownerIsGone(long pid);
 
 class DirLock {
  public:
@@ -41,7 +48,7 @@ class DirLock {
 };
 
 // Under the lock: finishes an interrupted commit (prints one line to stderr saying so) and sweeps
-// this tool's temporaries. Error(kExitIoErr) when a rename or removal fails.
+// the temporaries of this tool's processes that are gone. Error(kExitIoErr) when a rename or removal fails.
 void recoverDirectory(const std::string& dir);
 
 // Writes and syncs the record of `pairs` (temporary, target), both paths inside `dir`; returns its

@@ -63,6 +63,58 @@ sigset_t interruptSet() {
 
 std::string errnoText(int err) { return std::strerror(err); }
 
+// A copy of `from` at `to` (a new file), synced; false with errno set when it cannot be made.
+bool copyFile(const std::string& from, const std::string& to) {
+  const int in = ::open(from.c_str(), O_RDONLY | O_CLOEXEC);
+  if (in < 0) return false;
+  const int out = ::open(to.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (out < 0) {
+    const int err = errno;
+    ::close(in);
+    errno = err;
+    return false;
+  }
+  char buf[1 << 16];
+  bool ok = true;
+  for (;;) {
+    ssize_t n = ::read(in, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      ok = n == 0;
+      break;
+    }
+    for (ssize_t done = 0; ok && done < n;) {
+      ssize_t w = ::write(out, buf + done, static_cast<size_t>(n - done));
+      if (w < 0 && errno == EINTR) continue;
+      ok = w > 0;
+      if (ok) done += w;
+    }
+    if (!ok) break;
+  }
+  const int err = ok ? 0 : errno;
+  ok = ok && ::fsync(out) == 0;
+  const int err2 = ok ? 0 : (err ? err : errno);
+  ::close(in);
+  ::close(out);
+  if (!ok) {
+    ::unlink(to.c_str());
+    errno = err2;
+  }
+  return ok;
+}
+
+// The backup of a file the commit replaces: a hard link, or where the file system has none (FAT,
+// some network and FUSE file systems: EPERM, ENOTSUP, EXDEV, EMLINK, ENOSYS) a copy.
+// BRDFBAKE_TEST_NO_HARDLINKS=1 makes link() fail as on such a file system (tests/commit_test.cpp).
+bool keepBackup(const std::string& path, const std::string& backup) {
+  const char* noLinks = std::getenv("BRDFBAKE_TEST_NO_HARDLINKS");
+  if (noLinks && *noLinks == '1') errno = EPERM;
+  else if (::link(path.c_str(), backup.c_str()) == 0) return true;
+  if (errno != EPERM && errno != ENOTSUP && errno != EOPNOTSUPP && errno != EXDEV && errno != EMLINK && errno != ENOSYS)
+    return false;
+  return copyFile(path, backup);
+}
+
 std::string parentOf(const std::string& p) {
   size_t slash = p.find_last_of('/');
   if (slash == std::string::npos) return ".";
@@ -271,7 +323,7 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
     isDir(files[k].path, &exists);
     if (!exists) continue;
     backups[k] = temps[k] + ".old";
-    if (::link(files[k].path.c_str(), backups[k].c_str()) != 0) {
+    if (!keepBackup(files[k].path, backups[k])) {
       failure = "cannot keep a backup of " + files[k].path + ": " + errnoText(errno);
       code = errno == ENOSPC || errno == EDQUOT ? kExitIoErr : kExitCantCreat;
       backups[k].clear();
@@ -333,7 +385,21 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
   if (!failure.empty()) throw Error(code, failure + "; nothing was written");
 }
 
+void checkNotAnInput(const std::string& path, const std::vector<std::string>& inputs, const std::string& option) {
+  struct stat out {};
+  if (::stat(path.c_str(), &out) != 0) return;  // not there: it cannot be one of them
+  for (const std::string& in : inputs) {
+    struct stat st {};
+    if (::stat(in.c_str(), &st) == 0 && st.st_dev == out.st_dev && st.st_ino == out.st_ino)
+      throw Error(kExitCantCreat, option + " " + path + ": is " + (in == path ? "" : "the same file as ") +
+                                      (in == path ? "" : in + ", ") + "an input of this command; it would be replaced by its output");
+  }
+}
+
 void writeTextFile(const std::string& path, const std::string& text) {
+  // under the directory's lock, as every writer there: a bake's sweep never meets it half written
+  const std::string parent = parentOf(path);
+  DirLock lock(parent.empty() ? "." : parent, true);
   std::string tmp = temporaryPathFor(path);
   int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
   if (fd < 0) {

@@ -100,7 +100,6 @@ void ReportPage::image(const std::string& fileName, const std::string& caption,
 std::string ReportPage::write(const std::string& dirName) const {
   fs::path dir(dirName);
   const fs::path parent = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
-  fs::path tmp = parent / ("." + dir.filename().string() + ".tmp-" + std::to_string(getpid()));
   std::error_code ec;
   fs::create_directories(parent, ec);
   if (ec) throw Error(kExitCantCreat, "cannot create " + parent.string() + ": " + ec.message());
@@ -109,8 +108,11 @@ std::string ReportPage::write(const std::string& dirName) const {
   // writing the same page each land whole, the later one last
   DirLock lock(parent.string(), true);
   recoverDirectory(parent.string());
-  fs::create_directories(tmp, ec);
-  if (ec) throw Error(kExitCantCreat, "cannot create " + tmp.string() + ": " + ec.message());
+  // `.<page>.brdfbake-tmp-<pid>-XXXXXX`: a sweep removes it only once this process is gone
+  std::string tmpl = (parent / ("." + dir.filename().string() + temporaryMarker() + "XXXXXX")).string();
+  if (!::mkdtemp(tmpl.data())) throwFileError(errno, "cannot create a temporary directory in " + parent.string());
+  const fs::path tmp = tmpl;
+  ::chmod(tmp.c_str(), 0777 & ~currentUmask());  // mkdtemp's 0700: the page as readable as any directory
   bool gnuplot = gnuplotAvailable();
   bool drawnAll = true;
   std::string html = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + escape(title_) +

@@ -131,7 +131,10 @@ int runScenePlan(const SceneOptions& o) {
 }
 
 int runSceneBake(const SceneOptions& o) {
-  if (!o.stamp.empty()) checkReplaceableFile(o.stamp, "--stamp");  // before anything is baked
+  if (!o.stamp.empty()) {  // before anything is baked
+    checkReplaceableFile(o.stamp, "--stamp");
+    checkNotAnInput(o.stamp, {o.file}, "--stamp");
+  }
   Loaded l = load(o);
   ScenePlan& p = l.part;
   Plan todo;
