@@ -272,18 +272,21 @@ TEST_F(ExrTest, MissingFileThrowsNoInput) {
   }
 }
 
-TEST_F(ExrTest, NonExrFileThrowsNoInput) {
+// A file that is there but is not (or no longer) a valid OpenEXR file is a data error, 65, as in
+// every other format; 66 is for what cannot be opened (missing, a directory).
+TEST_F(ExrTest, NonExrFileIsADataError) {
   const std::string p = path("garbage.exr");
   {
     std::ofstream out(p, std::ios::binary);
     out << "this is not an OpenEXR file";
   }
-  EXPECT_EQ(codeOf([&] { readTableExr(p); }), kExitNoInput);
-  EXPECT_EQ(codeOf([&] { describeTableExr(p); }), kExitNoInput);
+  EXPECT_EQ(codeOf([&] { readTableExr(p); }), kExitDataErr);
+  EXPECT_EQ(codeOf([&] { describeTableExr(p); }), kExitDataErr);
   EXPECT_EQ(codeOf([&] { readTableExr(dir_); }), kExitNoInput);
+  EXPECT_EQ(codeOf([&] { readTableExr(path("missing.exr")); }), kExitNoInput);
 }
 
-TEST_F(ExrTest, TruncatedFileThrowsNoInput) {
+TEST_F(ExrTest, TruncatedFileIsADataError) {
   const std::string p = path("table.exr");
   writeTableExr(p, sample(), false);
   const std::string bytes = readBytes(p);
@@ -291,7 +294,7 @@ TEST_F(ExrTest, TruncatedFileThrowsNoInput) {
     std::ofstream out(p, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size() / 2));
   }
-  EXPECT_EQ(codeOf([&] { readTableExr(p); }), kExitNoInput);
+  EXPECT_EQ(codeOf([&] { readTableExr(p); }), kExitDataErr);
 }
 
 TEST_F(ExrTest, DescribeListsEverything) {

@@ -11,6 +11,8 @@
 #include <regex>
 #include <sstream>
 
+#include <zlib.h>
+
 #include "cli_run.h"
 
 namespace fs = std::filesystem;
@@ -236,6 +238,52 @@ TEST(FormatsRead, BadFilesExit65MissingExit66WritingNothing) {
     EXPECT_EQ(r.code, 66) << r.out;
     EXPECT_FALSE(fs::exists(w / "out.hlsl"));
   }
+}
+
+// Readers check a header before they believe it, under a 1.5 GB address-space limit (prlimit) so
+// that believing it shows as a failed allocation: a PNG whose brdf.mapping.scale chunk fails its CRC
+// (libpng's default drops it, and the table read as scale 1), a PNG IHDR claiming 16384^2 in a
+// 1 KB file, an EXR dataWindow made 16777224 wide, and a KTX2 made a sparse 3 GB file: each 65,
+// named, from info and shader alike.
+TEST(FormatsRead, DamagedHeadersAreCheckedBeforeTheyAreBelieved) {
+  const fs::path d = bakeAll("believe", "exr,ktx2,png16");
+  const fs::path w = brdfbake::testing_cli::freshDir("readcli", "believe_work");
+  auto expect = [&](const fs::path& p, const std::string& message) {
+    for (const std::string& cmd : {"info '" + p.string() + "'", "shader --lang glsl '" + p.string() + "'"}) {
+      CmdResult r = run(cmd, "", "prlimit --as=1500000000");
+      EXPECT_EQ(r.code, 65) << cmd << "\n" << r.out;
+      EXPECT_NE(r.out.find("brdfbake: cannot read " + p.string() + ": " + message), std::string::npos) << cmd << "\n" << r.out;
+    }
+  };
+  auto put = [&](const std::string& name, const std::string& content) {
+    std::ofstream(w / name, std::ios::binary | std::ios::trunc) << content;
+    return w / name;
+  };
+  auto be32 = [](std::string& s, size_t at, uint32_t v) {
+    for (int k = 0; k < 4; ++k) s[at + k] = static_cast<char>(v >> (24 - 8 * k));
+  };
+  std::string png = bytes(d / "kp_ggx.png");
+  const size_t key = png.find(std::string("brdf.mapping.scale") + '\0');
+  ASSERT_NE(key, std::string::npos);
+  std::string crc = png;
+  crc[key + 20] = static_cast<char>(crc[key + 20] ^ 1);  // a digit of the scale: the chunk's CRC fails
+  expect(put("crc.png", crc), "PNG is damaged or truncated: tEXt: CRC error");
+  std::string big = png;
+  be32(big, 16, 16384);
+  be32(big, 20, 16384);
+  be32(big, 29, static_cast<uint32_t>(crc32(0, reinterpret_cast<const Bytef*>(big.data() + 12), 17)));  // IHDR's CRC holds
+  expect(put("big.png", big), "PNG is damaged or truncated: IHDR declares 16384 x 16384");
+  std::string exr = bytes(d / "kp_ggx.exr");
+  const std::string window = std::string("dataWindow") + '\0' + "box2i" + '\0';
+  const size_t at = exr.find(window);
+  ASSERT_NE(at, std::string::npos);
+  const uint32_t xmax = 16777223;
+  for (int k = 0; k < 4; ++k) exr[at + window.size() + 4 + 8 + k] = static_cast<char>(xmax >> (8 * k));
+  expect(put("window.exr", exr), "OpenEXR ");
+  const fs::path sparse = put("sparse.ktx2", bytes(d / "splitsum_ggx_smith-correlated.ktx2"));
+  fs::resize_file(sparse, 3ull << 30);  // a hole: no disk used
+  expect(sparse, "KTX2 is longer than its header declares");
+  fs::remove(sparse);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // shares (exr_internal.h).  See table_file.h for the contract.
 #include <ImfAttribute.h>
 #include <ImfChannelList.h>
+#include <ImfCompression.h>
 #include <ImfFloatAttribute.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -24,11 +25,13 @@ namespace {
 
 using exr::errnoText;
 
+// The file is there and regular (openExr checked it first, 66 otherwise): what fails now is its
+// content, a data error as in every other format's reader.
 [[noreturn]] void readError(const std::string& path, const std::string& reason) {
-  throw Error(kExitNoInput, "cannot read " + path + ": " + reason);
+  throw Error(kExitDataErr, "cannot read " + path + ": OpenEXR " + reason);
 }
 
-// Runs f(); OpenEXR / standard exceptions become Error(kExitNoInput).
+// Runs f(); OpenEXR / standard exceptions become Error(kExitDataErr).
 template <class F>
 auto guardRead(const std::string& path, F&& f) -> decltype(f()) {
   try {
@@ -46,6 +49,9 @@ namespace exr {
 
 std::unique_ptr<Imf::InputFile> openExr(const std::string& path) {
   checkInputFile(path, "", kCapTable);  // a regular file: OpenEXR would block on a FIFO
+  // OpenEXR refuses a header whose data window is larger than this before it allocates for it (a
+  // damaged dataWindow had it allocate 3.1 GB): no table brdfbake writes is wider or taller
+  Imf::Header::setMaxImageSize(1 << 16, 1 << 16);
   auto file = guardRead(path, [&] { return std::make_unique<Imf::InputFile>(path.c_str(), 0); });
   if (!file->isComplete()) readError(path, "file is incomplete (truncated?)");
   return file;
@@ -56,8 +62,22 @@ Window dataWindowOf(const std::string& path, const Imf::Header& h) {
   w.box = h.dataWindow();
   const int64_t width = int64_t{w.box.max.x} - w.box.min.x + 1;
   const int64_t height = int64_t{w.box.max.y} - w.box.min.y + 1;
-  if (width < 1 || height < 1 || width > INT32_MAX || height > INT32_MAX)
-    readError(path, "invalid data window");
+  if (width < 1 || height < 1 || width > (1 << 16) || height > (1 << 16))
+    readError(path, "data window " + std::to_string(width) + " x " + std::to_string(height) + " is outside [1, 65536] on an axis");
+  // the texels the window declares must fit in the file's bytes: whole when uncompressed, and at
+  // most deflate's 1032:1 (with room) when compressed; checked before a byte is allocated for them
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) {
+    uint64_t sample = 0;
+    for (auto c = h.channels().begin(); c != h.channels().end(); ++c) sample += c.channel().type == Imf::HALF ? 2 : 4;
+    const uint64_t raw = static_cast<uint64_t>(width) * static_cast<uint64_t>(height) * sample;
+    const uint64_t most = h.compression() == Imf::NO_COMPRESSION ? static_cast<uint64_t>(st.st_size)
+                                                                 : static_cast<uint64_t>(st.st_size) * 1100 + 65536;
+    if (raw > most)
+      readError(path, "data window " + std::to_string(width) + " x " + std::to_string(height) + " declares " +
+                          std::to_string(raw) + " bytes of texels, more than the file's " + std::to_string(st.st_size) +
+                          " bytes can hold (damaged header?)");
+  }
   w.width = static_cast<int>(width);
   w.height = static_cast<int>(height);
   return w;

@@ -54,6 +54,14 @@ bool decode(png_structp png, png_infop info, png_infop endInfo, PngSource* src, 
                   h->height <= 65536;
   if (!ok) return true;  // the caller names what is wrong
   const size_t stride = static_cast<size_t>(h->width) * (h->colour == PNG_COLOR_TYPE_RGB ? 3 : 4) * 2;
+  // the rows the header declares must fit deflate's 1032:1 of the file's bytes (with room), before
+  // a byte is allocated for them (a 237-byte file claiming 16384^2 had 2.1 GB allocated)
+  if ((stride + 1) * h->height > src->bytes->size() * 1100 + 65536) {
+    std::snprintf(src->message, sizeof src->message,
+                  "IHDR declares %u x %u, %zu bytes of rows, more than the file's %zu bytes can hold (damaged header?)",
+                  static_cast<unsigned>(h->width), static_cast<unsigned>(h->height), (stride + 1) * h->height, src->bytes->size());
+    return false;
+  }
   pixels->resize(stride * h->height);
   for (png_uint_32 y = 0; y < h->height; ++y) png_read_row(png, pixels->data() + stride * y, nullptr);
   png_read_end(png, endInfo);
@@ -89,6 +97,9 @@ void readPng(const std::string& bytes, bool pixels, TableFile& t) {
   if (!png) bad(t.path, "PNG", "could not be read: libpng could not start");
   png_infop info = png_create_info_struct(png), endInfo = png_create_info_struct(png);
   png_set_user_limits(png, 65536, 65536);
+  // a chunk whose CRC fails is an error, ancillary ones included: libpng's default drops a damaged
+  // text chunk with a warning, and a dropped brdf.mapping.scale read as 1 (tests/readers_test.cpp)
+  png_set_crc_action(png, PNG_CRC_ERROR_QUIT, PNG_CRC_ERROR_QUIT);
   const bool ok = info && endInfo && decode(png, info, endInfo, &src, &h, &samples, addText, &t);
   png_destroy_read_struct(&png, &info, &endInfo);
   if (!ok) bad(t.path, "PNG", std::string("is damaged or truncated: ") + (src.message[0] ? src.message : "libpng failed"));

@@ -31,6 +31,58 @@ bool headerFormat(const std::string& head, bool* js) {
   return true;
 }
 
+uint32_t le32(const std::string& s, size_t at) {
+  uint32_t v = 0;
+  for (int k = 0; k < 4; ++k) v |= static_cast<uint32_t>(static_cast<unsigned char>(s[at + k])) << (8 * k);
+  return v;
+}
+uint64_t le64(const std::string& s, size_t at) { return le32(s, at) | static_cast<uint64_t>(le32(s, at + 4)) << 32; }
+uint32_t be32(const std::string& s, size_t at) {
+  uint32_t v = 0;
+  for (int k = 0; k < 4; ++k) v = v << 8 | static_cast<unsigned char>(s[at + k]);
+  return v;
+}
+
+// How many bytes a file of `format` can hold at most, from the header in `head` (its first 4096
+// bytes): the end of the last block a KTX2's index names; a DDS's headers and its texels at 16 bytes
+// each (the widest format it reads); a PNG's rows stored uncompressed (deflate's stored blocks add 5
+// bytes per 65535) and 1 MiB of other chunks; the header format's text, 64 MiB. A file longer than
+// that is refused before the rest is read (a sparse 3 GB file with a valid small header had been
+// read whole). Headers too short to say return 0: the readers then name what is missing.
+uint64_t declaredBytes(FileFormat format, const std::string& head) {
+  switch (format) {
+    case FileFormat::Ktx2: {
+      if (head.size() < 80) return 0;
+      uint64_t end = std::max<uint64_t>(80, static_cast<uint64_t>(le32(head, 48)) + le32(head, 52));  // dfd
+      end = std::max<uint64_t>(end, static_cast<uint64_t>(le32(head, 56)) + le32(head, 60));          // kvd
+      const uint64_t sgd = le64(head, 64), sgdLength = le64(head, 72);
+      if (sgd <= (uint64_t{1} << 40) && sgdLength <= (uint64_t{1} << 40)) end = std::max(end, sgd + sgdLength);
+      const uint32_t levels = std::max<uint32_t>(1, le32(head, 40));
+      for (uint64_t i = 0; i < levels && 80 + 24 * i + 16 <= head.size(); ++i) {
+        const uint64_t offset = le64(head, 80 + 24 * i), length = le64(head, 88 + 24 * i);
+        if (offset > (uint64_t{1} << 40) || length > (uint64_t{1} << 40)) return 1;  // the reader names it
+        end = std::max(end, offset + length);
+      }
+      return end;
+    }
+    case FileFormat::Dds: {
+      if (head.size() < 148) return 0;
+      const uint64_t height = std::max<uint32_t>(1, le32(head, 12)), width = le32(head, 16), depth = std::max<uint32_t>(1, le32(head, 24));
+      if (width > 65536 || height > 65536 || depth > 65536) return 1;
+      return 148 + width * height * depth * 16;
+    }
+    case FileFormat::Png16: {
+      if (head.size() < 24) return 0;
+      const uint64_t width = be32(head, 16), height = be32(head, 20);
+      if (width > 65536 || height > 65536) return 1;
+      const uint64_t rows = (width * 8 + 1) * height;
+      return rows + rows / 65535 * 5 + 1024 + (1 << 20);
+    }
+    default:
+      return 64ull << 20;
+  }
+}
+
 }  // namespace
 
 FileFormat detectTableFormat(const std::string& path) {
@@ -59,7 +111,14 @@ TableFile readTableFile(const std::string& path, bool pixels) {
     t.storage = half ? "HALF" : "FLOAT";
     return t;
   }
-  const std::string bytes = readers::fileBytes(path);
+  // no more than the header declares, and a file longer than that refused (it is not what it says)
+  const uint64_t declared = declaredBytes(t.format, readers::fileBytes(path, 4096));
+  const std::string bytes =
+      readers::fileBytes(path, declared == 0 ? SIZE_MAX : static_cast<size_t>(std::max<uint64_t>(declared, 4096) + 1));
+  if (declared > 0 && bytes.size() > std::max<uint64_t>(declared, 4096))
+    readers::bad(path, t.format == FileFormat::Ktx2 ? "KTX2" : t.format == FileFormat::Dds ? "DDS" : t.format == FileFormat::Png16 ? "PNG" : "header file",
+                 "is longer than its header declares: more than " + std::to_string(std::max<uint64_t>(declared, 4096)) +
+                     " bytes (damaged, or not what it says)");
   switch (t.format) {
     case FileFormat::Ktx2: readers::readKtx2(bytes, pixels, t); break;
     case FileFormat::Dds: readers::readDds(bytes, pixels, t); break;
