@@ -24,15 +24,32 @@ namespace fs = std::filesystem;
 
 namespace {
 
-enum class Status { New, Changed, UpToDate };
+enum class Status { New, Changed, Damaged, UpToDate };
 
-Status statusOf(const PlannedTable& t) {
+// Up to date: the header's brdf.hash is the plan's, and the whole file reads back with the texels it
+// was written with (kTexelsHashAttribute; a 3D table, written streamed, carries none and is read
+// whole). A truncated or altered table is damaged, and baked again.
+Status statusOf(const PlannedTable& t, std::string* why = nullptr) {
   std::optional<std::string> h = readExrStringAttribute(t.path, "brdf.hash");
   if (!h) return fs::exists(t.path) ? Status::Changed : Status::New;
-  return *h == t.hash ? Status::UpToDate : Status::Changed;
+  if (*h != t.hash) return Status::Changed;
+  try {
+    const TableImage img = readTableExr(t.path);
+    auto rec = img.strings.find(kTexelsHashAttribute);
+    if (rec != img.strings.end() && rec->second != texelsHash(img.planes, tableExrIsHalf(t.path))) {
+      if (why) *why = "its texels are not those it was written with";
+      return Status::Damaged;
+    }
+  } catch (const Error& e) {
+    if (why) *why = e.what();
+    return Status::Damaged;
+  }
+  return Status::UpToDate;
 }
 
-const char* statusName(Status s) { return s == Status::New ? "new" : s == Status::Changed ? "changed" : "up to date"; }
+const char* statusName(Status s) {
+  return s == Status::New ? "new" : s == Status::Changed ? "changed" : s == Status::Damaged ? "damaged" : "up to date";
+}
 
 // EXR files in the output directory that this scene baked (brdf.scene) and no longer plans.
 std::vector<std::string> staleTables(const ScenePlan& whole) {
@@ -144,10 +161,13 @@ int runSceneBake(const SceneOptions& o) {
   todo.observer = o.observer;
   int upToDate = 0;
   for (const auto& t : p.tables) {
-    if (!o.force && statusOf(t) == Status::UpToDate) {
+    std::string why;
+    const Status s = o.force ? Status::Changed : statusOf(t, &why);
+    if (s == Status::UpToDate) {
       ++upToDate;
       continue;
     }
+    if (s == Status::Damaged) std::cerr << "brdfbake: " << t.path << " is damaged (" << why << "): baking it again\n";
     todo.jobs.push_back(p.plan.jobs[t.index]);
     todo.extraStrings[t.path] = {{"brdf.hash", t.hash}, {"brdf.scene", p.scene}};
   }

@@ -13,6 +13,7 @@
 #include <ImfStringAttribute.h>
 #include <ImfVecAttribute.h>
 #include <Imath/half.h>
+#include <cstring>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -138,6 +139,29 @@ void writeTableExr(const std::string& path, const TableImage& img, bool half) {
   }
 }
 
+std::string texelsHash(const std::vector<std::vector<float>>& planes, bool half) {
+  uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a 64 (Fowler, Noll, Vo): offset basis, prime 2^40 + 435
+  auto eat = [&](uint32_t bits, int bytes) {
+    for (int k = 0; k < bytes; ++k) {
+      h ^= (bits >> (8 * k)) & 0xff;
+      h *= 0x100000001b3ull;
+    }
+  };
+  for (const auto& p : planes)
+    for (float v : p) {
+      if (half) {
+        eat(Imath::half(v).bits(), 2);
+      } else {
+        uint32_t bits;
+        std::memcpy(&bits, &v, 4);
+        eat(bits, 4);
+      }
+    }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
 void writeTableExrTemporary(const std::string& tmp, const std::string& path, const TableImage& img, bool half) {
   TableFormatRules rules;
   rules.halfRange = half;
@@ -145,7 +169,19 @@ void writeTableExrTemporary(const std::string& tmp, const std::string& path, con
   rules.formatName = "OpenEXR";
   validateTableImage(path, img, rules);
   const size_t w = static_cast<size_t>(img.width);
-  writeTableExrRowsTemporary(tmp, path, img, half, img.height,
+  // a scene's table records its texels' hash, so that a later bake can tell a damaged file
+  TableImage meta;
+  const bool scene = img.strings.count("brdf.scene") > 0;
+  if (scene) {
+    meta.width = img.width;
+    meta.height = img.height;
+    meta.channels = img.channels;
+    meta.strings = img.strings;
+    meta.v2f = img.v2f;
+    meta.floats = img.floats;
+    meta.strings[kTexelsHashAttribute] = texelsHash(img.planes, half);
+  }
+  writeTableExrRowsTemporary(tmp, path, scene ? meta : img, half, img.height,
                              [&](int y0, int rows, std::vector<std::vector<float>>& planes) {
                                planes.resize(img.planes.size());
                                for (size_t c = 0; c < img.planes.size(); ++c)

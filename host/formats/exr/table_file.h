@@ -91,6 +91,12 @@ TableImage readTableExrHeader(const std::string& path);
 // missing, not a readable EXR, or has no such string attribute. (Incremental bakes read brdf.hash.)
 std::optional<std::string> readExrStringAttribute(const std::string& path, const std::string& name);
 
+// The attribute a scene's 2D table carries (tables written with brdf.scene set): FNV-1a 64 of its
+// texels exactly as stored (each channel in order, each texel's HALF or FLOAT bits, little-endian),
+// in hex. A scene bake reads the file back and compares before it calls it up to date.
+inline const char* const kTexelsHashAttribute = "brdf.texels.fnv1a64";
+std::string texelsHash(const std::vector<std::vector<float>>& planes, bool half);
+
 // True when the R/G/B/A channels of the file are stored as HALF (all of them); false
 // when any is FLOAT or UINT.  Throws like readTableExr.
 bool tableExrIsHalf(const std::string& path);
