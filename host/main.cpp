@@ -2,7 +2,10 @@
 // Pipeline: command line -> plan of tables -> OpenCL jobs -> EXR files and a report.
 // Errors are exceptions inside, caught here once and mapped to sysexits-style exit codes.
 #include <CL/opencl.hpp>
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -27,10 +30,12 @@
 #include "report/verify.h"
 #include "version.h"
 
-int main(int argc, char** argv) {
-  using namespace brdfbake;
-  try {
-    Command cmd = parseArgs(std::vector<std::string>(argv + 1, argv + argc));
+namespace {
+using namespace brdfbake;
+
+// One command, run; its exit status. Errors are thrown (Error, cl::Error) and caught in main.
+int runCommand(Command& cmd) {
+  {
     switch (cmd.kind) {
       case Command::Kind::Help:
         std::cout << (cmd.helpFor.empty() ? overviewHelp() : commandHelp(cmd.helpFor));
@@ -125,6 +130,31 @@ int main(int argc, char** argv) {
         return kExitOk;
       }
     }
+  }
+  return kExitSoftware;
+}
+
+// Standard output must have taken every byte: a full disk or a closed pipe at the end of a
+// command that printed its result is an I/O error (74), not success.
+int checkedStdout(int code) {
+  std::cout.flush();
+  const bool failed = std::cout.fail() || std::fflush(stdout) != 0 || std::ferror(stdout);
+  if (!failed) return code;
+  const int err = errno;
+  std::cerr << "brdfbake: cannot write standard output" << (err ? std::string(": ") + std::strerror(err) : std::string())
+            << "\n";
+  return code == kExitOk ? kExitIoErr : code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) makes writes past it fail with EFBIG, which the writers report
+  // and clean up after (74), instead of a SIGXFSZ that kills the process mid-write.
+  std::signal(SIGXFSZ, SIG_IGN);
+  try {
+    Command cmd = parseArgs(std::vector<std::string>(argv + 1, argv + argc));
+    return checkedStdout(runCommand(cmd));
   } catch (const Error& e) {
     std::cerr << "brdfbake: " << e.what() << "\n";
     return e.code();

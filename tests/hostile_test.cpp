@@ -83,6 +83,42 @@ TEST(Hostile, StampThatIsNotAFileIsRefusedBeforeBaking) {
   EXPECT_TRUE(S_ISFIFO(st.st_mode)) << "the FIFO was replaced";
 }
 
+// `brdfbake ARGS` run in `cwd` with its standard output sent to `out` (a shell redirection target);
+// returns the exit status and standard error.
+CmdResult runStdoutTo(const std::string& args, const std::string& cwd, const std::string& out, const std::string& pre = "") {
+  const std::string cmd = "cd '" + cwd + "' && " + pre + "'" BRDFBAKE_EXE "' " + args + " 2>&1 >" + out;
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string text;
+  char buf[4096];
+  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) text.append(buf, n);
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
+}
+
+// Output that does not land is an I/O error: standard output on a full disk (/dev/full) after info,
+// shader, plan and help printed their result; a bake past `ulimit -f` (EFBIG, where SIGXFSZ had
+// killed it silently, leaving its temporaries and lock): 74, said, nothing left behind.
+TEST(Hostile, OutputThatDoesNotLandIs74) {
+  const fs::path d = freshDir("hostile", "stdout");
+  ASSERT_EQ(runBounded("bake --table kp -o t", d.string()).code, 0);
+  fs::copy_file(fs::path(BRDFBAKE_SOURCE_DIR) / "examples/scenes/pbr-desktop.toml", d / "s.toml");
+  for (const std::string& args : {std::string("info t/kp_ggx.exr"), std::string("shader --lang glsl t/kp_ggx.exr"),
+                                  std::string("plan s.toml -o out"), std::string("--help")}) {
+    CmdResult r = runStdoutTo(args, d.string(), "/dev/full");
+    EXPECT_EQ(r.code, 74) << args << "\n" << r.out;
+    EXPECT_NE(r.out.find("brdfbake: cannot write standard output: No space left on device"), std::string::npos)
+        << args << "\n" << r.out;
+  }
+  CmdResult r = runStdoutTo("bake --table splitsum --size 128 -o big", d.string(), "/dev/null", "ulimit -f 50; ");
+  EXPECT_EQ(r.code, 74) << r.out;
+  EXPECT_NE(r.out.find("File too large; nothing was written"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(d / "big")) << "a directory the bake created stays behind";
+  fs::create_directory(d / "kept");
+  r = runStdoutTo("bake --table splitsum --size 128 -o kept", d.string(), "/dev/null", "ulimit -f 50; ");
+  EXPECT_EQ(r.code, 74) << r.out;
+  EXPECT_TRUE(fs::is_empty(d / "kept")) << "temporaries or the lock's holder line left";
+}
+
 // A command never replaces what it reads: `--stamp` naming the scene and `shader -o` naming one of
 // its tables are refused (73) before anything is baked or generated, and the input is unchanged.
 TEST(Hostile, AnOutputThatIsAnInputIsRefused) {

@@ -60,7 +60,7 @@ std::string holderOf(const std::string& info) {
 }  // namespace
 
 void throwFileError(int err, const std::string& what) {
-  const bool full = err == ENOSPC || err == EDQUOT;
+  const bool full = err == ENOSPC || err == EDQUOT || err == EFBIG;  // EFBIG: past ulimit -f
   throw Error(full ? kExitIoErr : kExitCantCreat, what + ": " + std::strerror(err));
 }
 

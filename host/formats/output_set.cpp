@@ -325,7 +325,7 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
     backups[k] = temps[k] + ".old";
     if (!keepBackup(files[k].path, backups[k])) {
       failure = "cannot keep a backup of " + files[k].path + ": " + errnoText(errno);
-      code = errno == ENOSPC || errno == EDQUOT ? kExitIoErr : kExitCantCreat;
+      code = errno == ENOSPC || errno == EDQUOT || errno == EFBIG ? kExitIoErr : kExitCantCreat;
       backups[k].clear();
     }
   }
@@ -347,7 +347,7 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
     if (landed > 0 && renameDelay) std::this_thread::sleep_for(std::chrono::milliseconds(std::atoi(renameDelay)));
     if (std::rename(temps[landed].c_str(), files[landed].path.c_str()) != 0) {
       failure = "cannot create " + files[landed].path + ": " + errnoText(errno);
-      code = errno == ENOSPC || errno == EDQUOT ? kExitIoErr : kExitCantCreat;
+      code = errno == ENOSPC || errno == EDQUOT || errno == EFBIG ? kExitIoErr : kExitCantCreat;
       break;
     }
     testKillPoint("rename:" + std::to_string(landed + 1));
