@@ -75,7 +75,12 @@ std::string buildHow(const std::vector<KernelRunner::ProgramEvent>& events) {
 
 std::vector<TableReport> runPlan(const Plan& plan) {
   // Nothing is created before every table is computed and checked: a bad -o, a missing device
-  // or an interrupt leaves the file system as it was.
+  // or an interrupt leaves the file system as it was. A set lands whole, so it has at most
+  // kMaxFilesPerSet files: each table writes one or more, refused before any is computed.
+  if (plan.jobs.size() > static_cast<size_t>(kMaxFilesPerSet))
+    throw Error(kExitUsage, "too many files for one set: " + std::to_string(plan.jobs.size()) +
+                                " tables write at least as many files, and at most " + std::to_string(kMaxFilesPerSet) +
+                                " land together; " + (plan.shardHint.empty() ? "ask for fewer tables per run" : plan.shardHint));
   checkOutputDir(plan.outDir);
   BakeContext ctx(plan.device, plan.observer);
   ctx.reuseLaunches();

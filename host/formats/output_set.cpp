@@ -23,7 +23,7 @@ namespace brdfbake {
 namespace {
 
 // ---- what the signal handler may touch: fixed buffers, no allocation -----------------------
-constexpr int kMaxPaths = 512;
+constexpr int kMaxPaths = kMaxFilesPerSet + 1;  // every temporary, and the lock's holder line
 constexpr int kPathLen = 4096;
 char gPaths[kMaxPaths][kPathLen];   // temporaries to unlink
 char gDirs[64][kPathLen];           // directories we created, to rmdir (deepest last)
@@ -203,9 +203,9 @@ void guardInterrupts(const std::string& what) {
 }
 
 void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files, bool wait) {
-  if (files.size() > static_cast<size_t>(kMaxPaths))
-    throw Error(kExitUsage, "too many tables in one bake (" + std::to_string(files.size()) + "; at most " +
-                                std::to_string(kMaxPaths) + ")");
+  if (files.size() > static_cast<size_t>(kMaxFilesPerSet))
+    throw Error(kExitUsage, "too many files in one set (" + std::to_string(files.size()) + "; at most " +
+                                std::to_string(kMaxFilesPerSet) + " land together): ask for fewer tables or formats per run");
   checkOutputDir(dir);
   // mkdir -p, remembering what we created; the handler sees each one before it exists
   std::vector<std::string> created, chain;

@@ -53,6 +53,8 @@ void checkReplaceableFile(const std::string& path, const std::string& option);
 // One text file (generated shader code, a bake's stamp), written through a synced temporary and a
 // rename: the file is whole or untouched. Error(kExitCantCreat) / Error(kExitIoErr) naming it.
 void writeTextFile(const std::string& path, const std::string& text);
+// The most files one set commits (the interrupt handler's fixed table of temporaries).
+inline constexpr int kMaxFilesPerSet = 511;
 // Error(kExitCantCreat) naming `option` when `path` exists and is one of `inputs` (the same file,
 // by device and inode): a command never replaces what it reads.
 void checkNotAnInput(const std::string& path, const std::vector<std::string>& inputs, const std::string& option);

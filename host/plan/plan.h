@@ -20,6 +20,7 @@ struct Plan {
   std::vector<Job> jobs;  // in the registry's family order
   // Extra string attributes of the file at a path (scenes: brdf.hash, brdf.scene).
   std::map<std::string, std::map<std::string, std::string>> extraStrings;
+  std::string shardHint;  // what to do when the plan has too many files (scenes: --shard)
 };
 
 // Throws Error(kExitUsage) for combinations that have no finite table (gaf none on a node grid,

@@ -90,6 +90,31 @@ std::string gltfJson(const std::string& path, bool glb) {
   return readInputPrefix(path, "scene", 20 + len).substr(20);
 }
 
+// A glTF's materials nest 4 levels deep (materials[i].pbrMetallicRoughness.baseColorFactor); its
+// extensions and extras a few more. Anything past kMaxJsonNesting is refused here, before the parser
+// (recursive, as is building its error message and freeing the tree) sees the text: a 200 KB file
+// nested 100,000 deep had crashed `plan`. Brackets inside strings do not count.
+constexpr int kMaxJsonNesting = 64;
+void checkJsonNesting(const std::string& text, const std::string& path) {
+  int depth = 0;
+  bool inString = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonNesting)
+        bad(path, "byte " + std::to_string(i), "arrays and objects nest deeper than " + std::to_string(kMaxJsonNesting) +
+                                                   " levels; a glTF's materials need at most 8");
+    } else if (c == ']' || c == '}') {
+      depth = std::max(0, depth - 1);
+    }
+  }
+}
+
 }  // namespace
 
 Scene readGltfScene(const std::string& path) {
@@ -103,6 +128,7 @@ Scene readGltfScene(const std::string& path) {
 }
 
 Scene parseGltf(const std::string& text, const std::string& path) {
+  checkJsonNesting(text, path);
   Json doc;
   try {
     doc = Json::parse(text);

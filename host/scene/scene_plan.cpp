@@ -56,19 +56,15 @@ void addTables(ScenePlan& sp, const BakeRequest& req, const SceneMaterial& m, co
     const std::string key = j.family->key(j);
     const std::string hash = hex16(fnv1a(key, bakerHash()));
     // the same key: the same file; the same name for a different table: a suffix from the key
-    auto same = std::find_if(sp.tables.begin(), sp.tables.end(), [&](const PlannedTable& t) { return t.hash == hash; });
-    if (same != sp.tables.end()) {
-      if (std::find(same->reasons.begin(), same->reasons.end(), reason) == same->reasons.end())
-        same->reasons.push_back(reason);
+    if (auto same = sp.byHash.find(hash); same != sp.byHash.end()) {
+      if (sp.reasonSets[same->second].insert(reason).second) sp.tables[same->second].reasons.push_back(reason);
       continue;
     }
     std::string path = j.path;
-    for (const auto& t : sp.tables)
-      if (t.path == path) {
-        size_t dot = path.find_last_of('.');
-        path = path.substr(0, dot) + "_" + hex16(fnv1a(key)).substr(0, 8) + path.substr(dot);
-        break;
-      }
+    if (sp.byPath.count(path)) {
+      size_t dot = path.find_last_of('.');
+      path = path.substr(0, dot) + "_" + hex16(fnv1a(key)).substr(0, 8) + path.substr(dot);
+    }
     j.path = path;
     JobSummary sum = j.family->summary(j);
     PlannedTable t;
@@ -81,6 +77,9 @@ void addTables(ScenePlan& sp, const BakeRequest& req, const SceneMaterial& m, co
     t.size = sum.size;
     t.texels = sum.texels;
     t.cost = sum.cost;
+    sp.byHash[hash] = sp.tables.size();
+    sp.byPath[path] = sp.tables.size();
+    sp.reasonSets.push_back({reason});
     sp.plan.jobs.push_back(j);
     sp.tables.push_back(t);
   }
@@ -202,6 +201,9 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
                                     : "kp: analytic lights are off (lighting.analytic = false)");
   if (!anyVolume) sp.leftOut.push_back("brdf3d: no material asks for a 3D table (brdf3d = true)");
   if (!anyGlass) sp.leftOut.push_back("dielectric, dielectric-avg: no material transmits (transmission = true)");
+  sp.byHash.clear();
+  sp.byPath.clear();
+  sp.reasonSets.clear();
   return sp;
 }
 

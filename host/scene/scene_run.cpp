@@ -115,6 +115,11 @@ int runScenePlan(const SceneOptions& o) {
             << (o.shards > 1 ? ", shard " + std::to_string(o.shard) + "/" + std::to_string(o.shards) : "") << ": "
             << p.tables.size() << " table(s) into " << p.plan.outDir << "/, " << stale << " to bake (about "
             << fmtSeconds(toBake) << " s), " << fresh << " up to date\n";
+  if (stale > static_cast<int>(kMaxFilesPerSet)) {
+    const int parts = (stale + kMaxFilesPerSet - 1) / kMaxFilesPerSet * o.shards;
+    std::cout << "note: " << stale << " tables to bake write more files than one set holds (" << kMaxFilesPerSet
+              << "): bake them in " << parts << " parts, --shard 1/" << parts << " ... --shard " << parts << "/" << parts << "\n";
+  }
   size_t wt = 5, wf = 4;
   for (const auto& t : p.tables) {
     wt = std::max(wt, t.table.size());
@@ -170,6 +175,11 @@ int runSceneBake(const SceneOptions& o) {
     if (s == Status::Damaged) std::cerr << "brdfbake: " << t.path << " is damaged (" << why << "): baking it again\n";
     todo.jobs.push_back(p.plan.jobs[t.index]);
     todo.extraStrings[t.path] = {{"brdf.hash", t.hash}, {"brdf.scene", p.scene}};
+  }
+  {
+    const size_t parts = (todo.jobs.size() + kMaxFilesPerSet - 1) / kMaxFilesPerSet * o.shards;
+    todo.shardHint = "bake the scene in " + std::to_string(parts) + " parts: --shard 1/" + std::to_string(parts) + " ... --shard " +
+                     std::to_string(parts) + "/" + std::to_string(parts);
   }
   std::string label = "scene " + p.scene + (o.shards > 1 ? " (shard " + std::to_string(o.shard) + "/" +
                                                                std::to_string(o.shards) + ")" : "");
