@@ -182,6 +182,38 @@ TEST(Hostile, OutputThatDoesNotLandIs74) {
   EXPECT_TRUE(fs::is_empty(d / "kept")) << "temporaries or the lock's holder line left";
 }
 
+// Codes and words true to what happened: `-o` a dangling link is 73 and said (it had been 70
+// "internal"); a 250-character file name works for `shader -o` (its temporary's name is cut to
+// fit); a KTX2 with a NaN texel is called damaged, not a model borrowing a Lambda; an
+// OCL_ICD_VENDORS that hides every driver is named.
+TEST(Hostile, CodesAndWordsAreTrue) {
+  const fs::path d = freshDir("hostile", "words");
+  fs::create_symlink(d / "nowhere" / "x", d / "dangling");
+  expectRefused(runBounded("bake --table kp -o dangling", d.string()), 73,
+                "-o: 'dangling' is a symbolic link to nothing (a dangling link)", "dangling -o");
+  ASSERT_EQ(runBounded("bake --table kp --format exr,ktx2 -o t", d.string()).code, 0);
+  const std::string longName = std::string(245, 'a') + ".glsl";
+  CmdResult r = runBounded("shader --lang glsl t/kp_ggx.exr -o " + longName, d.string());
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(fs::exists(d / longName));
+  std::string ktx2 = bytes(d / "t/kp_ggx.ktx2");
+  uint64_t level = 0;
+  for (int k = 0; k < 8; ++k) level |= static_cast<uint64_t>(static_cast<unsigned char>(ktx2[80 + k])) << (8 * k);
+  const uint32_t nan = 0x7fc00000u;
+  for (int k = 0; k < 4; ++k) ktx2[level + k] = static_cast<char>(nan >> (8 * k));
+  std::ofstream(d / "nan.ktx2", std::ios::binary) << ktx2;
+  r = runBounded("info nan.ktx2", d.string());
+  EXPECT_NE(r.out.find("warning: 1 texel value(s) are not finite (NaN or Inf): brdfbake never writes one"), std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("borrowed"), std::string::npos) << r.out;
+  fs::create_directory(d / "icd");
+  r = run("bake --table kp -o v", d.string(), "OCL_ICD_VENDORS='" + (d / "icd").string() + "'");
+  EXPECT_EQ(r.code, 69) << r.out;
+  EXPECT_NE(r.out.find("no OpenCL platform found: OCL_ICD_VENDORS=" + (d / "icd").string() + " names no loadable driver"),
+            std::string::npos)
+      << r.out;
+}
+
 // A command never replaces what it reads: `--stamp` naming the scene and `shader -o` naming one of
 // its tables are refused (73) before anything is baked or generated, and the input is unchanged.
 TEST(Hostile, AnOutputThatIsAnInputIsRefused) {

@@ -1,6 +1,7 @@
 // The text a bake prints: its report (one line per file), and `info`'s warning when an energy
 // table exceeds 1 by more than its bound.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "bake/bake.h"
@@ -42,6 +43,14 @@ std::string energyWarnings(const TableImage& t) {
     auto it = t.strings.find(k);
     return it == t.strings.end() ? std::string() : it->second;
   };
+  // brdfbake never writes a texel that is not finite: such a file is damaged, or not one of ours,
+  // and its maximum says nothing about the model
+  size_t bad = 0;
+  for (const auto& p : t.planes)
+    for (float v : p) bad += !std::isfinite(v);
+  if (bad)
+    return "warning: " + std::to_string(bad) + " texel value(s) are not finite (NaN or Inf): brdfbake never writes one; "
+           "the file is damaged or was not written by brdfbake\n";
   std::string table = str("brdf.table");
   // the energy quantity's channel: E = A + B (splitsum B), E (albedo R), E_avg (albedo-avg R)
   std::string name, channel;

@@ -56,7 +56,16 @@ std::vector<DeviceEntry> listDevices() {
     platforms.clear();  // the ICD loader reports "no platform" as CL_PLATFORM_NOT_FOUND_KHR (-1001)
   }
   const double platformSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (platforms.empty()) throw Error(kExitUnavailable, kInstallHint);
+  if (platforms.empty()) {
+    // the ICD loader reads its drivers from OCL_ICD_VENDORS when that is set: name it, since the
+    // drivers may well be installed and the variable be what hides them
+    const char* vendors = std::getenv("OCL_ICD_VENDORS");
+    if (vendors && *vendors)
+      throw Error(kExitUnavailable, std::string("no OpenCL platform found: OCL_ICD_VENDORS=") + vendors +
+                                        " names no loadable driver (the ICD loader looks only there while it is set; "
+                                        "unset it, or point it at a driver's .icd file or library)");
+    throw Error(kExitUnavailable, kInstallHint);
+  }
   std::vector<DeviceEntry> out;
   for (auto& p : platforms) {
     std::vector<cl::Device> devs;

@@ -79,7 +79,10 @@ std::string makeTemporaryFor(const std::string& path) {
   const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
   if (name.empty() || name == "." || name == "..")
     throw Error(kExitCantCreat, "cannot create " + path + ": not a file name");
-  std::string tmpl = dir + "." + name + temporaryMarker() + "XXXXXX";
+  // `.` + name + marker + 6 must fit a file name (255 bytes): a long name is cut for its temporary
+  const std::string marker = temporaryMarker();
+  const size_t room = 255 - 1 - marker.size() - 6;
+  std::string tmpl = dir + "." + name.substr(0, room) + marker + "XXXXXX";
   int fd = ::mkstemp(tmpl.data());
   if (fd < 0) throwFileError(errno, "cannot create a temporary for " + path);
   // mkstemp makes it 0600; a table is as readable as any file the user creates (0666 & ~umask)

@@ -160,6 +160,9 @@ void checkOutputDir(const std::string& dir) {
   // the nearest existing ancestor (or dir itself) must be a writable directory
   std::string cur = p;
   while (true) {
+    struct stat lst {};
+    if (::lstat(cur.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode) && ::stat(cur.c_str(), &lst) != 0)
+      throw Error(kExitCantCreat, "-o: '" + cur + "' is a symbolic link to nothing (a dangling link): give a directory");
     if (isDir(cur, &exists)) break;
     if (exists) throw Error(kExitCantCreat, "-o: '" + cur + "' exists and is not a directory");
     std::string up = parentOf(cur);
