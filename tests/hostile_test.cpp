@@ -231,6 +231,11 @@ TEST(Hostile, AnOutputThatIsAnInputIsRefused) {
   expectRefused(runBounded("shader --lang glsl -o t/kp_ggx.exr t/kp_ggx.exr", d.string()), 73,
                 "-o t/kp_ggx.exr: is an input of this command", "shader over its input");
   EXPECT_EQ(bytes(d / "t/kp_ggx.exr"), table);
+  // a stamp inside the output directory, with --prune holding that directory's lock: written after
+  // the lock is let go (the stamp's writer takes it too), not a wait on itself
+  CmdResult r = runBounded("bake s.toml -o out --prune --stamp out/stamp.txt", d.string());
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(bytes(d / "out/stamp.txt").find("the tables of the last successful bake"), std::string::npos);
   fs::create_directory(d / "adir");
   expectRefused(runBounded("shader --lang glsl -o adir t/kp_ggx.exr", d.string()), 73, "-o adir: a directory",
                 "shader -o a directory");

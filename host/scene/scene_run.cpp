@@ -200,14 +200,24 @@ int runSceneBake(const SceneOptions& o) {
     recoverDirectory(p.plan.outDir);
   }
   std::vector<std::string> old = staleTables(l.whole);
-  if (!old.empty()) {
-    std::cout << (o.prune ? "removed, no longer needed by this scene:\n" : "no longer needed by this scene (--prune removes them):\n");
+  if (!old.empty() && !o.prune) {
+    std::cout << "no longer needed by this scene (--prune removes them):\n";
+    for (const auto& s : old) std::cout << "  " << s << "\n";
+  }
+  if (!old.empty() && o.prune) {
+    // each file said once it is gone, never before: a failure leaves a true list of what was removed
+    size_t removed = 0;
     for (const auto& s : old) {
-      if (o.prune && ::unlink(s.c_str()) != 0)
-        throw Error(kExitIoErr, "--prune: cannot remove " + s + ": " + std::strerror(errno));
-      std::cout << "  " << s << "\n";
+      if (::unlink(s.c_str()) != 0) {
+        const int err = errno;
+        if (removed) std::cout << "\n";
+        throwFileError(err, "--prune: cannot remove " + s + " (" + std::to_string(removed) + " of " +
+                                std::to_string(old.size()) + " removed before it)");
+      }
+      std::cout << (removed++ ? "" : "removed, no longer needed by this scene:\n") << "  " << s << "\n";
     }
   }
+  lock.reset();  // the stamp's writer takes the lock of its own directory, which may be this one
   if (!o.stamp.empty()) {
     std::string text = "# brdfbake " + label + ": the tables of the last successful bake\n";
     std::error_code ec;
