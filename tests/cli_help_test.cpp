@@ -100,6 +100,15 @@ TEST(CliHelp, SuggestsTheNearestNameAndWritesNothing) {
       {"--precision flaot16" + o, "(did you mean 'float16'?)"},
       {"--fresnel schlik" + o, "(did you mean 'schlick'?)"},
       {"--table albedo --diffuse lamberd" + o, "(did you mean 'lambert'?)"},
+      // values of every option with a fixed set of names, whichever parser refuses them
+      {"--grid nodes" + o, "--grid must be texel-center or node, got 'nodes' (did you mean 'node'?)"},
+      {"--mu-axis sqr" + o, "got 'sqr' (did you mean 'sqrt'?)"},
+      {"--preset gltff" + o, "--preset: unknown preset 'gltff' (did you mean 'gltf'?)"},
+      {"shader --lang gls x.exr", "--lang must be glsl or hlsl, got 'gls' (did you mean 'glsl'?)"},
+      {"energy --coupling albedo-scale", "got 'albedo-scale' (did you mean 'albedo-scaling'?)"},
+      {"render --rows kulla" + o, "--rows: unknown row 'kulla' (did you mean 'kulla-conty'?)"},
+      // a short option: its own case, not a long option two edits away ('-O' had been offered '--k')
+      {"-O out", "bake: unknown option '-O' (did you mean '-o'?)"},
       // another command's option: refused naming this command and its help
       {"verify --format exr" + o, "--format: not a verify option"},
       {"energy --table albedo", "--table: not an energy option (energy writes no tables"},

@@ -63,7 +63,8 @@ std::vector<DeviceEntry> listDevices() {
     if (vendors && *vendors)
       throw Error(kExitUnavailable, std::string("no OpenCL platform found: OCL_ICD_VENDORS=") + vendors +
                                         " names no loadable driver (the ICD loader looks only there while it is set; "
-                                        "unset it, or point it at a driver's .icd file or library)");
+                                        "unset it, or point it at a driver's .icd file or library); where no driver is "
+                                        "installed: apt-get install pocl-opencl-icd (PoCL, for the CPU)");
     throw Error(kExitUnavailable, kInstallHint);
   }
   std::vector<DeviceEntry> out;

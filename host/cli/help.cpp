@@ -1,6 +1,7 @@
 // The help texts, the refusals of unknown commands and options, and the bash completion script,
 // all made from the command and option tables (cli/commands.cpp).
 #include <algorithm>
+#include <cctype>
 #include <sstream>
 
 #include "cli/commands.h"
@@ -122,8 +123,18 @@ void refuseOption(const std::string& command, const std::string& opt) {
   for (const auto& o : optionInfos()) {
     (c && (o.commands & c->bit) ? own : all).push_back(o.name);
   }
-  std::string near = didYouMean(opt, own);
-  if (near.empty()) near = didYouMean(opt, all);
+  std::string near;
+  if (opt.size() == 2 && opt[0] == '-') {
+    // a short option: only another short option differing in case (-O for -o), never a long one
+    // two edits away (-O had been offered --k)
+    for (const auto& o : optionInfos())
+      if (c && (o.commands & c->bit) && o.alias.size() == 2 && std::tolower(static_cast<unsigned char>(o.alias[1])) ==
+                                                            std::tolower(static_cast<unsigned char>(opt[1])))
+        near = " (did you mean '" + o.alias + "'?)";
+  } else {
+    near = didYouMean(opt, own);
+    if (near.empty()) near = didYouMean(opt, all);
+  }
   throw Error(kExitUsage, shown + ": unknown option '" + opt + "'" + near + "; brdfbake " + helpCmd +
                               " --help lists its options");
 }

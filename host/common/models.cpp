@@ -51,7 +51,15 @@ std::string closestName(const std::string& word, const std::vector<std::string>&
       best = v;
     }
   }
-  return bestD <= std::max<size_t>(2, word.size() / 3) ? best : std::string();
+  if (bestD <= std::max<size_t>(2, word.size() / 3)) return best;
+  // the start of exactly one name ('kulla' for 'kulla-conty'), three letters or more
+  std::string prefixed;
+  for (const auto& v : valid)
+    if (word.size() >= 3 && v.size() > word.size() && v.compare(0, word.size(), word) == 0) {
+      if (!prefixed.empty()) return std::string();
+      prefixed = v;
+    }
+  return prefixed;
 }
 
 std::string didYouMean(const std::string& word, const std::vector<std::string>& valid) {
