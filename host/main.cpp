@@ -38,7 +38,7 @@ int runCommand(Command& cmd) {
   {
     switch (cmd.kind) {
       case Command::Kind::Help:
-        std::cout << (cmd.helpFor.empty() ? overviewHelp() : commandHelp(cmd.helpFor));
+        std::cout << (cmd.helpFor.empty() ? overviewHelp() : cmd.helpFor == "--markdown" ? markdownHelp() : commandHelp(cmd.helpFor));
         return kExitOk;
       case Command::Kind::Completion:
         std::cout << bashCompletion();

@@ -133,6 +133,11 @@ Command parseArgsUnchecked(const std::vector<std::string>& rawArgs) {
   if (first == "help") {
     if (args.size() > 2) throw Error(kExitUsage, "help: expected at most one command name, e.g. brdfbake help bake");
     const bool self = args.size() == 2 && (args[1] == "--help" || args[1] == "-h");  // help's own help
+    if (args.size() == 2 && args[1] == "--markdown") {  // every command's help as Markdown (docs/commands.md)
+      cmd.kind = Command::Kind::Help;
+      cmd.helpFor = "--markdown";
+      return cmd;
+    }
     if (args.size() == 2 && !self && !findCommand(args[1])) unknownCommand(args[1]);
     cmd.kind = Command::Kind::Help;
     cmd.helpFor = self ? "help" : args.size() == 2 ? args[1] : "";

@@ -48,18 +48,18 @@ std::vector<CommandInfo> makeCommands() {
        "bake what a scene (.toml manifest, .gltf/.glb) needs that is new or changed",
        "Bakes the tables the scene's materials use and that are missing or out of date under -o DIR;\n"
        "docs/scenes.md lists the manifest's keys.",
-       {"brdfbake bake scene.toml -o out/scene"},
+       {"brdfbake bake examples/scenes/pbr-desktop.toml -o out/scene"},
        "the tables come from the scene; docs/scenes.md"},
       {"plan", kCmdPlan, "brdfbake plan SCENE [options]",
        "the tables a scene needs, why, their cost, and what is up to date",
        "Prints one line per table (or, with --list, only the output paths); writes nothing.",
-       {"brdfbake plan scene.toml -o out/scene"},
+       {"brdfbake plan examples/scenes/pbr-desktop.toml -o out/scene"},
        "plan writes nothing; the tables come from the scene"},
       {"energy", kCmdEnergy, "brdfbake energy [options]",
        "does a whole material conserve energy? the worst total albedo over (mu, r, parameter)",
        "Exit 0 if the material conserves energy, 1 if it does not; writes no tables. With -o DIR, also\n"
        "a page with the worst points and each pair's white furnace render in DIR/energy.",
-       {"brdfbake energy --fresnel conductor --eta 0.2 --k 3 --diffuse burley",
+       {"brdfbake energy --fresnel dielectric --eta 1.5 --diffuse lambert --coupling albedo-scaling",
         "brdfbake energy --transmission --fresnel dielectric --eta 1.5"},
        "energy writes no tables: its page goes to -o DIR"},
       {"verify", kCmdVerify, "brdfbake verify [options]",
@@ -88,7 +88,7 @@ std::vector<CommandInfo> makeCommands() {
       {"sample", kCmdSample, "brdfbake sample FILE.exr --at A,B,C",
        "a brdf3d table's trilinear lookup next to the exact BRDF at a point, in degrees",
        "A,B,C: (theta_i, theta_o, phi) or (theta_h, theta_d, phi_d), as the table's --param.",
-       {"brdfbake sample out/brdf3d_ggx_smith-correlated.exr --at 30,45,90"}, "sample takes FILE --at A,B,C"},
+       {"brdfbake sample out/brdf3d_ggx_smith-correlated_angles.exr --at 30,45,90"}, "sample takes FILE --at A,B,C"},
       {"render", kCmdRender, "brdfbake render [options]",
        "the white furnace through GL: spheres over roughness, a material per row, measured",
        "Bakes the tables into DIR/tables, shades every pixel on OpenGL ES 3.1 (EGL; llvmpipe without a GPU)\n"
@@ -116,6 +116,31 @@ std::vector<CommandInfo> makeCommands() {
   };
 }
 
+std::vector<OptionInfo> makeOptions();
+
+// The options, with the help of the commands where an option means or defaults to something else.
+std::vector<OptionInfo> makeOptionsWithOwnHelp() {
+  const unsigned E = kCmdEnergy, V = kCmdVerify, C = kCmdConvergence, P = kCmdPlan, SB = kCmdSceneBake;
+  std::vector<OptionInfo> v = makeOptions();
+  auto own = [&](const std::string& name, unsigned bits, const std::string& text) {
+    for (OptionInfo& o : v)
+      if (o.name == name && (o.commands & bits)) o.helpFor.push_back({bits, text});
+  };
+  own("--ndf", E, joinNames(ndfNames()) + " (default ggx): the material's specular NDF; repeat or comma-separate to check each");
+  own("--ndf", V, joinNames(ndfNames()) + " (default ggx); repeat or comma-separate: every NDF x GAF pair is checked");
+  own("--ndf", C, joinNames(ndfNames()) + " (default ggx): the pair whose table is measured");
+  own("--table", C, joinNames(tableNames()) + "\n(default albedo): the one kind whose methods are measured");
+  own("--size", E | V, "points per axis of the (mu, r) grid the check evaluates (default 33)");
+  own("--size", C, "points per axis of the measured grid (each kind has its own default and range; a size out of "
+                   "it is refused naming them)");
+  own("--output", E, "write the page with the worst points and the furnace renders to DIR/energy (no -o: no page)");
+  own("--output", V, "the page goes to DIR/verify (default out/verify)");
+  own("--output", C, "the page goes to DIR/convergence (default out/convergence)");
+  own("--output", P, "the directory whose files are compared with the plan (default: the scene's output.dir)");
+  own("--output", SB, "output directory (default: the scene's output.dir), created with its parents");
+  return v;
+}
+
 std::vector<OptionInfo> makeOptions() {
   const unsigned B = kCmdBake, E = kCmdEnergy, V = kCmdVerify, S = kCmdStress, C = kCmdConvergence;
   const unsigned P = kCmdPlan, SB = kCmdSceneBake;
@@ -136,7 +161,7 @@ std::vector<OptionInfo> makeOptions() {
        joinNames(tableNames()) + "\n(default: the first four; docs/commands.md describes each)", tableNames()},
       {"--size", "", "N", B | E | V | C, "Tables",
        "texels per axis, 1..8192 (default 128 for splitsum and ashikhmin-shirley, 32 otherwise); "
-       "brdf3d and dielectric: N or X,Y,Z, 1..1024; convergence: points per axis",
+       "brdf3d and dielectric: N or X,Y,Z, 1..1024",
        {}},
       {"--grid", "", "G", B, "Tables", "texel-center (default: value at (i+0.5)/n) or node (at i/(n-1), n >= 2)",
        {"texel-center", "node"}},
@@ -208,7 +233,7 @@ std::vector<OptionInfo> makeOptions() {
        "the first OpenCL device whose name or platform contains TEXT (default: the first CPU device, e.g. PoCL)", {}},
       {"--cache-dir", "", "DIR", kDeviceCommands, "Device", "PoCL's kernel cache (default: $POCL_CACHE_DIR, else ~/.cache/pocl)", {}},
       {"--prepare", "", "DIR", kCmdDevices, "Device",
-       "build the default set's programs and store their binaries in DIR (cl/program_cache.h)", {}},
+       "build the default set's programs and store their binaries in DIR (docs/performance.md)", {}},
       // render
       {"--cell", "", "PX", kCmdRender, "Render", "pixels per sphere's square, 16..256 (default 48)", {}},
       {"--columns", "", "N", kCmdRender, "Render", "roughness steps from 0 to 1, 2..33 (default 11)", {}},
@@ -232,7 +257,7 @@ const std::vector<CommandInfo>& commandInfos() {
 }
 
 const std::vector<OptionInfo>& optionInfos() {
-  static const std::vector<OptionInfo> o = makeOptions();
+  static const std::vector<OptionInfo> o = makeOptionsWithOwnHelp();
   return o;
 }
 

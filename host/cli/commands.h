@@ -44,6 +44,15 @@ struct OptionInfo {
   std::string group;                // heading in --help
   std::string help;                 // lines after the first are indented under it
   std::vector<std::string> values;  // the accepted names, for completion (empty: free text)
+  // the help for some commands where theirs differs (their CommandBit set, the text): a default or
+  // a meaning of their own
+  std::vector<std::pair<unsigned, std::string>> helpFor = {};
+  // the help this option shows under command `bit`
+  const std::string& helpOf(unsigned bit) const {
+    for (const auto& [bits, text] : helpFor)
+      if (bits & bit) return text;
+    return help;
+  }
 };
 
 const std::vector<CommandInfo>& commandInfos();
@@ -57,6 +66,9 @@ const OptionInfo* findOption(const std::string& opt);
 std::string overviewHelp();
 // `brdfbake COMMAND --help`: its synopsis, what it does, only its options, examples.
 std::string commandHelp(const std::string& name);
+// Every command's help as Markdown, from the same tables: the reference part of docs/commands.md
+// (`brdfbake help --markdown`; tests/cli_help_test.cpp fails when the page differs).
+std::string markdownHelp();
 // `brdfbake completion bash`: a bash completion script for commands, options and names.
 std::string bashCompletion();
 
