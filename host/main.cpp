@@ -61,7 +61,7 @@ int runCommand(Command& cmd) {
         return runScenePlan(cmd.scene);
       case Command::Kind::SceneBake: {
         if (!cmd.scene.cacheDir.empty()) usePoclCache(cmd.scene.cacheDir);
-        std::shared_ptr<ConsoleObserver> console = consoleObserver(cmd.timings, cmd.quiet);
+        std::shared_ptr<ConsoleObserver> console = consoleObserver(cmd.timings, cmd.quiet, cmd.progress);
         cmd.scene.observer = console;
         const int code = runSceneBake(cmd.scene);
         if (console) console->finish();
@@ -122,7 +122,7 @@ int runCommand(Command& cmd) {
         return runRender(cmd.render);
       case Command::Kind::Bake: {
         if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
-        std::shared_ptr<ConsoleObserver> console = consoleObserver(cmd.timings, cmd.quiet);
+        std::shared_ptr<ConsoleObserver> console = consoleObserver(cmd.timings, cmd.quiet, cmd.progress);
         cmd.bake.observer = console;
         const std::string report = formatReport(bakeToDirectory(cmd.bake));
         if (console) console->finish();

@@ -244,4 +244,17 @@ TEST(FirstRun, ProgressLineOnATerminalOnly) {
   EXPECT_EQ(r.out.find("texels"), std::string::npos) << r.out;
   EXPECT_EQ(bytes(d / "tty/splitsum_ggx_smith-correlated.exr"), bytes(d / "pipe/splitsum_ggx_smith-correlated.exr"))
       << "the banded launches compute other bits";
+  // --progress: into the pipe too, as whole lines without escapes
+  r = run("bake --table splitsum --size 1536 --progress -o forced", d.string(), "POCL_CACHE_DIR='" + cache + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(r.out.find("\x1b["), std::string::npos) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"((^|\n)brdfbake: forced/splitsum_ggx_smith-correlated\.exr: +[0-9]+% \([0-9]+ of 2359296 texels\))")))
+      << r.out;
+  // a measured material's tables report through the same observer: nothing into a pipe (its rules
+  // had printed a line a second whatever stderr was)
+  ASSERT_EQ(run("bake --table brdf3d --format merl -o merl", d.string(), "POCL_CACHE_DIR='" + cache + "'").code, 0);
+  r = run("bake --brdf merl:merl/brdf3d_ggx_smith-correlated.binary --table albedo --size 8 -o measured", d.string(),
+          "POCL_CACHE_DIR='" + cache + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(r.out.find("texels"), std::string::npos) << r.out;
 }

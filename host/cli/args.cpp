@@ -245,6 +245,8 @@ Command parseArgsUnchecked(const std::vector<std::string>& rawArgs) {
     } else if (opt == "--no-wait") {
       once(opt, opt);
       req.noWait = true;
+    } else if (opt == "--progress") {
+      cmd.progress = true;
     } else if (opt == "--timings" || opt == "--quiet") {
       once(opt, opt);
       (opt == "--timings" ? cmd.timings : cmd.quiet) = true;

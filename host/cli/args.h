@@ -23,6 +23,7 @@ struct Command {
   std::string helpFor;             // Help: the command whose help to print ("" = the overview)
   bool timings = false;            // Bake, SceneBake: --timings (each stage's seconds on stderr)
   bool quiet = false;              // Bake, SceneBake: --quiet (no progress line)
+  bool progress = false;           // Bake, SceneBake: --progress (progress lines also into a file or pipe)
   bool outputGiven = false;        // -o DIR given (energy writes its page only then)
 };
 

@@ -187,6 +187,8 @@ std::vector<OptionInfo> makeOptions() {
        "print each stage's seconds on stderr: device set-up, each program (loaded or compiled), each table, writing", {}},
       {"--quiet", "", "", B | SB, "Output",
        "no progress line (drawn on stderr for a table that runs over a second, when stderr is a terminal)", {}},
+      {"--progress", "", "", B | SB, "Output",
+       "progress also when stderr is a file or a pipe: whole lines, one every 2 s at most (a build log)", {}},
       {"--layout", "", "NAME", B, "Engine layout",
        "--table splitsum arranged as an engine samples it (axes, flips, channels, format, precision, "
        "size, grid): " + joinNames(layoutNames()) + "\n(unity-hdrp-sqrt: x = sqrt(NdotV), node grid; docs/layouts.md)",

@@ -7,8 +7,8 @@
 
 namespace brdfbake {
 
-ConsoleObserver::ConsoleObserver(bool timings, bool progress)
-    : timings_(timings), progress_(progress), start_(std::chrono::steady_clock::now()) {
+ConsoleObserver::ConsoleObserver(bool timings, bool progress, bool lines)
+    : timings_(timings), progress_(progress), lines_(lines), start_(std::chrono::steady_clock::now()) {
   if (timings_) std::fprintf(stderr, "timings (wall seconds):\n");
 }
 
@@ -39,6 +39,13 @@ void ConsoleObserver::progress(const std::string& what, const std::string& unit,
   char line[512];
   std::snprintf(line, sizeof line, "%s: %3.0f%% (%.0f of %.0f %s), %.1f s, about %.0f s left", what.c_str(),
                 100 * done / total, done, total, unit.c_str(), seconds, left + 0.5);
+  if (lines_) {
+    const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (now - lastLine_ < 2) return;
+    lastLine_ = now;
+    std::fprintf(stderr, "brdfbake: %s\n", line);
+    return;
+  }
   std::fprintf(stderr, "\r\033[K%s", line);
   std::fflush(stderr);
   lineShown_ = true;
@@ -51,10 +58,11 @@ void ConsoleObserver::finish() {
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
 }
 
-std::shared_ptr<ConsoleObserver> consoleObserver(bool timings, bool quiet) {
-  const bool progress = !quiet && ::isatty(STDERR_FILENO);
+std::shared_ptr<ConsoleObserver> consoleObserver(bool timings, bool quiet, bool forceProgress) {
+  const bool terminal = ::isatty(STDERR_FILENO);
+  const bool progress = (!quiet && terminal) || forceProgress;
   if (!timings && !progress) return nullptr;
-  return std::make_shared<ConsoleObserver>(timings, progress);
+  return std::make_shared<ConsoleObserver>(timings, progress, progress && !terminal);
 }
 
 }  // namespace brdfbake

@@ -47,6 +47,8 @@ bool parseSceneCommand(const std::vector<std::string>& args, Command& cmd) {
       o.list = true;
     } else if (opt == "--no-wait") {
       o.noWait = true;
+    } else if (opt == "--progress") {
+      cmd.progress = true;
     } else if (opt == "--timings" || opt == "--quiet") {
       (opt == "--timings" ? cmd.timings : cmd.quiet) = true;
     } else if (opt == "--force") {

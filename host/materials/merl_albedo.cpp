@@ -220,22 +220,22 @@ std::string merlChannels(TableKind kind) {
                "colour included; shade with prefiltered radiance times E(mu))";
 }
 
-TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind, int width, bool nodeGrid, bool half) {
+TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind, int width, bool nodeGrid, bool half,
+                     const ProgressFn& progress) {
   if (kind != TableKind::Albedo && kind != TableKind::SplitSum && kind != TableKind::AlbedoAvg)
     throw Error(kExitUsage, "--brdf merl: --table " + tableName(kind) + " has no measured form");
   RusinkiewiczFn f = merlFunction(d);
   TableImage img;
   img.channels = {"R", "G", "B"};
   std::vector<AlbedoEstimate> est;
-  const std::string what = "merl:" + name + " " + tableName(kind);
   if (kind == TableKind::AlbedoAvg) {
     img.width = img.height = 1;
-    est = {directAlbedoAvg(f, 0, what)};
+    est = {directAlbedoAvg(f, 0, progress)};
   } else {
     img.width = width;
     img.height = 1;
     est.resize(width);
-    parallelFor(width, 0, what, [&](int i) {
+    parallelFor(width, 0, progress, [&](int i) {
       double mu = nodeGrid ? (width > 1 ? i / (width - 1.0) : 0.0) : (i + 0.5) / width;
       est[i] = hSpaceAlbedo(f, mu);
     });

@@ -24,6 +24,8 @@ namespace brdfbake {
 
 // f at (theta_h, theta_d, phi_d) for R, G, B; false where it has no value (f is then 0 there).
 using RusinkiewiczFn = std::function<bool(double thetaH, double thetaD, double phiD, double f[3])>;
+// Progress of a long computation: done of total units, seconds since it started.
+using ProgressFn = std::function<void(double done, double total, double seconds)>;
 RusinkiewiczFn merlFunction(const MerlData& d, bool nearestBin = false);  // trilinear, or MERL's lookup
 RusinkiewiczFn analyticFunction(const Brdf3dSpec& s);                      // hostBrdf (for checks)
 
@@ -64,7 +66,7 @@ inline constexpr std::array<int, 7> kMerlAvgLadder{2, 3, 4, 5, 6, 7, 8};
 // storage rounding it is added to (else a value that happens to round almost exactly makes the
 // claim many times its error): an eighth of merlTexelTarget, 1e-10 below that.
 inline double merlAvgTarget(const std::array<double, 3>& e) { return std::max(1e-10, std::ldexp(merlLargest(e), -28)); }
-AlbedoEstimate directAlbedoAvg(const RusinkiewiczFn& f, int threads = 0, const std::string& progress = "");
+AlbedoEstimate directAlbedoAvg(const RusinkiewiczFn& f, int threads = 0, const ProgressFn& progress = {});
 // One rule of directAlbedoAvg's, n nodes per bin and piece (n <= 31), for checks above its ladder.
 std::array<double, 3> directAlbedoAvgRule(const RusinkiewiczFn& f, int n, int threads = 0);
 
@@ -77,6 +79,7 @@ std::array<double, 3> directAlbedoAvgRule(const RusinkiewiczFn& f, int n, int th
 // a table takes more than two seconds.
 // brdf.channels of a measured material's albedo or splitsum table (the same values, two uses).
 std::string merlChannels(TableKind kind);
-TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind, int width, bool nodeGrid, bool half);
+TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind, int width, bool nodeGrid, bool half,
+                     const ProgressFn& progress = {});
 
 }  // namespace brdfbake

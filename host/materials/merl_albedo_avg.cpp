@@ -36,7 +36,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 // One rule: n nodes per theta_h bin, theta_d piece and phi_d piece; per channel, and the weight
 // where f had no value (*lost, of a total pi).
-std::array<double, 3> directRule(const RusinkiewiczFn& f, int n, int threads, const std::string& progress,
+std::array<double, 3> directRule(const RusinkiewiczFn& f, int n, int threads, const ProgressFn& progress,
                                  double* lost) {
   const merl_detail::Gauss& g = merl_detail::gaussCached(n);
   const int jobs = kMerlThetaH * n;
@@ -101,16 +101,16 @@ std::array<double, 3> directRule(const RusinkiewiczFn& f, int n, int threads, co
 }  // namespace
 
 std::array<double, 3> directAlbedoAvgRule(const RusinkiewiczFn& f, int n, int threads) {
-  return directRule(f, n, threads, "", nullptr);
+  return directRule(f, n, threads, {}, nullptr);
 }
 
 // The rules converge fast here (on four test materials the n = 4 rule is within 1.6e-9 of n = 8;
 // docs/merl.md, "E_avg over the table's coordinates"), but not geometrically everywhere (the horizon still crosses edges), so
 // the estimate is the ladder's, as for the texels: max(|Q_n - Q_n-1|, |Q_n - Q_n-2|) from n = 4,
 // climbing while any channel's is above merlAvgTarget.
-AlbedoEstimate directAlbedoAvg(const RusinkiewiczFn& f, int threads, const std::string& progress) {
+AlbedoEstimate directAlbedoAvg(const RusinkiewiczFn& f, int threads, const ProgressFn& progress) {
   return merl_detail::climbLadder(kMerlAvgLadder, merlAvgTarget, [&](int n, double* lost) {
-    return directRule(f, n, threads, progress.empty() ? progress : progress + " (rule n = " + std::to_string(n) + ")", lost);
+    return directRule(f, n, threads, progress, lost);
   });
 }
 

@@ -22,9 +22,11 @@ struct Gauss {
 // n nodes (n <= 31), computed once.
 const Gauss& gaussCached(int n);
 
-// Runs job(k) for k in [0, n) on `threads` workers; progress lines on stderr after two seconds.
+// Runs job(k) for k in [0, n) on `threads` workers, reporting (done, n, seconds) to `progress`
+// (when given) at most every 0.2 s and at the end: the caller's observer decides where it shows
+// (a terminal's progress line, or nothing in a log).
 template <class Job>
-void parallelFor(int n, int threads, const std::string& what, const Job& job) {
+void parallelFor(int n, int threads, const ProgressFn& progress, const Job& job) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads = std::max(1, std::min(threads, n));
   std::atomic<int> next{0}, done{0};
@@ -36,10 +38,10 @@ void parallelFor(int n, int threads, const std::string& what, const Job& job) {
       job(k);
       int d = ++done;
       double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (!what.empty() && t > 2) {
+      if (progress) {
         std::lock_guard<std::mutex> lock(printLock);
-        if (t - lastPrint >= 1 || d == n) {
-          std::fprintf(stderr, "brdfbake: %s: %d/%d (%.0f s)\n", what.c_str(), d, n, t);
+        if (t - lastPrint >= 0.2 || d == n) {
+          progress(d, n, t);
           lastPrint = t;
         }
       }

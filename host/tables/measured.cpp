@@ -62,7 +62,13 @@ class Measured final : public TableFamily {
       t.image.strings["brdf.table"] = tableName(job.kind);
       t.image.strings["brdf.channels"] = merlChannels(job.kind);
     } else {
-      t.image = merlTable(data(ctx, job.merl), merlMaterialName(job.merl), job.kind, job.width, job.nodeGrid, job.half);
+      // progress through the request's observer: a terminal's line, or nothing in a log
+      BakeObserver* obs = ctx.observer();
+      const std::string what = "merl:" + merlMaterialName(job.merl) + " " + tableName(job.kind);
+      ProgressFn progress;
+      if (obs)
+        progress = [obs, what](double done, double total, double seconds) { obs->progress(what, "texels", done, total, seconds); };
+      t.image = merlTable(data(ctx, job.merl), merlMaterialName(job.merl), job.kind, job.width, job.nodeGrid, job.half, progress);
       ctx.cache[key] = std::make_shared<TableImage>(t.image);
     }
     t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
