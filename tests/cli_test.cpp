@@ -360,7 +360,7 @@ TEST(CliMaterials, FresnelTablesRecordTheModelAndRgbParameters) {
   CmdResult r = run("--fresnel conductor --eta 0.18,0.42,1.37 --k 3.42,2.35,1.77 --size 8 -o " + (d / "o").string());
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(countFiles(d / "o"), 2u) << "albedo and albedo-avg only: kp has no Fresnel";
-  brdfbake::TableImage t = brdfbake::readTableExr((d / "o/albedo_ggx_smith-correlated_conductor.exr").string());
+  brdfbake::TableImage t = brdfbake::readTableExr((d / "o/albedo_ggx_smith-correlated_conductor-eta0.18_0.42_1.37-k3.42_2.35_1.77.exr").string());
   EXPECT_EQ(t.strings["brdf.fresnel"], "conductor");
   EXPECT_EQ(t.strings["brdf.fresnel.eta"], "0.18,0.42,1.37");
   EXPECT_EQ(t.strings["brdf.fresnel.k"], "3.42,2.35,1.77");

@@ -1,6 +1,8 @@
 // The microfacet family (tables/microfacet.h): split sum, albedo, albedo-avg, k_p.
 #include "tables/microfacet.h"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -30,18 +32,43 @@ bool asks(const BakeRequest& req, TableKind k) { return std::find(req.tables.beg
 
 }  // namespace
 
+// "-eta1.5", "-eta0.2_0.92_1.1-k3.9_2.45_2.14", "-f00.04-f820.8": the values in effect (defaults
+// included), per channel, nine significant digits.
+std::string fresnelNameParameters(const FresnelChoice& f) {
+  const int m = f.model;
+  const bool twoParams = m == FRESNEL_CONDUCTOR || m == FRESNEL_F82_TINT;
+  const char* first = m == FRESNEL_SCHLICK || m == FRESNEL_F82_TINT ? "f0" : "eta";
+  const char* second = m == FRESNEL_CONDUCTOR ? "k" : "f82";
+  std::string xs, ys;
+  for (int c = 0; c < f.channels(); ++c) {
+    auto [x, y] = f.modelParams(c);
+    char b[64];
+    std::snprintf(b, sizeof b, "%s%.9g", c ? "_" : "", x);
+    xs += b;
+    std::snprintf(b, sizeof b, "%s%.9g", c ? "_" : "", y);
+    ys += b;
+  }
+  return std::string("-") + first + xs + (twoParams ? std::string("-") + second + ys : std::string());
+}
+
 std::string microfacetFileName(const TableJob& job) {
   const std::string& t = tableName(job.kind);
   if (job.kind == TableKind::Albedo && job.diffuse >= 0) return t + "_" + diffuseNames()[job.diffuse] + ".exr";
   if (job.kind == TableKind::SplitSum && job.diffuse >= 0)
     return t + "_" + ndfNames()[job.ndf] + "_" + gafNames()[job.gaf] + "_" + diffuseNames()[job.diffuse] + ".exr";
   if (job.kind == TableKind::Kp) return t + "_" + ndfNames()[job.ndf] + ".exr";
-  // a Fresnel other than the table's own default (F = 1; splitsum: Schlick's split) is named
-  bool plain = job.fresnel.isOne() || (job.kind == TableKind::SplitSum && job.fresnel.model == FRESNEL_SCHLICK);
+  // a Fresnel other than the table's own default (F = 1; splitsum: Schlick's split) is named, with
+  // the parameter values the table depends on (the split sum's F82 channel depends on none): two
+  // bakes of other etas into one directory never replace each other
+  const bool plain = job.fresnel.isOne() || (job.kind == TableKind::SplitSum && job.fresnel.model == FRESNEL_SCHLICK);
+  std::string fresnel;
+  if (!plain) {
+    fresnel = "_" + fresnelNames()[job.fresnel.model];
+    if (job.kind != TableKind::SplitSum) fresnel += fresnelNameParameters(job.fresnel);
+  }
   // an engine's layout is its own file: two presets in one directory never replace each other
-  return t + "_" + ndfNames()[job.ndf] + "_" + gafNames()[job.gaf] +
-         (plain ? "" : "_" + fresnelNames()[job.fresnel.model]) + (job.layoutName.empty() ? "" : "_" + job.layoutName) +
-         ".exr";
+  return t + "_" + ndfNames()[job.ndf] + "_" + gafNames()[job.gaf] + fresnel +
+         (job.layoutName.empty() ? "" : "_" + job.layoutName) + ".exr";
 }
 
 TableImage computeTable(KernelRunner& runner, const TableJob& job, double* seconds, std::vector<double>* texelBounds) {
