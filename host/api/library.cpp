@@ -1,5 +1,8 @@
 // The library's entry points (brdfbake/brdfbake.h): a request -> the plan -> each job's family
 // computes it in memory; write() hands the tables back to their families for their files.
+#include <algorithm>
+#include <typeinfo>
+
 #include "brdfbake/brdfbake.h"
 
 #include <chrono>
@@ -38,6 +41,16 @@ Table toTable(const Job& job, BakedTable baked) {
   for (const auto& [k, v] : img.floats) t.metadata[k] = fmtG9(v);
   for (const auto& [k, v] : img.v2f) t.metadata[k] = fmtG9(v.first) + "," + fmtG9(v.second);
   if (img.floats.count("brdf.error")) t.errorBound = img.floats.at("brdf.error");
+  // a 2D table's files claim their format's and precision's storage rounding too (a float16 file
+  // 2.45e-4 where the values' bound is 6.71e-7): errorBound is what write() will claim, the largest
+  // over the request's formats, planned as write() plans them
+  if (baked.volume.empty() && job.spec.type() == typeid(TableJob)) {
+    FileSet scratch;
+    BakedTable copy = baked;
+    job.family->addBakedFiles(job, copy, scratch);
+    for (const TableReport& r : scratch.reports) t.errorBound = std::max(t.errorBound, r.errorBound);
+    t.metadata["brdf.error"] = fmtG9(t.errorBound);
+  }
   t.internal = std::make_shared<Internal>(Internal{job, std::move(baked)});
   return t;
 }
