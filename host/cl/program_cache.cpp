@@ -170,15 +170,23 @@ std::vector<std::string> programCacheDirs() {
     return dirs;
   }
   // next to an installed executable (a relocated install), then where this build and its install put them
+  // (the build's own directory only for an executable of the build tree: an installed brdfbake
+  // had listed the build tree it came from)
   char exe[4096];
   ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
+  const std::string buildDir = BRDFBAKE_PROGRAMS_BUILD_DIR;
+  const std::string buildRoot = buildDir.substr(0, buildDir.find_last_of('/') == std::string::npos ? 0 : buildDir.find_last_of('/'));
+  bool inBuild = n <= 0;
   if (n > 0) {
     std::string path(exe, static_cast<size_t>(n));
     std::string dir = path.substr(0, path.find_last_of('/'));
     add(dir + "/programs");
     add(dir + "/../share/brdfbake/programs");
+    // brdfbake in the build directory, or a test in a directory of its own there
+    const std::string up = dir.substr(0, dir.find_last_of('/'));
+    inBuild = !buildRoot.empty() && (dir == buildRoot || up == buildRoot);
   }
-  add(BRDFBAKE_PROGRAMS_BUILD_DIR);
+  if (inBuild) add(buildDir);
   add(BRDFBAKE_PROGRAMS_INSTALL_DIR);
   return dirs;
 }
