@@ -163,3 +163,50 @@ TEST(Docs, EveryHelpExampleRuns) {
   }
   EXPECT_GE(ran, 15);
 }
+
+// docs/library.md shows examples/library/bake_lut.cpp as it is (from its first #include): the page's
+// code is the example the consumer test builds and runs.
+TEST(Docs, LibraryPageShowsTheExample) {
+  const std::string page = bytes(fs::path(BRDFBAKE_SOURCE_DIR) / "docs/library.md");
+  const std::string file = bytes(fs::path(BRDFBAKE_SOURCE_DIR) / "examples/library/bake_lut.cpp");
+  const size_t open = page.find("```cpp\n");
+  ASSERT_NE(open, std::string::npos);
+  const size_t start = open + 7, end = page.find("```\n", start);
+  EXPECT_EQ(page.substr(start, end - start), file.substr(file.find("#include")))
+      << "docs/library.md's code differs from examples/library/bake_lut.cpp";
+}
+
+// Every `$ brdfbake ARGS` a page in docs/ shows runs, from a directory holding what it names, and
+// prints the line shown under it first (a line ending in "..." is a prefix): the figures a page
+// quotes from a command are the command's.
+TEST(Docs, ShownCommandsPrintWhatThePagesShow) {
+  const fs::path d = freshDir("readme", "shown");
+  fs::create_directory_symlink(fs::path(BRDFBAKE_SOURCE_DIR) / "examples", d / "examples");
+  ASSERT_EQ(run("", d.string()).code, 0);
+  ASSERT_EQ(run("bake --table brdf3d -o out", d.string()).code, 0);
+  int shown = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(BRDFBAKE_SOURCE_DIR) / "docs")) {
+    if (e.path().extension() != ".md") continue;
+    std::istringstream in(bytes(e.path()));
+    std::vector<std::string> lines;
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+    for (size_t i = 0; i + 1 < lines.size(); ++i) {
+      if (lines[i].rfind("$ brdfbake ", 0) != 0) continue;
+      ++shown;
+      const std::string args = lines[i].substr(11), want = lines[i + 1];
+      // what the page shows: standard output, or the error line when there is none
+      const std::string cmd = "cd '" + d.string() + "' && '" BRDFBAKE_EXE "' " + args + " 2>stderr.txt";
+      FILE* p = popen(cmd.c_str(), "r");
+      std::string out;
+      char buf[4096];
+      for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+      pclose(p);
+      const std::string got = firstLine(out.empty() ? bytes(d / "stderr.txt") : out);
+      if (want.size() > 3 && want.compare(want.size() - 3, 3, "...") == 0)
+        EXPECT_EQ(got.substr(0, want.size() - 3), want.substr(0, want.size() - 3)) << e.path().filename() << ": " << lines[i];
+      else
+        EXPECT_EQ(got, want) << e.path().filename() << ": " << lines[i];
+    }
+  }
+  EXPECT_GE(shown, 8);
+}
