@@ -237,6 +237,7 @@ TEST(Cli, DiskFullMidBakeLeavesEarlierOutputsUntouched) {
                                "list > '" << rep << ".after'\n"
                                "'" << exe << "' --table kp,albedo,splitsum -o '" << disk << "/new/sub'; echo $? > '" << rep << ".rc2'\n"
                                "test -e '" << disk << "/new' && echo left > '" << rep << ".new'\n"
+                               "'" << exe << "' --table brdf3d -o '" << disk << "/vol'; echo $? > '" << rep << ".rc3'\n"
                                "exit 0\n";
   CmdResult r{0, ""};
   {
@@ -250,6 +251,9 @@ TEST(Cli, DiskFullMidBakeLeavesEarlierOutputsUntouched) {
   }
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(bytes(rep + ".rc"), "74\n") << r.out;
+  // a 3D table short of space: the same code as the 2D tables'
+  EXPECT_EQ(bytes(rep + ".rc3"), "74\n") << r.out;
+  EXPECT_NE(r.out.find("not enough space for the brdf3d table(s) in " + disk + "/vol"), std::string::npos) << r.out;
   // refused before the first temporary: the set's bound (raw texels plus 64 KiB a file) exceeds the free space
   EXPECT_NE(r.out.find("-o " + disk + "/out: not enough space: the 3 file(s) may need up to"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("nothing was written"), std::string::npos) << r.out;

@@ -129,7 +129,7 @@ void checkVolumeSpace(const std::string& dir, const std::vector<VolumeJob>& volu
     std::snprintf(msg, sizeof msg, "not enough space for the brdf3d table(s) in %s: they may need up to %.1f MB, %.1f MB free "
                                    "on %s; choose a smaller --size, --half, or another -o",
                   dir.c_str(), need / 1e6, free / 1e6, cur.c_str());
-    throw Error(kExitCantCreat, msg);
+    throw Error(kExitIoErr, msg);  // short of space: 74, as for the 2D tables (formats/output_set.cpp)
   }
 }
 
