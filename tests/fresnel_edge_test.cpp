@@ -91,7 +91,8 @@ struct Worst {
 };
 
 // Bakes one table and checks its corner texels; returns the worst ratios.
-Worst checkTable(int ndf, int gaf, const Edge& e, int n) {
+// strictReference: the rule in double must be sharp at every texel (ggx + smith-correlated's corner).
+Worst checkTable(int ndf, int gaf, const Edge& e, int n, bool strictReference = true) {
   KernelTable t = runner().hemisphere(ndf, gaf, n, n, false, weightOf(e));
   std::vector<std::pair<int, int>> texels;
   for (int j : cornerIndices(n))
@@ -117,13 +118,20 @@ Worst checkTable(int ndf, int gaf, const Edge& e, int n) {
     double got = t.planes[1][k];
     double scale = 0;
     for (int p = 0; p < 3; ++p) scale = std::max(scale, std::fabs(static_cast<double>(t.planes[p][k])));
-    double claim = t.err[k] + floatArithmeticError(scale);
+    // the bake's claim (host/tables/microfacet.cpp): the estimate, the Fresnel-weighted float model
+    // and the float term next to a kink
+    double claim = t.err[k] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf, true)) +
+                   fresnelKinkFloat(e.model, e.x, mu, r);
     double err = rel(got, want);
     EXPECT_TRUE(std::isfinite(got)) << e.name << " n=" << n << " mu=" << mu << " r=" << r;
-    EXPECT_LT(est, 0.05 * claim) << e.name << ": the double rule's own estimate must be far below the claim";
-    EXPECT_LE(err, claim) << e.name << " n=" << n << " mu=" << mu << " r=" << r << " device " << got << " double "
-                          << want;
-    EXPECT_LE(claim, 4 * std::max(err, floor)) << e.name << " n=" << n << " mu=" << mu << " r=" << r;
+    // Where the rule in double is itself uncertain by more than a twentieth of the claim (its
+    // estimate: blinn-phong, the gaussian and their -exact GAFs at grazing texels), the device is
+    // held to claim + that estimate, and the claim's tightness is not judged against it.
+    const bool sharp = est < 0.05 * claim;
+    if (strictReference) EXPECT_TRUE(sharp) << e.name << ": the double rule's own estimate " << est << " must be far below the claim " << claim;
+    EXPECT_LE(err, claim + (sharp ? 0.0 : est)) << e.name << " n=" << n << " mu=" << mu << " r=" << r << " device " << got
+                                                 << " double " << want;
+    if (sharp) EXPECT_LE(claim, 4 * std::max(err, floor)) << e.name << " n=" << n << " mu=" << mu << " r=" << r;
     w.ratio = std::max(w.ratio, err / claim);
     w.claimOver = std::max(w.claimOver, claim / std::max(err, floor));
   }
@@ -159,7 +167,8 @@ TEST(FresnelEdge, StiffCornerMatchesReference) {
       size_t k = static_cast<size_t>(j) * n + i;
       double scale = 0;
       for (int p = 0; p < 3; ++p) scale = std::max(scale, std::fabs(static_cast<double>(t.planes[p][k])));
-      EXPECT_LE(rel(t.planes[1][k], want), t.err[k] + floatArithmeticError(scale))
+      EXPECT_LE(rel(t.planes[1][k], want), t.err[k] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf, true)) +
+                                               fresnelKinkFloat(e.model, e.x, mu, r))
           << e.name << " mu=" << mu << " r=" << r << " device " << t.planes[1][k] << " reference " << want;
     }
   }
@@ -175,7 +184,7 @@ TEST(FresnelEdge, DISABLED_EveryPairEverySize) {
       if (!pairSupported(ndf, gaf)) continue;
       for (const Edge& e : edges())
         for (int n : {32, 64, 128}) {
-          Worst w = checkTable(ndf, gaf, e, n);
+          Worst w = checkTable(ndf, gaf, e, n, false);
           std::printf("%s+%s %-30s %3d^2: largest error/claim %.2f, claim/max(error, floor) %.2f\n",
                       ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), e.name.c_str(), n, w.ratio, w.claimOver);
         }

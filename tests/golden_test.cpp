@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "common/hash.h"
 #include "cli_run.h"
 #include "version.h"
 
@@ -33,14 +34,6 @@ using brdfbake::testing_cli::run;
 
 namespace {
 
-// FNV-1a, 64 bits: a change detector (nothing here is adversarial).
-uint64_t fnv1a(const std::string& s, uint64_t h = 1469598103934665603ull) {
-  for (unsigned char c : s) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
 
 std::string normalised(std::string b) {
   const std::string rev = BRDFBAKE_GIT_REV;
@@ -133,7 +126,7 @@ void checkCase(const std::string& name, const std::vector<std::string>& commands
     if (skip.count(rel)) continue;
     std::string b = normalised(bytes(e.path()));
     if (e.path().extension() == ".png") b = withoutPngCrcs(b);
-    got[rel] = {hex(fnv1a(b)), static_cast<size_t>(e.file_size())};
+    got[rel] = {hex(brdfbake::fnv1a(b)), static_cast<size_t>(e.file_size())};
   }
   ASSERT_FALSE(got.empty()) << name << ": the commands wrote nothing";
   const std::string device = deviceName();

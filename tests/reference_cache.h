@@ -13,6 +13,7 @@
 //     (under flock, so ctest may run the writers in parallel): after a change to host/reference,
 //     `BRDFBAKE_REFERENCE=write ctest -R "AvgRule|Fresnel|Sheen"` in build/.
 #pragma once
+#include "common/hash.h"
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/file.h>
@@ -129,11 +130,7 @@ inline Store& store() {
 }
 
 // FNV-1a of the key: which keys are recomputed each run, the same ones every time.
-inline uint64_t keyHash(const std::string& k) {
-  uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : k) h = (h ^ c) * 1099511628211ull;
-  return h;
-}
+inline uint64_t keyHash(const std::string& k) { return brdfbake::fnv1a(k); }
 
 // The reference's values for `key`: from the file, recomputed for one key in sixteen (and checked),
 // computed and a failure where the file lacks them. Thread-safe (compute runs unlocked).

@@ -14,6 +14,7 @@
 #include <cstring>
 
 #include "cl/programs.h"
+#include "common/hash.h"
 #include "formats/commit_record.h"
 
 #ifndef BRDFBAKE_PROGRAMS_BUILD_DIR
@@ -39,28 +40,22 @@ constexpr uint64_t kMaxEntry = 256ull << 20;
 // bijection of h, so a change in any one word always changes the result. On the default program's
 // 1 MB (binary and identity) FNV-1a byte by byte takes 1.2 ms of each bake's program load; this,
 // 0.09 ms.
-constexpr uint64_t kFnvBasis = 1469598103934665603ull, kFnvPrime = 1099511628211ull;
 uint64_t entryHash(const unsigned char* p, size_t n) {
-  uint64_t h[4] = {kFnvBasis, kFnvBasis ^ 1, kFnvBasis ^ 2, kFnvBasis ^ 3};
+  uint64_t h[4] = {kFnvSeed, kFnvSeed ^ 1, kFnvSeed ^ 2, kFnvSeed ^ 3};
   size_t i = 0;
   for (; i + 32 <= n; i += 32)
     for (int k = 0; k < 4; ++k) {
       uint64_t w;
       std::memcpy(&w, p + i + 8 * k, 8);  // the words as the machine reads them: a cache is per machine
-      h[k] = (h[k] ^ w) * kFnvPrime;
+      h[k] = fnvMix(h[k], w);
     }
-  uint64_t r = kFnvBasis;
-  for (; i < n; ++i) r = (r ^ p[i]) * kFnvPrime;
-  for (uint64_t v : h) r = (r ^ v) * kFnvPrime;
-  return (r ^ n) * kFnvPrime;
+  uint64_t r = fnv1a(p + i, n - i);
+  for (uint64_t v : h) r = fnvMix(r, v);
+  return fnvMix(r, n);
 }
 uint64_t entryHash(const std::string& s) { return entryHash(reinterpret_cast<const unsigned char*>(s.data()), s.size()); }
 
-std::string hex64(uint64_t v) {
-  char b[17];
-  std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(v));
-  return b;
-}
+std::string hex64(uint64_t v) { return hex16(v); }
 
 void putU64(std::string& out, uint64_t v) {
   for (int i = 0; i < 8; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));

@@ -27,6 +27,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/hash.h"
 #include "cl/programs.h"
 #include "common/models.h"
 
@@ -247,8 +248,8 @@ class KernelRunner {
   };
   struct PointHash {
     size_t operator()(const PointKey& k) const {
-      uint64_t h = 1469598103934665603ull ^ k.launch;
-      for (uint32_t b : k.bits) h = (h ^ b) * 1099511628211ull;
+      uint64_t h = kFnvSeed ^ k.launch;
+      for (uint32_t b : k.bits) h = fnvMix(h, b);
       return static_cast<size_t>(h ^ (h >> 29));
     }
   };

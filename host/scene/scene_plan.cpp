@@ -6,6 +6,7 @@
 #include <map>
 #include <numeric>
 
+#include "common/hash.h"
 #include "cl/embedded_kernels.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
@@ -16,21 +17,6 @@
 namespace brdfbake {
 
 namespace {
-
-// FNV-1a, 64 bits: a content hash for change detection (not for security).
-uint64_t fnv1a(const std::string& s, uint64_t h = 1469598103934665603ull) {
-  for (unsigned char c : s) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
-std::string hex16(uint64_t h) {
-  char b[17];
-  std::snprintf(b, sizeof b, "%016" PRIx64, h);
-  return b;
-}
 
 // The baker itself: its version and every kernel source it compiles (the models and estimators).
 uint64_t bakerHash() {

@@ -38,7 +38,9 @@ std::string hemisphereMethod() {
          "qk15 with C=" + fmtG(brdf64::kGkSharpC) + " on panels split at the GAF's kinks; trapezoid: |T16-T8|^3/|T8-T4|) + a floor of " +
          fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorRefined) + " at the refined budget) of the value + float arithmetic (K1 min(1,|value|) + K0) u (u = 2^-24; " +
          "(K1, K0) = " + model(kHemiFloatGgx) + " ggx, " + model(kHemiFloatBeckmann) + " beckmann, " +
-         model(kHemiFloatBlinnPhong) + " blinn-phong, " + model(kHemiFloat) + " gaussian and every Fresnel-weighted moment, " +
+         model(kHemiFloatBlinnPhong) + " blinn-phong, " + model(kHemiFloat) + " gaussian, " + model(kFresnelFloat) +
+         " every Fresnel-weighted moment, next to a total-internal-reflection kink plus u mu times F's slope over the "
+         "lobe's spread in o.h, " +
          model(kSheenFloatNone) + " charlie with none, " + model(kSheenFloatBounded) + " with neubelt and implicit, " +
          model(kCharlieSmithFloat) + " with charlie-smith) + storage rounding";
 }

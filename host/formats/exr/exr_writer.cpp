@@ -27,6 +27,7 @@
 #include <string>
 #include <thread>
 
+#include "common/hash.h"
 #include "common/errors.h"
 #include "formats/commit_record.h"
 #include "formats/exr/exr_internal.h"
@@ -140,12 +141,9 @@ void writeTableExr(const std::string& path, const TableImage& img, bool half) {
 }
 
 std::string texelsHash(const std::vector<std::vector<float>>& planes, bool half) {
-  uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a 64 (Fowler, Noll, Vo): offset basis, prime 2^40 + 435
+  uint64_t h = kFnvSeed;  // common/hash.h: the stored bits, little-endian, byte by byte
   auto eat = [&](uint32_t bits, int bytes) {
-    for (int k = 0; k < bytes; ++k) {
-      h ^= (bits >> (8 * k)) & 0xff;
-      h *= 0x100000001b3ull;
-    }
+    for (int k = 0; k < bytes; ++k) h = fnvMix(h, (bits >> (8 * k)) & 0xff);
   };
   for (const auto& p : planes)
     for (float v : p) {
@@ -157,9 +155,7 @@ std::string texelsHash(const std::vector<std::vector<float>>& planes, bool half)
         eat(bits, 4);
       }
     }
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
-  return hex;
+  return hex16(h);
 }
 
 void writeTableExrTemporary(const std::string& tmp, const std::string& path, const TableImage& img, bool half) {
