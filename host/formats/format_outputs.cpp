@@ -43,13 +43,7 @@ int binaryChannels(int channels) { return channels == 3 ? 4 : channels; }
 }  // namespace
 
 TableImage formatMetadata(const TableImage& src, FileFormat f, Precision p, double computeError, double storage, int channels) {
-  TableImage m;
-  m.width = src.width;
-  m.height = src.height;
-  m.channels = src.channels;
-  m.strings = src.strings;
-  m.v2f = src.v2f;
-  m.floats = src.floats;
+  TableImage m = headerOf(src);
   const int out = f == FileFormat::Ktx2 || f == FileFormat::Dds ? binaryChannels(channels) : channels;
   std::string desc = formatName(f);
   if (f == FileFormat::Ktx2) desc += " VK_FORMAT_" + componentName(out, p, true);

@@ -21,6 +21,18 @@ struct TableImage {
   std::map<std::string, float> floats;                 // float header attributes
 };
 
+// `img` without its texels: size, channels and attributes (a header to amend for a file).
+inline TableImage headerOf(const TableImage& img) {
+  TableImage h;
+  h.width = img.width;
+  h.height = img.height;
+  h.channels = img.channels;
+  h.strings = img.strings;
+  h.v2f = img.v2f;
+  h.floats = img.floats;
+  return h;
+}
+
 // The channels a table may have, in the order they must appear.
 inline constexpr const char* kTableChannels[] = {"R", "G", "B", "A"};
 // Position of `name` in kTableChannels, or -1 when it is not a table channel.

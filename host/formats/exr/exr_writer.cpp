@@ -169,12 +169,7 @@ void writeTableExrTemporary(const std::string& tmp, const std::string& path, con
   TableImage meta;
   const bool scene = img.strings.count("brdf.scene") > 0;
   if (scene) {
-    meta.width = img.width;
-    meta.height = img.height;
-    meta.channels = img.channels;
-    meta.strings = img.strings;
-    meta.v2f = img.v2f;
-    meta.floats = img.floats;
+    meta = headerOf(img);
     meta.strings[kTexelsHashAttribute] = texelsHash(img.planes, half);
   }
   writeTableExrRowsTemporary(tmp, path, scene ? meta : img, half, img.height,
