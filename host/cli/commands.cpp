@@ -92,8 +92,9 @@ std::vector<CommandInfo> makeCommands() {
       {"render", kCmdRender, "brdfbake render [options]",
        "the white furnace through GL: spheres over roughness, a material per row, measured",
        "Bakes the tables into DIR/tables, shades every pixel on OpenGL ES 3.1 (EGL; llvmpipe without a GPU)\n"
-       "with the generated lookup code, writes DIR/furnace.exr (linear) and DIR/furnace.png (sRGB), and\n"
-       "prints each row's largest deviation: exit 1 when a row that should conserve energy does not.\n"
+       "with the generated lookup code, writes DIR/furnace.exr (linear) and DIR/furnace.png (sRGB, labelled), and\n"
+       "prints each row's largest deviation from 1 or from the reference against a bound built from the texels each\n"
+       "pixel's lookup reads: exit 1 when a pixel is past its bound.\n"
        "DIR/lobe.exr, DIR/lobe.png: spheres under a directional light, single scattering above, the\n"
        "Kulla-Conty lobe added below.\n"
        "Rows: single, kulla-conty, single-table, dielectric-lambert, gold, sheen, glass (docs/reports.md);\n"
