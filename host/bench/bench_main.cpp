@@ -3,57 +3,7 @@
 // sampling, 1024 samples per texel, plain C++ on 2 threads), timed in the same run and both
 // measured against the host reference (adaptive Gauss-Kronrod in double).
 //
-// usage: brdfbake-bench [--size N] [--samples S] [--stride K] [--repeat R] [--device TEXT] [--times-only]
-//                       [--pair NDF+GAF]... [--all-pairs] [--albedo-avg] [--cold-start [--skip-all]] [--materials]
-//                       [--dielectric [--mc-log2 K]] [--dielectric-avg [--size N] [--pair NDF+GAF]]
-//                       [--merl FILE [--size N]] [--commit]
-//   --stride K: reference on every K-th texel per axis plus the first/last rows and columns
-//               (default 1: every texel; the reference takes a few seconds for all 16384).
-//   --times-only: skip the errors; times and ratio only.
-//   --pair NDF+GAF: time (and check) that pair's split sum instead of ggx + smith-correlated; the
-//               Karis MC baseline stays ggx + smith-correlated's (a time baseline, its errors
-//               are then not printed).
-//   --all-pairs [--pair NDF+GAF]...: no timing; every NDF/GAF pair's table (or the given ones;
-//               not charlie's, whose reference is tests/sheen_test.cpp's) against the reference
-//               (largest error, largest kernel bound, texels whose error exceeds their bound).
-//               ~26 minutes at --stride 8, most of it the exact-Smith references.
-//   --albedo-avg: the albedo-avg table (size 32, texel centres) timed against the 32x32 albedo
-//               table it averages, then every pair's albedo-avg against the reference: the
-//               largest bound over all 32 entries, the error at every --stride-th r (default 8)
-//               plus r = 3/64, 5/64, 63/64 and the node-grid r = 0, 1/2, 1. ~10 minutes.
-//   --cold-start [--skip-all]: what a user waits for: `brdfbake bake` of the default set and of
-//               every pair (56 pairs, 173 tables), run as processes in --repeat rounds, each with
-//               HOME a fresh empty directory: its first run (empty PoCL and program caches; the
-//               programs the build prepared are found), then a warm run; the best and the slowest
-//               of each, and a first run with nothing prepared; as ratios against the Karis MC
-//               baseline timed in this run and against the best warm run. --skip-all: the default
-//               set only. ~2 minutes on 2 cores (host/bench/cold_start_bench.cpp).
-//   --materials: 32x32 dielectric albedo (ggx + smith-correlated, eta 1.5 and 1/1.5) and diffuse
-//               albedo (burley, oren-nayar) tables, kernel vs an S-sample Monte Carlo estimator of
-//               the same quantity: times, errors against the reference (dielectric on every
-//               --stride-th texel, default 4, plus edges; diffuse on all), kernel bounds.
-//               host/bench/materials_bench.cpp. ~2 minutes.
-//   --bounds [--pair NDF+GAF]... [--csv FILE]: how tight the claimed bounds are: every table of the
-//               default set (split-sum --size, albedo, albedo-avg, k_p) of each pair (default:
-//               ggx+smith-correlated, beckmann+smith, ggx+schlick-ggx, blinn-phong+implicit,
-//               gaussian+smith-correlated-exact) baked as brdfbake bakes it, brdf.error and each
-//               texel's claim against the true error. host/bench/bounds_bench.cpp.
-//   --probe-span [--pair NDF+GAF]... [--size N]: the interpolation probe with its quarter-texel
-//               steps over six texels of mu against kProbeMuTexels (tables/interp_probe.h), on
-//               every pair's split sum (both mu axes) and 32^2 albedo. host/bench/probe_bench.cpp.
-//               ~1 minute.
-//   --dielectric [--mc-log2 K]: the 32^3 rough-dielectric table (ggx + smith-correlated) timed
-//               against a 2^K-sample Monte Carlo per cell (default K = 23, Cycles' budget) on 27
-//               cells, scaled; both against the o-space reference. host/bench/dielectric_bench.cpp.
-//   --dielectric-avg [--size N] [--pair NDF+GAF]: the N x N dielectric-avg table (default 8, ggx +
-//               smith-correlated) baked as brdfbake bakes it, every stored value against the same
-//               rule run tight: the largest error against brdf.error. ~4 minutes at 8 (3 s an entry).
-//   --commit [--repeat R]: what the output directory's lock and the commit record cost: their
-//               steps timed against a warm default bake, both medians of R runs (at least 21), in
-//               the same run (host/bench/commit_bench.cpp). A few seconds.
-//   --merl FILE [--size N]: a measured material's albedo (N texel centres, default 16) and
-//               albedo-avg tables baked as brdfbake bakes them, each claim against a rule above the
-//               ones it climbs (host/bench/merl_bench.cpp). ~2 minutes at 16.
+// The usage below (kUsage) is what `brdfbake-bench --help` prints.
 #include <unistd.h>
 
 #include <algorithm>
@@ -77,6 +27,61 @@
 
 using namespace brdfbake;
 using namespace brdfbake::bench;
+
+namespace {
+const char* const kUsage = R"(usage: brdfbake-bench [--size N] [--samples S] [--stride K] [--repeat R] [--device TEXT] [--times-only]
+                      [--pair NDF+GAF]... [--all-pairs] [--albedo-avg] [--cold-start [--skip-all]] [--materials]
+                      [--dielectric [--mc-log2 K]] [--dielectric-avg [--size N] [--pair NDF+GAF]]
+                      [--merl FILE [--size N]] [--commit]
+  --stride K: reference on every K-th texel per axis plus the first/last rows and columns
+              (default 1: every texel; the reference takes a few seconds for all 16384).
+  --times-only: skip the errors; times and ratio only.
+  --pair NDF+GAF: time (and check) that pair's split sum instead of ggx + smith-correlated; the
+              Karis MC baseline stays ggx + smith-correlated's (a time baseline, its errors
+              are then not printed).
+  --all-pairs [--pair NDF+GAF]...: no timing; every NDF/GAF pair's table (or the given ones;
+              not charlie's, whose reference is tests/sheen_test.cpp's) against the reference
+              (largest error, largest kernel bound, texels whose error exceeds their bound).
+              ~26 minutes at --stride 8, most of it the exact-Smith references.
+  --albedo-avg: the albedo-avg table (size 32, texel centres) timed against the 32x32 albedo
+              table it averages, then every pair's albedo-avg against the reference: the
+              largest bound over all 32 entries, the error at every --stride-th r (default 8)
+              plus r = 3/64, 5/64, 63/64 and the node-grid r = 0, 1/2, 1. ~10 minutes.
+  --cold-start [--skip-all]: what a user waits for: `brdfbake bake` of the default set and of
+              every pair (56 pairs, 173 tables), run as processes in --repeat rounds, each with
+              HOME a fresh empty directory: its first run (empty PoCL and program caches; the
+              programs the build prepared are found), then a warm run; the best and the slowest
+              of each, and a first run with nothing prepared; as ratios against the Karis MC
+              baseline timed in this run and against the best warm run. --skip-all: the default
+              set only. ~2 minutes on 2 cores (host/bench/cold_start_bench.cpp).
+  --materials: 32x32 dielectric albedo (ggx + smith-correlated, eta 1.5 and 1/1.5) and diffuse
+              albedo (burley, oren-nayar) tables, kernel vs an S-sample Monte Carlo estimator of
+              the same quantity: times, errors against the reference (dielectric on every
+              --stride-th texel, default 4, plus edges; diffuse on all), kernel bounds.
+              host/bench/materials_bench.cpp. ~2 minutes.
+  --bounds [--pair NDF+GAF]... [--csv FILE]: how tight the claimed bounds are: every table of the
+              default set (split-sum --size, albedo, albedo-avg, k_p) of each pair (default:
+              ggx+smith-correlated, beckmann+smith, ggx+schlick-ggx, blinn-phong+implicit,
+              gaussian+smith-correlated-exact) baked as brdfbake bakes it, brdf.error and each
+              texel's claim against the true error. host/bench/bounds_bench.cpp.
+  --probe-span [--pair NDF+GAF]... [--size N]: the interpolation probe with its quarter-texel
+              steps over six texels of mu against kProbeMuTexels (tables/interp_probe.h), on
+              every pair's split sum (both mu axes) and 32^2 albedo. host/bench/probe_bench.cpp.
+              ~1 minute.
+  --dielectric [--mc-log2 K]: the 32^3 rough-dielectric table (ggx + smith-correlated) timed
+              against a 2^K-sample Monte Carlo per cell (default K = 23, Cycles' budget) on 27
+              cells, scaled; both against the o-space reference. host/bench/dielectric_bench.cpp.
+  --dielectric-avg [--size N] [--pair NDF+GAF]: the N x N dielectric-avg table (default 8, ggx +
+              smith-correlated) baked as brdfbake bakes it, every stored value against the same
+              rule run tight: the largest error against brdf.error. ~4 minutes at 8 (3 s an entry).
+  --commit [--repeat R]: what the output directory's lock and the commit record cost: their
+              steps timed against a warm default bake, both medians of R runs (at least 21), in
+              the same run (host/bench/commit_bench.cpp). A few seconds.
+  --merl FILE [--size N]: a measured material's albedo (N texel centres, default 16) and
+              albedo-avg tables baked as brdfbake bakes them, each claim against a rule above the
+              ones it climbs (host/bench/merl_bench.cpp). ~2 minutes at 16.
+)";
+}  // namespace
 
 namespace brdfbake {
 int materialsBench(KernelRunner& runner, int samples, int repeat, int stride);  // materials_bench.cpp
@@ -168,6 +173,10 @@ int main(int argc, char** argv) {
   bool commit = false;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
     auto next = [&]() -> std::string {
       if (i + 1 >= argc) { std::fprintf(stderr, "%s: missing value\n", a.c_str()); std::exit(64); }
       return argv[++i];
@@ -206,7 +215,7 @@ int main(int argc, char** argv) {
     else if (a == "--mc-log2") mcLog2 = std::atoi(next().c_str());
     else if (a == "--volume-size") volumeSize = std::atoi(next().c_str());
     else if (a == "--skip-all") skipAll = true;
-    else { std::fprintf(stderr, "unknown option %s\n", a.c_str()); return 64; }
+    else { std::fprintf(stderr, "brdfbake-bench: unknown option %s (brdfbake-bench --help lists them)\n", a.c_str()); return 64; }
   }
   if (n < 1 || samples < 1 || stride < 1 || repeat < 1) { std::fprintf(stderr, "arguments must be >= 1\n"); return 64; }
   try {
