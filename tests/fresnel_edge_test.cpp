@@ -92,7 +92,8 @@ struct Worst {
 
 // Bakes one table and checks its corner texels; returns the worst ratios.
 // strictReference: the rule in double must be sharp at every texel (ggx + smith-correlated's corner).
-Worst checkTable(int ndf, int gaf, const Edge& e, int n, bool strictReference = true) {
+// tight: how many times max(error, float floor) a claim may be.
+Worst checkTable(int ndf, int gaf, const Edge& e, int n, bool strictReference = true, double tight = 4) {
   KernelTable t = runner().hemisphere(ndf, gaf, n, n, false, weightOf(e));
   std::vector<std::pair<int, int>> texels;
   for (int j : cornerIndices(n))
@@ -131,7 +132,7 @@ Worst checkTable(int ndf, int gaf, const Edge& e, int n, bool strictReference = 
     if (strictReference) EXPECT_TRUE(sharp) << e.name << ": the double rule's own estimate " << est << " must be far below the claim " << claim;
     EXPECT_LE(err, claim + (sharp ? 0.0 : est)) << e.name << " n=" << n << " mu=" << mu << " r=" << r << " device " << got
                                                  << " double " << want;
-    if (sharp) EXPECT_LE(claim, 4 * std::max(err, floor)) << e.name << " n=" << n << " mu=" << mu << " r=" << r;
+    if (sharp) EXPECT_LE(claim, tight * std::max(err, floor)) << e.name << " n=" << n << " mu=" << mu << " r=" << r;
     w.ratio = std::max(w.ratio, err / claim);
     w.claimOver = std::max(w.claimOver, claim / std::max(err, floor));
   }
@@ -145,6 +146,27 @@ TEST(FresnelEdge, StiffCornerWithinItsClaim) {
       std::printf("%-30s %3d^2: largest error/claim %.2f, claim/max(error, float floor) %.2f\n", e.name.c_str(), n,
                   w.ratio, w.claimOver);
     }
+}
+
+// The two edges the sweep found at 128^2, on a pair where each had been over its claim (eta = 0.2
+// next to its critical cosine: ggx + smith-correlated 1.72 times; f82-tint at tint 0, grazing:
+// beckmann + none), in the default run: every corner texel within its claim (the kink's float term
+// and the Fresnel-weighted float model, tables/error_model.h). The kink's term is sized on the
+// largest error over the 38 pairs (3.2e-6); ggx + smith-correlated's is 1.1e-6 there, so its claims
+// reach 7.5 times the error: held to 8 times here (docs/accuracy.md, "The whole sweep"), 4 for F82.
+// tools/bite.sh fresnel-kink-claim and fresnel-float-model remove each and see this fail.
+TEST(FresnelEdge, TheSweepsEdgesHoldAt128) {
+  const std::vector<Edge> all = edges();
+  auto named = [&](const std::string& n) {
+    for (const Edge& e : all)
+      if (e.name == n) return e;
+    ADD_FAILURE() << "no edge " << n;
+    return all.front();
+  };
+  Worst tir = checkTable(NDF_GGX, GAF_SMITH_CORRELATED, named("dielectric eta=0.2"), 128, true, 8);
+  Worst f82 = checkTable(NDF_BECKMANN, GAF_NONE, named("f82-tint F0=0.04 tint=0"), 128, false);
+  std::printf("128^2: eta 0.2 largest error/claim %.2f (claim/max(error, floor) %.2f); f82-tint tint 0 on beckmann + none "
+              "%.2f (%.2f)\n", tir.ratio, tir.claimOver, f82.ratio, f82.claimOver);
 }
 
 // The corner texels where the independent reference is quick (see the top of this file), against

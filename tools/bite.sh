@@ -61,6 +61,10 @@ mutation() {
                   "KernelReuse.NodesOverlapping" ;;
     fresnel-eta-z) set -- "$1" host/cl/runner_launch.cpp 'w.z = static_cast<float>(' 'w.z = 0 * static_cast<float>(' \
                      "FresnelEdge.StiffCornerWithinItsClaim" ;;
+    fresnel-kink-claim) set -- "$1" host/tables/error_model.h '  return kUnitRoundoff * mu * slope;' '  return 0 * kUnitRoundoff * mu * slope;' \
+                          "FresnelEdge.TheSweepsEdgesHoldAt128" ;;
+    fresnel-float-model) set -- "$1" host/tables/error_model.h 'constexpr FloatModel kFresnelFloat{10, 4};' \
+                           'constexpr FloatModel kFresnelFloat{6, 3};' "FresnelEdge.TheSweepsEdgesHoldAt128" ;;
     fresnel-layer) set -- "$1" kernels/brdf/fresnel.h '  return w < FRESNEL_GRADE_MAX ? w : RC(0.0);' '  return RC(0.0);' \
                      "FresnelEdge.StiffCornerWithinItsClaim" ;;
     fresnel-claim-inflated) set -- "$1" kernels/bake.cl '    out_err[t] = hemi_rel_error(h);' \
@@ -72,7 +76,7 @@ mutation() {
 names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass render-single render-glass-dark glass-eta-axis
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
        canonical-gaf trap-pi-batch ggx-one-division trap-lanes arc-lanes gk-pair lane-sum4 node-reuse devices-stale
-       fresnel-eta-z fresnel-layer fresnel-claim-inflated"
+       fresnel-eta-z fresnel-layer fresnel-claim-inflated fresnel-kink-claim fresnel-float-model"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
