@@ -73,42 +73,7 @@ void checkFormatOptions(BakeRequest& req) {
 
 }  // namespace
 
-namespace {
-Command parseArgsUnchecked(const std::vector<std::string>& rawArgs);
-
-// A refused value of an option with a fixed set of names gets the nearest of them, whichever
-// parser refused it: the message starts with the option ("--grid must be ...", "--rows: unknown
-// row ...") and quotes the value ("got 'nodes'", "row 'kulla'"); the option's names are its
-// table's (cli/commands.cpp). Each comma-separated part is matched on its own.
-std::string withValueSuggestion(const std::string& msg) {
-  if (msg.rfind("--", 0) != 0 || msg.find("did you mean") != std::string::npos) return msg;
-  const size_t end = msg.find_first_of(" :");
-  const OptionInfo* o = findOption(msg.substr(0, end));
-  if (!o || o->values.empty()) return msg;
-  const size_t close = msg.rfind('\''), open = close == std::string::npos || close == 0 ? std::string::npos : msg.rfind('\'', close - 1);
-  if (open == std::string::npos) return msg;
-  const std::string got = msg.substr(open + 1, close - open - 1);
-  for (const std::string& part : splitCommas(got)) {
-    if (std::find(o->values.begin(), o->values.end(), part) != o->values.end()) continue;
-    const std::string near = didYouMean(part, o->values);
-    if (near.empty()) return msg;
-    return msg.substr(0, close + 1) + near + msg.substr(close + 1);
-  }
-  return msg;
-}
-}  // namespace
-
 Command parseArgs(const std::vector<std::string>& rawArgs) {
-  try {
-    return parseArgsUnchecked(rawArgs);
-  } catch (const Error& e) {
-    if (e.code() != kExitUsage) throw;
-    throw Error(kExitUsage, withValueSuggestion(e.what()));
-  }
-}
-
-namespace {
-Command parseArgsUnchecked(const std::vector<std::string>& rawArgs) {
   Command cmd;
   // GNU style --opt=value is the same as --opt value
   std::vector<std::string> args;
@@ -216,7 +181,7 @@ Command parseArgsUnchecked(const std::vector<std::string>& rawArgs) {
       gridName = value();
       if (gridName == "node") req.nodeGrid = true;
       else if (gridName == "texel-center") req.nodeGrid = false;
-      else throw Error(kExitUsage, "--grid must be texel-center or node, got '" + gridName + "'");
+      else throw Error(kExitUsage, "--grid must be texel-center or node, got '" + gridName + "'" + nearestValue("--grid", gridName));
     } else if (opt == "--half" || opt == "--precision") {
       // --half is --precision float16
       if (std::find(seen.begin(), seen.end(), "--precision") != seen.end())
@@ -289,7 +254,8 @@ Command parseArgsUnchecked(const std::vector<std::string>& rawArgs) {
       once(opt, opt);
       req.coupling = value();
       if (req.coupling != "sum" && req.coupling != "albedo-scaling")
-        throw Error(kExitUsage, "--coupling must be sum or albedo-scaling, got '" + req.coupling + "'");
+        throw Error(kExitUsage, "--coupling must be sum or albedo-scaling, got '" + req.coupling + "'" +
+                                    nearestValue("--coupling", req.coupling));
     } else if (opt == "--levels" || opt == "--samples") {
       // a budget ladder: increasing integers in range
       once(opt, opt);
@@ -313,7 +279,7 @@ Command parseArgsUnchecked(const std::vector<std::string>& rawArgs) {
     } else if (opt == "--preset") {
       once(opt, "--preset");
       req.preset = value();
-      if (req.preset != "gltf") throw Error(kExitUsage, "--preset: unknown preset '" + req.preset + "'; valid: gltf");
+      if (req.preset != "gltf") throw Error(kExitUsage, "--preset: unknown preset '" + req.preset + "'" + nearestValue("--preset", req.preset) + "; valid: gltf");
     } else if (opt == "--brdf") {
       once(opt, "--brdf");
       const std::string& v = value();
@@ -416,6 +382,5 @@ Command parseArgsUnchecked(const std::vector<std::string>& rawArgs) {
   cmd.bake = req;
   return cmd;
 }
-}  // namespace
 
 }  // namespace brdfbake

@@ -66,6 +66,9 @@ const OptionInfo* findOption(const std::string& opt);
 std::string overviewHelp();
 // `brdfbake COMMAND --help`: its synopsis, what it does, only its options, examples.
 std::string commandHelp(const std::string& name);
+// " (did you mean 'X'?)" for a refused value of `option`, X the nearest of the names its table
+// lists (or the one name the value begins); "" when none is near.
+std::string nearestValue(const std::string& option, const std::string& got);
 // Every command's help as Markdown, from the same tables: the reference part of docs/commands.md
 // (`brdfbake help --markdown`; tests/cli_help_test.cpp fails when the page differs).
 std::string markdownHelp();

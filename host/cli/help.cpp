@@ -142,6 +142,11 @@ std::string markdownHelp() {
   return out;
 }
 
+std::string nearestValue(const std::string& option, const std::string& got) {
+  const OptionInfo* o = findOption(option);
+  return o ? didYouMean(got, o->values) : std::string();
+}
+
 void unknownCommand(const std::string& word) {
   const std::vector<std::string> names = visibleCommandNames();
   throw Error(kExitUsage, "unknown command '" + word + "'" + didYouMean(word, names) + "; valid: " + joinNames(names) +

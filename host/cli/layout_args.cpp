@@ -1,6 +1,7 @@
 // The layout options and --mu-axis: see layout_args.h.
 #include "cli/layout_args.h"
 
+#include "cli/commands.h"
 #include "common/errors.h"
 
 namespace brdfbake {
@@ -15,7 +16,7 @@ bool parseLayoutOption(const std::string& opt, const std::function<const std::st
     once(opt);
     if (opt == "--axes") {
       const std::string& v = value();
-      if (v != "mu,r" && v != "r,mu") throw Error(kExitUsage, "--axes must be mu,r or r,mu, got '" + v + "'");
+      if (v != "mu,r" && v != "r,mu") throw Error(kExitUsage, "--axes must be mu,r or r,mu, got '" + v + "'" + nearestValue("--axes", v));
       req.layout.rAlongX = v == "r,mu";
     } else if (opt == "--channels") {
       req.layout.channels = parseLayoutChannels(value());
@@ -27,7 +28,7 @@ bool parseLayoutOption(const std::string& opt, const std::function<const std::st
     const std::string& v = value();
     if (v != "linear" && v != "sqrt")
       throw Error(kExitUsage, "--mu-axis must be linear (x = mu, the default) or sqrt (x = sqrt(mu): texel i holds "
-                              "mu = u_i^2, as Unity HDRP's pre-integrated FGD), got '" + v + "'");
+                              "mu = u_i^2, as Unity HDRP's pre-integrated FGD), got '" + v + "'" + nearestValue("--mu-axis", v));
     req.muSqrt = v == "sqrt";
   } else {
     return false;

@@ -46,7 +46,7 @@ bool parseToolCommand(const std::vector<std::string>& args, Command& cmd) {
         if (langGiven || k + 1 >= args.size()) throw Error(kExitUsage, "--lang: give it once, glsl or hlsl");
         langGiven = true;
         const std::string& l = args[++k];
-        if (l != "glsl" && l != "hlsl") throw Error(kExitUsage, "--lang must be glsl or hlsl, got '" + l + "'");
+        if (l != "glsl" && l != "hlsl") throw Error(kExitUsage, "--lang must be glsl or hlsl, got '" + l + "'" + nearestValue("--lang", l));
         cmd.hlsl = l == "hlsl";
       } else if (args[k] == "-o" || args[k] == "--output") {
         if (!cmd.file.empty() || k + 1 >= args.size()) throw Error(kExitUsage, args[k] + ": give one output file, once");

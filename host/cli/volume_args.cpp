@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdlib>
 
+#include "cli/commands.h"
 #include "common/errors.h"
 #include "common/format.h"
 
@@ -54,19 +55,19 @@ bool parseVolumeOption(const std::string& opt, const std::function<const std::st
     std::string v = value();
     if (v == "angles") req.volume.param = Brdf3dParam::Angles;
     else if (v == "rusinkiewicz") req.volume.param = Brdf3dParam::Rusinkiewicz;
-    else throw Error(kExitUsage, "--param must be angles or rusinkiewicz, got '" + v + "'");
+    else throw Error(kExitUsage, "--param must be angles or rusinkiewicz, got '" + v + "'" + nearestValue("--param", v));
     req.volume.flags.push_back(opt);
   } else if (opt == "--theta-h") {
     once(opt);
     std::string v = value();
     if (v == "sqrt") req.volume.thetaHSqrt = true;
-    else if (v != "linear") throw Error(kExitUsage, "--theta-h must be linear or sqrt (MERL's index), got '" + v + "'");
+    else if (v != "linear") throw Error(kExitUsage, "--theta-h must be linear or sqrt (MERL's index), got '" + v + "'" + nearestValue("--theta-h", v));
     req.volume.flags.push_back(opt);
   } else if (opt == "--value") {
     once(opt);
     std::string v = value();
     if (v == "f-cos") req.volume.timesCos = true;
-    else if (v != "f") throw Error(kExitUsage, "--value must be f or f-cos (f times cos theta_i), got '" + v + "'");
+    else if (v != "f") throw Error(kExitUsage, "--value must be f or f-cos (f times cos theta_i), got '" + v + "'" + nearestValue("--value", v));
     req.volume.flags.push_back(opt);
   } else if (opt == "--roughness") {
     once(opt);
