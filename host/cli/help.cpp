@@ -30,22 +30,31 @@ std::string indent(const std::string& text, const std::string& pad) {
   return out;
 }
 
-// The options of one command, grouped under their headings in table order.
-std::string optionsText(unsigned bit) {
+// The options of one command in table order (--help left out), each given with the heading of its
+// group, `heading(group)` returning what starts a new group: the text help and the Markdown share it.
+template <class Heading, class Line>
+std::string groupedOptions(unsigned bit, Heading heading, Line line) {
   std::string out, group;
   for (const auto& o : optionInfos()) {
     if (!(o.commands & bit) || o.name == "--help") continue;
     if (o.group != group) {
       group = o.group;
-      out += "\n" + group + ":\n";
+      out += heading(group);
     }
+    out += line(o);
+  }
+  return out;
+}
+
+// The options of one command, grouped under their headings in table order.
+std::string optionsText(unsigned bit) {
+  return groupedOptions(bit, [](const std::string& g) { return "\n" + g + ":\n"; }, [&](const OptionInfo& o) {
     std::string head = "  " + (o.alias.empty() ? "" : o.alias + ", ") + o.name + (o.value.empty() ? "" : " " + o.value);
     const std::string pad(22, ' ');
     if (head.size() + 2 > pad.size()) head += "\n" + pad;
     else head += std::string(pad.size() - head.size(), ' ');
-    out += head + indent(o.helpOf(bit), pad) + "\n";
-  }
-  return out;
+    return head + indent(o.helpOf(bit), pad) + "\n";
+  });
 }
 
 const char* const kExitCodes =
@@ -108,17 +117,12 @@ std::string cell(std::string s) {
 }
 
 std::string markdownOptions(unsigned bit) {
-  std::string out, group;
-  for (const auto& o : optionInfos()) {
-    if (!(o.commands & bit) || o.name == "--help") continue;
-    if (o.group != group) {
-      group = o.group;
-      out += "\n*" + group + "*\n\n| option | value | |\n|---|---|---|\n";
-    }
-    out += "| `" + (o.alias.empty() ? "" : o.alias + "`, `") + o.name + "` | " + (o.value.empty() ? "" : "`" + cell(o.value) + "`") +
-           " | " + cell(o.helpOf(bit)) + " |\n";
-  }
-  return out;
+  return groupedOptions(
+      bit, [](const std::string& g) { return "\n*" + g + "*\n\n| option | value | |\n|---|---|---|\n"; },
+      [&](const OptionInfo& o) {
+        return "| `" + (o.alias.empty() ? "" : o.alias + "`, `") + o.name + "` | " +
+               (o.value.empty() ? "" : "`" + cell(o.value) + "`") + " | " + cell(o.helpOf(bit)) + " |\n";
+      });
 }
 }  // namespace
 
