@@ -109,8 +109,11 @@ inline FloatModel hemiFloatModel(int ndf, int gaf, bool weighted = false) {
 // lobe's spread in o.h, w = alpha sqrt(1 - mu^2) + alpha^2 (alpha = r^2). At those texels (r =
 // 1/256 to 7/256) it is 1.19 to 3.1 times the largest error over the 38 pairs (3.2e-6 at r = 7/256;
 // ggx + smith-correlated's errors there are up to 1.1e-6); it is 0 for a weight without a kink.
+inline bool hasFresnelKink(int model, double eta) {
+  return (model == FRESNEL_DIELECTRIC || model == FRESNEL_SCHLICK_TIR) && eta < 1;
+}
 inline double fresnelKinkFloat(int model, double eta, double mu, double r) {
-  if ((model != FRESNEL_DIELECTRIC && model != FRESNEL_SCHLICK_TIR) || !(eta < 1)) return 0;
+  if (!hasFresnelKink(model, eta)) return 0;
   const double alpha = r * r, w = std::max(alpha * std::sqrt(std::max(0.0, 1 - mu * mu)) + alpha * alpha, 1e-7);
   const double lo = std::max(0.0, mu - w), hi = std::min(1.0, mu + w);
   if (!(hi > lo)) return 0;
