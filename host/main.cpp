@@ -16,6 +16,7 @@
 #include "tables/volume.h"
 #include "shader/shader_gen.h"
 #include "cl/device.h"
+#include "cl/driver_guard.h"
 #include "cli/args.h"
 #include "cli/console.h"
 #include "cli/commands.h"
@@ -152,6 +153,8 @@ int main(int argc, char** argv) {
   // A file-size limit (ulimit -f) makes writes past it fail with EFBIG, which the writers report
   // and clean up after (74), instead of a SIGXFSZ that kills the process mid-write.
   std::signal(SIGXFSZ, SIG_IGN);
+  // The OpenCL driver's crashes and exits while it builds kernels, said as its failure (70, 74).
+  installDriverGuards();
   try {
     Command cmd = parseArgs(std::vector<std::string>(argv + 1, argv + argc));
     return checkedStdout(runCommand(cmd));

@@ -328,3 +328,48 @@ TEST(Hostile, NoInodesLeftIsAWriteError) {
   EXPECT_NE(r.out.find("nothing was written"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\n0\n"), std::string::npos) << "the failed bake left files behind: " << r.out;
 }
+
+// The OpenCL driver's own failures in its kernel cache, said in our words with our codes, never a
+// raw abort (134), segfault (139) or LLVM's exit(1). Program caches off, so that PoCL builds; a
+// tmpfs in a private mount namespace (needs root, as CI has).
+//  - 1200 KiB free (a build needs about 2 MB): refused before the driver starts, 74;
+//  - the same with the check lowered (the disk fills during the build): LLVM's exit(1) becomes 74;
+//  - the cache removed again and again while the kernels are linked (from the moment the program's
+//    bitcode appears): PoCL's abort becomes 70 (5 runs of 5 aborted; a build that fails instead is
+//    70 with the hint).
+TEST(Hostile, TheDriversOwnFailuresAreSaid) {
+  const fs::path d = freshDir("hostile", "driver");
+  fs::create_directories(d / "disk");
+  const std::string disk = (d / "disk").string(), dir = d.string();
+  std::ofstream(d / "t.sh")
+      << "set -u\nexport BRDFBAKE_PROGRAM_CACHE=off BRDFBAKE_PREPARED_PROGRAMS=off\n"
+         "mount -t tmpfs -o size=1200k tmpfs '" << disk << "' || { echo 'cannot mount a tmpfs (root needed)'; exit 99; }\n"
+         "POCL_CACHE_DIR='" << disk << "' '" BRDFBAKE_EXE "' --table kp --size 4 -o '" << dir << "/o1'; echo \"rc1=$?\"\n"
+         "POCL_CACHE_DIR='" << disk << "' BRDFBAKE_TEST_DRIVER_MIN_FREE=0 '" BRDFBAKE_EXE "' --table kp --size 4 -o '"
+      << dir << "/o2'; echo \"rc2=$?\"\n"
+         "rm -rf '" << dir << "/cache'\n"
+         "POCL_CACHE_DIR='" << dir << "/cache' '" BRDFBAKE_EXE "' --table albedo --size 4 -o '" << dir << "/o3' & pid=$!\n"
+         "i=0; until ls '" << dir << "'/cache/*/*/program.bc >/dev/null 2>&1 || [ $i -ge 1000 ]; do sleep 0.02; i=$((i+1)); done\n"
+         "while kill -0 $pid 2>/dev/null; do rm -rf '" << dir << "/cache'; sleep 0.01; done\n"
+         "wait $pid; echo \"rc3=$?\"\n"
+         "ls -A '" << dir << "' | grep -c '^o[123]$'\n";
+  CmdResult r{0, ""};
+  FILE* p = popen(("unshare -m sh '" + (d / "t.sh").string() + "' 2>&1").c_str(), "r");
+  char buf[4096];
+  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
+  r.code = pclose(p);
+  ASSERT_EQ(r.out.find("cannot mount"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("rc1=74"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("kernel cache '" + disk + "' has "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("building the kernels needs up to 16 MiB there"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("rc2=74"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the OpenCL driver ended the process while it built or ran kernels from its cache '" + disk +
+                       "'"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("rc3=70"), std::string::npos) << r.out;
+  const bool crashSaid = r.out.find("the OpenCL driver crashed (SIGABRT) while it built or ran kernels from its cache '" +
+                                   dir + "/cache'") != std::string::npos;
+  const bool buildSaid = r.out.find("on PoCL this is its kernel cache '" + dir + "/cache' removed") != std::string::npos;
+  EXPECT_TRUE(crashSaid || buildSaid) << r.out;
+  // nothing landed: the failures came before any table was written
+  EXPECT_NE(r.out.find("\n0\n"), std::string::npos) << r.out;
+}

@@ -18,6 +18,7 @@ mutation() {
                         "FirstRun.StaleForeignOrTornEntries" ;;
     progress-on-pipe) set -- "$1" host/cli/console.cpp 'const bool progress = !quiet && ::isatty(STDERR_FILENO);' \
                         'const bool progress = !quiet;' "FirstRun.ProgressLineOnATerminalOnly" ;;
+    driver-guards) set -- "$1" host/main.cpp '  installDriverGuards();' '' "Hostile.TheDriversOwnFailuresAreSaid" ;;
     render-lobe) set -- "$1" host/render/furnace.cpp 'v = vec3(e + a);' 'v = vec3(e + 0.9 * a);' \
                    "Render.DefaultBoundsAreLocalAndTight" ;;
     render-glass) set -- "$1" host/render/furnace.cpp 'v = vec3(glassE(mu, r));' 'v = vec3(glassE(mu, r) * 1.001);' \

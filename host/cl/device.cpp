@@ -141,6 +141,15 @@ std::string describeDevices() {
   return s;
 }
 
+bool onPocl(const cl::Device& device) {
+  try {
+    const cl::Platform platform(device.getInfo<CL_DEVICE_PLATFORM>());
+    return platform.getInfo<CL_PLATFORM_NAME>().find("Portable Computing Language") != std::string::npos;
+  } catch (const cl::Error&) {
+    return false;
+  }
+}
+
 std::string poclCacheDir() {
   if (const char* d = std::getenv("POCL_CACHE_DIR"); d && *d) return d;
   if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::string(x) + "/pocl";

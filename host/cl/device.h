@@ -36,5 +36,7 @@ void usePoclCache(const std::string& dir);
 // The directory PoCL caches its kernels in: $POCL_CACHE_DIR, else $XDG_CACHE_HOME/pocl, else
 // ~/.cache/pocl.
 std::string poclCacheDir();
+// Whether `device` is PoCL's (its platform's name), whose builds write into poclCacheDir().
+bool onPocl(const cl::Device& device);
 
 }  // namespace brdfbake

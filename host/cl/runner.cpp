@@ -6,8 +6,11 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 
+#include "cl/device.h"
+#include "cl/driver_guard.h"
 #include "cl/program_cache.h"
 #include "cl/programs.h"
 #include "cl/runner_internal.h"
@@ -25,6 +28,7 @@ KernelRunner::KernelRunner(const cl::Device& device) : device_(device) {
   cpu_ = (device_.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
   fp64_ = device_.getInfo<CL_DEVICE_EXTENSIONS>().find("cl_khr_fp64") != std::string::npos;
   slots_.push_back(std::make_unique<Slot>(device_));
+  if (onPocl(device_)) driverWork_ = std::make_unique<DriverWork>(poclCacheDir());
 }
 
 KernelRunner::~KernelRunner() = default;
@@ -99,6 +103,7 @@ std::string buildLog(cl::Program& prog, const cl::Device& device, cl_int* rc) {
 // then holds their work-group functions too).
 void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* done) {
   auto t0 = std::chrono::steady_clock::now();
+  const std::string driverCache = driverWork_ ? poclCacheDir() : "";
   const std::string source = programSource(w.key), name = programName(w.key);
   const std::string identity = programIdentity(device_, name, kBuildOptions, source);
   std::string where;
@@ -115,11 +120,13 @@ void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* don
       }
     }
   if (!loaded) {
+    if (!driverCache.empty()) checkDriverCacheSpace(driverCache);
     prog = cl::Program(slot.context, source);
     std::string log = buildLog(prog, device_, &rc);
     if (rc != CL_SUCCESS)
       throw Error(kExitSoftware, "OpenCL kernel build failed for " + name + " (" + std::to_string(rc) +
-                                     "); build log:\n" + log);
+                                     "); build log:\n" + log +
+                                     (driverCache.empty() ? std::string() : driverCacheHint(log, driverCache)));
   }
   done->slot = slotIndex;
   done->program = prog;

@@ -60,6 +60,8 @@ struct KernelTable {
   std::vector<float> err;                  // per texel error bound relative to max(1, |value|)
 };
 
+class DriverWork;  // cl/driver_guard.h
+
 class KernelRunner {
  public:
   explicit KernelRunner(const cl::Device& device);
@@ -214,6 +216,9 @@ class KernelRunner {
                                               const HemiWeight& w, bool bare);
 
   cl::Device device_;
+  // PoCL writes into its kernel cache while it builds and first launches kernels: its failures
+  // there are said as such for the runner's life (cl/driver_guard.h).
+  std::unique_ptr<DriverWork> driverWork_;
   bool cpu_ = false;
   bool fp64_ = false;  // the device has cl_khr_fp64: the 3D tables' programs compute in double
   bool planned_ = false;  // prepareAll() has run
