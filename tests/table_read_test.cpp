@@ -8,13 +8,17 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <cstring>
 #include <random>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "cli_run.h"
 #include "common/errors.h"
 #include "dds_reader.h"
 #include "formats/exr/table_file.h"
 #include "formats/readers/table_reader.h"
+#include "formats/merl.h"
 #include "ktx2_reader.h"
 
 namespace fs = std::filesystem;
@@ -136,6 +140,132 @@ TEST(FormatsRead, DamagedFilesAreRefusedWithExit65NeverACrash) {
   const fs::path d = bakeInto("damage", "--table splitsum --size 8 --format exr,ktx2,dds,png16,header");
   for (const char* ext : {".ktx2", ".dds", ".png", ".h", ".mjs"})
     damage((d / (std::string("splitsum_ggx_smith-correlated") + ext)).string(), 250);
+}
+
+// Mutated real files, beyond single bytes: every offset of the first 256 bytes overwritten with
+// the 32-bit values that break sizes and counts (0, 1, 0x7fffffff, 0x80000000, 0xffffffff, 65536),
+// and 400 random mutations anywhere in the file (1 to 8 bytes set, a span copied elsewhere, or a
+// span removed), for each format the baker writes, 2D and 3D, and the EXR atlas. Each read
+// succeeds or throws Error(kExitDataErr) naming the file, touching at most 64 MiB of fresh memory
+// (minor page faults; OpenEXR had taken 2 GB for an attribute size of 0x7fffffff); a crash,
+// another exception or an allocation failure fails the test.
+void mutate(const std::string& path, int randomTries) {
+  const std::string whole = bytes(path);
+  ASSERT_GT(whole.size(), 16u) << path;
+  const std::string probe = path + ".mutated" + fs::path(path).extension().string();
+  int refused = 0, read = 0;
+  auto attempt = [&](const std::string& content, const std::string& what) {
+    {
+      std::ofstream out(probe, std::ios::binary | std::ios::trunc);
+      out << content;
+    }
+    struct rusage before {}, after {};
+    getrusage(RUSAGE_SELF, &before);
+    try {
+      readTableFile(probe);
+      ++read;
+    } catch (const Error& e) {
+      ASSERT_EQ(e.code(), kExitDataErr) << path << " " << what << ": " << e.what();
+      ASSERT_EQ(std::string(e.what()).rfind("cannot read " + probe + ": ", 0), 0u) << e.what();
+      ++refused;
+    } catch (const std::exception& e) {
+      FAIL() << path << " " << what << ": " << e.what();
+    }
+    getrusage(RUSAGE_SELF, &after);
+    const long pages = after.ru_minflt - before.ru_minflt, limit = (64l << 20) / sysconf(_SC_PAGESIZE);
+    ASSERT_LE(pages, limit) << path << " " << what << ": " << pages << " pages touched";
+  };
+  const uint32_t values[] = {0u, 1u, 0x7fffffffu, 0x80000000u, 0xffffffffu, 65536u};
+  for (size_t at = 0; at + 4 <= std::min<size_t>(whole.size(), 256); ++at)
+    for (uint32_t v : values) {
+      std::string c = whole;
+      std::memcpy(&c[at], &v, 4);
+      attempt(c, "u32 " + std::to_string(v) + " at " + std::to_string(at));
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+  std::mt19937 rng(7);
+  auto uniform = [&](size_t lo, size_t hi) { return std::uniform_int_distribution<size_t>(lo, hi)(rng); };
+  for (int k = 0; k < randomTries; ++k) {
+    std::string c = whole;
+    const size_t at = uniform(0, c.size() - 1), len = uniform(1, 8);
+    std::string what;
+    switch (k % 3) {
+      case 0:
+        for (size_t i = at; i < std::min(c.size(), at + len); ++i) c[i] = static_cast<char>(uniform(0, 255));
+        what = "bytes set at " + std::to_string(at);
+        break;
+      case 1: {
+        const size_t from = uniform(0, c.size() - 1), n = std::min({len * 8, c.size() - from, c.size() - at});
+        c.replace(at, n, whole.substr(from, n));
+        what = "span copied to " + std::to_string(at);
+        break;
+      }
+      default:
+        c.erase(at, len * 8);
+        what = "span removed at " + std::to_string(at);
+    }
+    attempt(c, what);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  EXPECT_GT(refused, 0) << path << ": no mutation was refused";
+  fs::remove(probe);
+}
+
+TEST(FormatsRead, MutatedRealFilesAreReadOrRefused) {
+  const fs::path d = bakeInto("mutate2d", "--table splitsum,kp --size 8 --format exr,ktx2,dds,png16,header");
+  for (const char* ext : {".exr", ".ktx2", ".dds", ".png", ".h", ".mjs"}) {
+    mutate((d / (std::string("splitsum_ggx_smith-correlated") + ext)).string(), 400);
+    mutate((d / (std::string("kp_ggx") + ext)).string(), 100);
+  }
+  const fs::path v = bakeInto("mutate3d", "--table brdf3d --size 6,5,4 --format exr,ktx2,dds,header --precision float16");
+  for (const char* ext : {".exr", ".ktx2", ".dds", ".h"})
+    mutate((v / (std::string("brdf3d_ggx_smith-correlated_angles") + ext)).string(), 200);
+}
+
+// A MERL file (35 MB, made here: 90 90 180 and constant values): its header's counts overwritten,
+// a NaN or an infinity among the values, and truncations. Each read succeeds or throws
+// Error(kExitDataErr); a missing file is Error(kExitNoInput).
+TEST(FormatsRead, MutatedMerlFilesAreReadOrRefused) {
+  const fs::path d = testing_cli::freshDir("read", "merl");
+  std::string whole(kMerlFileBytes, '\0');
+  const int32_t dims[3] = {kMerlThetaH, kMerlThetaD, kMerlPhiD};
+  std::memcpy(&whole[0], dims, 12);
+  for (size_t i = 0; i < 3 * kMerlBins; ++i) {
+    const double v = 0.1 / kMerlScale[i / kMerlBins];
+    std::memcpy(&whole[12 + 8 * i], &v, 8);
+  }
+  const std::string path = (d / "m.binary").string();
+  auto tryRead = [&](const std::string& content, const std::string& what, bool mustRefuse) {
+    {
+      std::ofstream out(path, std::ios::binary | std::ios::trunc);
+      out << content;
+    }
+    try {
+      readMerl(path);
+      EXPECT_FALSE(mustRefuse) << what;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), kExitDataErr) << what << ": " << e.what();
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << what << ": " << e.what();
+    }
+  };
+  tryRead(whole, "the file as made", false);
+  const uint32_t values[] = {0u, 1u, 89u, 0x7fffffffu, 0x80000000u, 0xffffffffu};
+  for (size_t at = 0; at < 12; at += 4)
+    for (uint32_t v : values) {
+      std::string c = whole;
+      std::memcpy(&c[at], &v, 4);
+      tryRead(c, "header u32 " + std::to_string(v) + " at " + std::to_string(at), true);
+    }
+  for (double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+    std::string c = whole;
+    std::memcpy(&c[12 + 8 * 123457], &bad, 8);
+    tryRead(c, "a non-finite value", true);
+  }
+  for (size_t n : {size_t{0}, size_t{11}, size_t{12}, kMerlFileBytes / 2, kMerlFileBytes - 1})
+    tryRead(whole.substr(0, n), "truncated to " + std::to_string(n), true);
+  tryRead(whole + "x", "one byte more", true);
 }
 
 TEST(FormatsRead, MissingFileOrDirectoryIsNoInput) {

@@ -19,6 +19,8 @@ mutation() {
     progress-on-pipe) set -- "$1" host/cli/console.cpp 'const bool progress = !quiet && ::isatty(STDERR_FILENO);' \
                         'const bool progress = !quiet;' "FirstRun.ProgressLineOnATerminalOnly" ;;
     driver-guards) set -- "$1" host/main.cpp '  installDriverGuards();' '' "Hostile.TheDriversOwnFailuresAreSaid" ;;
+    exr-header-sizes) set -- "$1" host/formats/exr/exr_reader.cpp 'checkHeaderSizes(path, checkInputFile(path, "", kCapTable));' \
+                        'checkInputFile(path, "", kCapTable);' "FormatsRead.MutatedRealFilesAreReadOrRefused" ;;
     render-lobe) set -- "$1" host/render/furnace.cpp 'v = vec3(e + a);' 'v = vec3(e + 0.9 * a);' \
                    "Render.DefaultBoundsAreLocalAndTight" ;;
     render-glass) set -- "$1" host/render/furnace.cpp 'v = vec3(glassE(mu, r));' 'v = vec3(glassE(mu, r) * 1.001);' \

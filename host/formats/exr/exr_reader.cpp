@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cstdint>
 
 #include "common/errors.h"
@@ -43,12 +44,58 @@ auto guardRead(const std::string& path, F&& f) -> decltype(f()) {
   }
 }
 
+uint32_t le32(const std::string& b, size_t at) {
+  return uint32_t(uint8_t(b[at])) | uint32_t(uint8_t(b[at + 1])) << 8 | uint32_t(uint8_t(b[at + 2])) << 16 |
+         uint32_t(uint8_t(b[at + 3])) << 24;
+}
+
+// OpenEXR allocates an attribute's declared size before it reads the value: a size of 0x7fffffff
+// in a 1 KB file had it take 2 GB. So the header is walked here first (OpenEXR file layout: magic,
+// version, then per part attributes "name\0type\0" int32 size, value, ended by an empty name; a
+// multi-part file's list of headers ends with an empty one), and every size must fit in the bytes
+// the file has left. A header longer than 1 MiB is refused too: brdfbake's are under 4 KiB.
+void checkHeaderSizes(const std::string& path, uint64_t fileBytes) {
+  constexpr uint64_t kMaxHeader = 1 << 20;
+  const std::string b = readInputPrefix(path, "", std::min(fileBytes, kMaxHeader));
+  auto fail = [&](const std::string& why) { readError(path, "header: " + why); };
+  if (b.size() < 8) fail("the file is shorter than its magic number and version");
+  const bool multipart = (le32(b, 4) & 0x1000) != 0;
+  size_t p = 8;
+  auto cString = [&](const char* what) {
+    const size_t end = b.find('\0', p);
+    if (end == std::string::npos || end - p > 255)
+      fail(std::string(what) + " at byte " + std::to_string(p) + " is not ended within 255 bytes of the header");
+    std::string text = b.substr(p, end - p);
+    p = end + 1;
+    return text;
+  };
+  for (int part = 0;; ++part) {
+    while (true) {
+      if (p >= b.size()) fail(b.size() == fileBytes ? "the file ends inside it" : "longer than 1 MiB");
+      const std::string name = cString("an attribute name");
+      if (name.empty()) break;  // the part's header ends
+      cString("an attribute type");
+      if (p + 4 > b.size()) fail("the file ends inside attribute '" + name + "'");
+      const int32_t size = static_cast<int32_t>(le32(b, p));
+      p += 4;
+      if (size < 0 || static_cast<uint64_t>(size) > fileBytes - p)
+        fail("attribute '" + name + "' declares " + std::to_string(size) + " bytes; the file has " +
+             std::to_string(fileBytes - p) + " left");
+      p += static_cast<size_t>(size);
+    }
+    if (!multipart) break;
+    if (p >= b.size()) fail("the file ends inside the list of headers");
+    if (b[p] == '\0') break;  // the empty header ends the list
+  }
+}
+
 }  // namespace
 
 namespace exr {
 
 std::unique_ptr<Imf::InputFile> openExr(const std::string& path) {
-  checkInputFile(path, "", kCapTable);  // a regular file: OpenEXR would block on a FIFO
+  // a regular file (OpenEXR would block on a FIFO), its header's sizes within it
+  checkHeaderSizes(path, checkInputFile(path, "", kCapTable));
   // OpenEXR refuses a header whose data window is larger than this before it allocates for it (a
   // damaged dataWindow had it allocate 3.1 GB): no table brdfbake writes is wider or taller
   Imf::Header::setMaxImageSize(1 << 16, 1 << 16);
