@@ -373,3 +373,33 @@ TEST(Hostile, TheDriversOwnFailuresAreSaid) {
   // nothing landed: the failures came before any table was written
   EXPECT_NE(r.out.find("\n0\n"), std::string::npos) << r.out;
 }
+
+// `--prune` where nothing can be removed (a tmpfs remounted read-only, which stops root too): 73
+// naming the file and how many were removed before it (none); nothing is listed as removed, and
+// the file stays.
+TEST(Hostile, PruneOnAReadOnlyFileSystemListsOnlyWhatItRemoved) {
+  const fs::path d = freshDir("hostile", "prune_ro");
+  fs::create_directories(d / "disk");
+  const std::string disk = (d / "disk").string();
+  std::ofstream(d / "t.sh")
+      << "set -u\n"
+         "mount -t tmpfs -o size=20m tmpfs '" << disk << "' || { echo 'cannot mount a tmpfs (root needed)'; exit 99; }\n"
+         "cp '" BRDFBAKE_SOURCE_DIR "/examples/scenes/pbr-desktop.toml' '" << disk << "/s.toml'\n"
+         "'" BRDFBAKE_EXE "' bake '" << disk << "/s.toml' -o '" << disk << "/out' > /dev/null || exit 98\n"
+         "sed -i 's/fresnel = \"dielectric\"/fresnel = \"schlick\"/; s/eta = 1.33/f0 = 0.02/' '" << disk << "/s.toml'\n"
+         "mount -o remount,ro '" << disk << "' || exit 97\n"
+         "'" BRDFBAKE_EXE "' bake '" << disk << "/s.toml' -o '" << disk << "/out' --prune; echo \"rc=$?\"\n"
+         "ls '" << disk << "/out'\n";
+  CmdResult r{0, ""};
+  FILE* p = popen(("unshare -m sh '" + (d / "t.sh").string() + "' 2>&1").c_str(), "r");
+  char buf[4096];
+  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
+  r.code = pclose(p);
+  ASSERT_EQ(r.out.find("cannot mount"), std::string::npos) << r.out;
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("rc=73"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--prune: cannot remove " + disk + "/out/albedo_ggx_smith-correlated_dielectric-eta1.33.exr (0 of 1 "
+                       "removed before it): Read-only file system"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("removed, no longer needed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nalbedo_ggx_smith-correlated_dielectric-eta1.33.exr\n"), std::string::npos) << r.out;
+}
