@@ -58,7 +58,7 @@ void onCrash(int sig) {
   say(g_dir);
   say("'; PoCL does this when that directory is removed or changed while it links kernels. Run again (the "
       "cache is rebuilt), or give --cache-dir DIR on a directory nothing else changes.\n");
-  ::_exit(kExitSoftware);
+  ::_exit(kExitCantCreat);
 }
 
 void onExit() {
@@ -101,6 +101,14 @@ void checkDriverCacheSpace(const std::string& dir) {
                               " KiB free; building the kernels needs up to " +
                               std::to_string(kDriverCacheMinFree >> 20) +
                               " MiB there: free space, or give --cache-dir DIR on another file system");
+}
+
+ExitCode driverFailureCode(const std::string& log, const std::string& dir) {
+  if (log.find("error:") != std::string::npos) return kExitSoftware;
+  struct stat st {};
+  if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || ::access(dir.c_str(), W_OK | X_OK) != 0)
+    return kExitCantCreat;
+  return kExitSoftware;
 }
 
 std::string driverCacheHint(const std::string& log, const std::string& dir) {

@@ -10,6 +10,8 @@
 #pragma once
 #include <string>
 
+#include "brdfbake/error.h"
+
 namespace brdfbake {
 
 // Free bytes below which a source build is refused before the driver starts (74): 16 MiB, 8 times
@@ -24,9 +26,14 @@ void checkDriverCacheSpace(const std::string& dir);
 // one): where the driver writes, and what to look at.
 std::string driverCacheHint(const std::string& log, const std::string& dir);
 
+// The exit status of a build that failed with `log`: 73 when the log holds no compiler diagnostic
+// and the cache directory is gone or cannot be written (removed during the build), else 70.
+ExitCode driverFailureCode(const std::string& log, const std::string& dir);
+
 // Marks the driver at work for its scope (nested and concurrent scopes count). While one is open, a
 // crash (SIGABRT, SIGSEGV, SIGBUS) or an exit() from inside the driver is reported as the driver's
-// failure in `dir`, with exit status 70 (crash) or 74 (exit, LLVM's I/O failure), once
+// failure in `dir`, with exit status 73 (a crash: the directory changed underneath) or 74 (an exit:
+// LLVM's I/O failure), once
 // installDriverGuards() has run.
 class DriverWork {
  public:

@@ -124,7 +124,8 @@ void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* don
     prog = cl::Program(slot.context, source);
     std::string log = buildLog(prog, device_, &rc);
     if (rc != CL_SUCCESS)
-      throw Error(kExitSoftware, "OpenCL kernel build failed for " + name + " (" + std::to_string(rc) +
+      throw Error(driverCache.empty() ? kExitSoftware : driverFailureCode(log, driverCache),
+                  "OpenCL kernel build failed for " + name + " (" + std::to_string(rc) +
                                      "); build log:\n" + log +
                                      (driverCache.empty() ? std::string() : driverCacheHint(log, driverCache)));
   }
