@@ -20,6 +20,7 @@
 #include "common/errors.h"
 #include "scene/scene.h"
 #include "scene/scene_plan.h"
+#include "tables/registry.h"
 
 namespace fs = std::filesystem;
 namespace {
@@ -155,6 +156,46 @@ TEST(Scene, DamagedTablesAreBakedAgain) {
   EXPECT_EQ(read(cut), goodCut);
   r = run("bake '" + scene + "' -o '" + out.string() + "'");
   EXPECT_NE(r.out.find("all 6 table(s) up to date"), std::string::npos) << r.out;
+}
+
+// Each table kind is described once, by a family that bakes it (tables/kind_info.h), and --size's
+// defaults are the documented ones (docs/commands.md): 128 for splitsum, fresnel-avg and the
+// Ashikhmin-Shirley textures, 32 for the others.
+TEST(Registry, EveryKindIsDescribedOnceByAFamilyThatBakesIt) {
+  ASSERT_EQ(allKinds().size(), tableNames().size());
+  for (const KindInfo& k : allKinds()) {
+    int describers = 0;
+    for (const TableFamily* f : families())
+      for (const KindInfo& d : f->describe()) describers += d.kind == k.kind;
+    EXPECT_EQ(describers, 1) << tableName(k.kind);
+    const std::vector<TableKind> baked = familyOf(k.kind).kinds();
+    EXPECT_NE(std::find(baked.begin(), baked.end(), k.kind), baked.end()) << tableName(k.kind);
+    const std::string n = tableName(k.kind);
+    EXPECT_EQ(defaultSize(k.kind), n == "splitsum" || n == "fresnel-avg" || n == "ashikhmin-shirley" ? 128 : 32) << n;
+    EXPECT_EQ(findKind(n), &kindInfo(k.kind));
+    if (k.shader == ShaderLookup::Value) EXPECT_FALSE(k.shaderValue.empty()) << n;
+  }
+  EXPECT_EQ(findKind("nothing"), nullptr);
+}
+
+// A manifest's [output.size] takes exactly the kinds whose families say scenes plan them
+// (KindInfo::inScenes), and the 3-axis form N or [X, Y, Z] exactly where the kind takes three sizes.
+TEST(Scene, OutputSizeKeysAreTheKindsScenesPlan) {
+  for (const KindInfo& k : allKinds()) {
+    const std::string name = tableName(k.kind);
+    const std::string text = "[output.size]\n\"" + name + "\" = " + (k.sizeAxes == 3 ? "[4, 4, 4]" : "16") +
+                             "\n[[material]]\nname = \"a\"\n";
+    bool parsed = true;
+    std::string why;
+    try {
+      parseManifest(text, "k.toml");
+    } catch (const Error& e) {
+      parsed = false;
+      why = e.what();
+    }
+    EXPECT_EQ(parsed, k.inScenes) << name << ": " << why;
+    if (!k.inScenes) EXPECT_NE(why.find("unknown key '" + name + "' in [output.size]"), std::string::npos) << why;
+  }
 }
 
 TEST(Scene, BadManifestsNameFileLineColumnAndWriteNothing) {

@@ -6,6 +6,7 @@
 
 #include "bake/bake.h"
 #include "common/format.h"
+#include "tables/registry.h"
 
 namespace brdfbake {
 
@@ -51,13 +52,11 @@ std::string energyWarnings(const TableImage& t) {
   if (bad)
     return "warning: " + std::to_string(bad) + " texel value(s) are not finite (NaN or Inf): brdfbake never writes one; "
            "the file is damaged or was not written by brdfbake\n";
-  std::string table = str("brdf.table");
-  // the energy quantity's channel: E = A + B (splitsum B), E (albedo R), E_avg (albedo-avg R)
-  std::string name, channel;
-  if (table == "splitsum") name = "A+B", channel = "B";
-  else if (table == "albedo") name = "E", channel = "R";
-  else if (table == "albedo-avg") name = "E_avg", channel = "R";
-  else return "";
+  // the energy quantity and its channel, as the kind's family describes them (E = A + B in the
+  // split sum's B, E in the albedo's R, ...)
+  const KindInfo* kind = findKind(str("brdf.table"));
+  if (!kind || kind->energy.empty()) return "";
+  const std::string &name = kind->energy, &channel = kind->energyChannel;
   for (size_t c = 0; c < t.channels.size(); ++c) {
     if (t.channels[c] != channel) continue;
     float mx = 0;
@@ -71,7 +70,7 @@ std::string energyWarnings(const TableImage& t) {
       if (str("brdf.material").rfind("merl:", 0) == 0)  // measured data: the file, not a model
         return "warning: " + name + " exceeds 1 (max " + b + "): " + str("brdf.material") +
                " reflects more than it receives (a measurement or calibration error in the data)\n";
-      if (!str("brdf.diffuse").empty() && table == "albedo") {
+      if (!str("brdf.diffuse").empty() && kind->shader == ShaderLookup::Value) {  // a diffuse model's albedo
         std::string d = str("brdf.diffuse");
         std::string why = d == "burley" ? " (a known property of Burley's model: rough surfaces at grazing angles)"
                           : d == "oren-nayar" ? " (a property of the qualitative model's A and B: E(0) = A + B/2 > 1 for small sigma)"

@@ -14,6 +14,7 @@
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"
+#include "tables/registry.h"
 
 namespace brdfbake {
 
@@ -66,7 +67,7 @@ void checkFormatOptions(BakeRequest& req) {
                                                           : " stores unorm16 only (its values mapped onto [0, 1]); leave "
                                                             "--precision out or give unorm16"));
   const bool png = std::find(req.formats.begin(), req.formats.end(), FileFormat::Png16) != req.formats.end();
-  if (png && std::find(req.tables.begin(), req.tables.end(), TableKind::Brdf3d) != req.tables.end())
+  if (png && std::any_of(req.tables.begin(), req.tables.end(), [](TableKind t) { return kindInfo(t).sizeAxes == 3; }))
     throw Error(kExitUsage, "--format png16: a 3D table (brdf3d) has no PNG form (PNG is 2D); use ktx2 or dds (3D "
                             "textures), exr (an atlas of slices) or header");
 }
@@ -312,10 +313,11 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     if (req.tables.empty())
       req.tables = cmd.kind == Command::Kind::Convergence ? std::vector<TableKind>{TableKind::Albedo}
                                                           : std::vector<TableKind>{TableKind::Albedo, TableKind::AlbedoAvg};
+    const std::vector<TableKind> measured = kindsFor(req);  // the measured family's kinds
     for (TableKind t : req.tables)
-      if (t != TableKind::Albedo && t != TableKind::AlbedoAvg && t != TableKind::SplitSum)
+      if (std::find(measured.begin(), measured.end(), t) == measured.end())
         throw Error(kExitUsage, "--brdf merl:" + req.merl + ": --table " + tableName(t) +
-                                    " has no measured form; a measured material bakes albedo, albedo-avg or splitsum");
+                                    " has no measured form; a measured material bakes " + kindNames(measured));
   }
   if (!req.preset.empty()) {
     // the preset names its own models and tables (plan/plan.cpp makePresetPlan)

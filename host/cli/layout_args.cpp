@@ -3,6 +3,7 @@
 
 #include "cli/commands.h"
 #include "common/errors.h"
+#include "tables/registry.h"
 
 namespace brdfbake {
 
@@ -64,10 +65,13 @@ void validateMuAxis(bool gridGiven, BakeRequest& req) {
   if (!req.preset.empty())
     throw Error(kExitUsage, o + ": --preset " + req.preset + " bakes what glTF samples, on a linear mu axis "
                                 "(accepted: --mu-axis linear)");
+  std::vector<TableKind> takers;  // the kinds over (mu, r), as their families describe them
+  for (const KindInfo& k : allKinds())
+    if (k.muRAxes) takers.push_back(k.kind);
   for (TableKind t : req.tables)
-    if (t != TableKind::SplitSum && t != TableKind::Albedo)
+    if (!kindInfo(t).muRAxes)
       throw Error(kExitUsage, o + ": --table " + tableName(t) + " has no (mu, r) x axis to space in sqrt(mu); the " +
-                                  "option applies to --table splitsum and albedo (bake " + tableName(t) +
+                                  "option applies to --table " + kindNames(takers, "and") + " (bake " + tableName(t) +
                                   " in a run without it, or give --mu-axis linear)");
 }
 

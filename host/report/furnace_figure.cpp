@@ -12,6 +12,7 @@
 #include "render/furnace.h"
 #include "render/gl_context.h"
 #include "render/labels.h"
+#include "tables/registry.h"
 
 namespace fs = std::filesystem;
 
@@ -37,9 +38,8 @@ struct ScratchDir {
 }  // namespace
 
 bool furnaceSamples(const std::string& kind) {
-  for (const char* k : {"splitsum", "albedo", "albedo-avg", "dielectric", "dielectric-avg"})
-    if (kind == k) return true;
-  return false;
+  const KindInfo* k = findKind(kind);
+  return k && k->furnace;
 }
 
 FurnaceFigures::FurnaceFigures(std::string device) : device_(std::move(device)) {}

@@ -12,6 +12,7 @@
 #include "formats/readers/table_reader.h"
 #include "shader/atlas_lookups.h"
 #include "shader/shader_lang.h"
+#include "tables/registry.h"
 
 namespace brdfbake {
 
@@ -130,8 +131,8 @@ std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, 
 }
 
 // The quantities of each table kind, on both paths.
-std::string semantics2d(const Lang& L, const std::string& P, const TableImage& h, bool oneD) {
-  const std::string table = attr(h, "brdf.table"), channels = attr(h, "brdf.channels");
+std::string semantics2d(const Lang& L, const std::string& P, const TableImage& h, const KindInfo& kind, bool oneD) {
+  const std::string channels = attr(h, "brdf.channels");
   const bool rgb = channels.rfind("R,G,B", 0) == 0;
   const std::string args = oneD ? "float x" : "float mu, float r";
   // the layout (formats/layout.h): r along x swaps the arguments; the stored channels give A and B
@@ -159,7 +160,7 @@ std::string semantics2d(const Lang& L, const std::string& P, const TableImage& h
       s += type + " " + P + "_" + name + variant + "(" + L.texParam() + (extra.empty() ? "" : ", " + extra) + ", " + args +
            ") {\n" + body + "}\n";
     };
-    if (table == "splitsum") {
+    if (kind.shader == ShaderLookup::SplitSum) {
       fn(L.f2(), "AB", "", "  " + L.f4() + " v = " + get + ";\n  return " + L.f2() + "(" + exA + ", " + exB + ");\n");
       fn(L.f3(), "Schlick", L.f3() + " f0", "  " + L.f4() + " v = " + get + ";\n  return f0 * " + exA + " + " + exB + ";\n");
       if (!plainLayout) {
@@ -169,11 +170,11 @@ std::string semantics2d(const Lang& L, const std::string& P, const TableImage& h
            "  " + L.f4() + " v = " + get + ";\n  return f0 * v.r + v.g - b * v.b;\n");
       else if (channels.find("E_d") != std::string::npos)
         fn("float", "DiffuseAlbedo", "", "  return " + get + ".b;\n");
-    } else if (table == "albedo" || table == "albedo-avg" || table == "kp" || table == "fresnel-avg") {
-      std::string name = table == "albedo" ? "E" : table == "albedo-avg" ? "Eavg" : table == "kp" ? "Kp" : "Favg";
+    } else if (kind.shader == ShaderLookup::Value) {
+      const std::string& name = kind.shaderValue;
       if (rgb) fn(L.f3(), name, "", "  return " + get + ".rgb;\n");
       else fn("float", name, "", "  return " + get + ".r;\n");
-    } else if (table == "dielectric-avg") {
+    } else if (kind.shader == ShaderLookup::EtaAverages) {
       // (r, s) stored; the eta a material has, mapped as the table's eta axis is
       s += "// E_R,avg, E_T,avg and their sum at (r, eta), eta by s = (eta - 1)/(eta + 1)\n";
       s += L.f3() + " " + P + "_albedosAvg" + variant + "(" + L.texParam() + ", float r, float eta) {\n  return " + P +
@@ -198,6 +199,8 @@ std::string shaderForTable(const std::string& path, const TableImage& h, ShaderL
   Lang L{lang == ShaderLang::Hlsl};
   const std::string P = shaderPrefix(path), table = attr(h, "brdf.table");
   if (table.empty()) throw Error(kExitDataErr, path + ": no brdf.table attribute: not a table brdfbake wrote");
+  const KindInfo* kind = findKind(table);
+  if (!kind) throw Error(kExitDataErr, path + ": brdf.table '" + table + "' is no table kind brdfbake writes");
   std::string s = "// ---- " + path + ": " + table;
   if (!attr(h, "brdf.ndf").empty()) s += ", " + attr(h, "brdf.ndf") + " + " + attr(h, "brdf.gaf");
   s += "\n// axes " + attr(h, "brdf.axes") + ", " + attr(h, "brdf.grid") + " grid, " +
@@ -208,43 +211,45 @@ std::string shaderForTable(const std::string& path, const TableImage& h, ShaderL
          " (integration, float arithmetic, storage); add the interpolation error of the resolution" +
          (h.floats.count("brdf.interp-error") ? " (brdf.interp-error " + fmtG(h.floats.at("brdf.interp-error")) + ")" : "") +
          " and, on the hardware path, the filter's (8-bit weights: up to ~1/512 of a texel step)\n";
-  if (table == "brdf3d") return s + shadergen::lookups3d(L, P, path, h);
-  if (table == "dielectric") return s + shadergen::lookupsDielectric(L, P, path, h);
-  if (table == "ashikhmin-shirley")
+  if (kind->shader == ShaderLookup::Volume) return s + shadergen::lookups3d(L, P, path, h);
+  if (kind->shader == ShaderLookup::EtaVolume) return s + shadergen::lookupsDielectric(L, P, path, h);
+  if (kind->shader == ShaderLookup::OwnShader)
     throw Error(kExitDataErr, path + ": the Ashikhmin-Shirley textures come with their own shader "
                                      "(shaders/ashikhmin_shirley.glsl)");
   std::vector<Axis> ax = axesOf(path, h);
   bool node = attr(h, "brdf.grid") == "node";
   if (!node)
     s += "// texel-center grid: within half a texel of an edge both paths return the edge texels (clamp)\n";
-  return s + lookups2d(L, P, h, ax, node) + semantics2d(L, P, h, h.height == 1);
+  return s + lookups2d(L, P, h, ax, node) + semantics2d(L, P, h, *kind, h.height == 1);
 }
 
 std::string shaderForFiles(const std::vector<std::string>& paths, ShaderLang lang) {
   std::string s = lang == ShaderLang::Glsl
                       ? "// Generated by brdfbake shader --lang glsl (GLSL ES 3.00, 3.30 and later)\n"
                       : "// Generated by brdfbake shader --lang hlsl (shader model 4 and later)\n";
-  std::map<std::string, std::map<std::string, std::string>> byPair;  // ndf+gaf -> table -> prefix
+  // ndf+gaf -> accessor ("E", "Eavg", "AB") -> prefix: the lookups shaders/multiscatter.glsl calls
+  std::map<std::string, std::map<std::string, std::string>> byPair;
   for (const auto& p : paths) {
     std::string from;
     TableImage h = tableMetadata(p, &from);  // any format the baker writes (a DDS's from the file beside it)
     s += "\n";
     if (!from.empty()) s += "// (" + p + " holds no metadata: the table's is read from " + from + ")\n";
     s += shaderForTable(p, h, lang);
-    std::string table = attr(h, "brdf.table"), channels = attr(h, "brdf.channels");
-    bool plain = attr(h, "brdf.fresnel", "one") == "one" || table == "splitsum";
-    if (plain && channels.rfind("R,G,B", 0) != 0)
-      byPair[attr(h, "brdf.ndf") + "+" + attr(h, "brdf.gaf")][table] = shaderPrefix(p);
+    const KindInfo& kind = *findKind(attr(h, "brdf.table"));  // shaderForTable refused the others
+    const std::string accessor = kind.shader == ShaderLookup::SplitSum ? "AB" : kind.shaderValue;
+    bool plain = attr(h, "brdf.fresnel", "one") == "one" || kind.shader == ShaderLookup::SplitSum;
+    if (plain && attr(h, "brdf.channels").rfind("R,G,B", 0) != 0)
+      byPair[attr(h, "brdf.ndf") + "+" + attr(h, "brdf.gaf")][accessor] = shaderPrefix(p);
   }
   for (const auto& [pair, tables] : byPair) {
-    if (!tables.count("albedo") || !tables.count("albedo-avg") || !tables.count("splitsum")) continue;
+    if (!tables.count("E") || !tables.count("Eavg") || !tables.count("AB")) continue;
     bool hlsl = lang == ShaderLang::Hlsl;
     auto decl = [&](const std::string& prefix) {
       return hlsl ? "Texture2D<float4> " + prefix + "_tex;\nSamplerState " + prefix + "_smp;\n"
                   : "uniform sampler2D " + prefix + "_tex;\n";
     };
     auto args = [&](const std::string& prefix) { return hlsl ? prefix + "_tex, " + prefix + "_smp" : prefix + "_tex"; };
-    const std::string &e = tables.at("albedo"), &avg = tables.at("albedo-avg"), &ab = tables.at("splitsum");
+    const std::string &e = tables.at("E"), &avg = tables.at("Eavg"), &ab = tables.at("AB");
     s += "\n// ---- " + pair + ": the lookups shaders/multiscatter.glsl calls (bind the three tables)\n";
     s += decl(e) + decl(avg) + decl(ab);
     s += "float lookupE(float mu, float r) { return " + e + "_E(" + args(e) + ", mu, r); }\n";

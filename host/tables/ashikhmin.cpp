@@ -11,6 +11,7 @@
 #include "common/errors.h"
 #include "common/format.h"
 #include "tables/family.h"
+#include "tables/registry.h"
 #include "tables/ladder.h"
 
 namespace brdfbake {
@@ -20,8 +21,12 @@ namespace {
 class Ashikhmin final : public TableFamily {
  public:
   std::string name() const override { return "ashikhmin-shirley"; }
-  std::vector<TableKind> kinds() const override { return {TableKind::AshikhminShirley}; }
-  int defaultSize(TableKind) const override { return 128; }
+  std::vector<KindInfo> describe() const override {
+    KindInfo k{TableKind::AshikhminShirley};
+    k.defaultSize = 128;
+    k.shader = ShaderLookup::OwnShader;
+    return {k};
+  }
 
   std::vector<Job> plan(const BakeRequest& req) const override {
     if (!req.merl.empty() || !req.preset.empty()) return {};
@@ -30,7 +35,7 @@ class Ashikhmin final : public TableFamily {
       throw Error(kExitUsage, "--fresnel " + fresnelNames()[req.fresnel.model] +
                                   ": --table ashikhmin-shirley holds Schlick's F split as R_s R + G (R_s enters in "
                                   "the shader); bake it without --fresnel");
-    int n = req.size ? *req.size : defaultSize(TableKind::AshikhminShirley);
+    int n = req.size ? *req.size : brdfbake::defaultSize(TableKind::AshikhminShirley);
     checkAshikhminRequest(n, req.half, req.nodeGrid);
     if (req.diffuse >= 0)
       throw Error(kExitUsage, "--diffuse " + diffuseNames()[req.diffuse] +

@@ -115,7 +115,13 @@ std::vector<Job> planVolumes(const TableFamily* family, const BakeRequest& req) 
 class Brdf3d final : public TableFamily {
  public:
   std::string name() const override { return "brdf3d"; }
-  std::vector<TableKind> kinds() const override { return {TableKind::Brdf3d}; }
+  std::vector<KindInfo> describe() const override {
+    KindInfo k{TableKind::Brdf3d};
+    k.sizeAxes = 3;
+    k.shader = ShaderLookup::Volume;
+    k.inScenes = true;
+    return {k};
+  }
 
   std::vector<Job> plan(const BakeRequest& req) const override {
     if (!req.merl.empty() || !req.preset.empty()) return {};

@@ -207,7 +207,15 @@ Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
 class Dielectric final : public TableFamily {
  public:
   std::string name() const override { return "dielectric"; }
-  std::vector<TableKind> kinds() const override { return {TableKind::Dielectric, TableKind::DielectricAvg}; }
+  std::vector<KindInfo> describe() const override {
+    KindInfo cube{TableKind::Dielectric};
+    cube.shader = ShaderLookup::EtaVolume;
+    cube.inScenes = cube.furnace = true;
+    KindInfo avg{TableKind::DielectricAvg};
+    avg.shader = ShaderLookup::EtaAverages;
+    avg.inScenes = avg.furnace = true;
+    return {cube, avg};
+  }
 
   std::vector<Job> plan(const BakeRequest& req) const override {
     if (!req.merl.empty() || !req.preset.empty()) return {};

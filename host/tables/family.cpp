@@ -11,6 +11,12 @@
 
 namespace brdfbake {
 
+std::vector<TableKind> TableFamily::kinds() const {
+  std::vector<TableKind> v;
+  for (const KindInfo& k : describe()) v.push_back(k.kind);
+  return v;
+}
+
 BakeContext::~BakeContext() = default;
 
 KernelRunner& BakeContext::runner() {

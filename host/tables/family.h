@@ -18,6 +18,7 @@
 #include "cl/runner.h"
 #include "formats/exr/table_file.h"
 #include "tables/job.h"
+#include "tables/kind_info.h"
 #include "brdfbake/report.h"
 #include "brdfbake/request.h"
 
@@ -117,10 +118,11 @@ class TableFamily {
  public:
   virtual ~TableFamily() = default;
   virtual std::string name() const = 0;
-  // The table kinds it bakes (--table names).
-  virtual std::vector<TableKind> kinds() const = 0;
-  // --size's default for a kind.
-  virtual int defaultSize(TableKind) const { return 32; }
+  // The table kinds it defines, each described once (tables/kind_info.h); the registry gathers them.
+  virtual std::vector<KindInfo> describe() const { return {}; }
+  // The table kinds it bakes (--table names): those it describes, unless it bakes kinds another
+  // family defines (a measured material's).
+  virtual std::vector<TableKind> kinds() const;
   // The request's jobs of this family (none when the request asks for none of its kinds). Throws
   // Error(kExitUsage) naming the option for a request it cannot honour.
   virtual std::vector<Job> plan(const BakeRequest& req) const = 0;

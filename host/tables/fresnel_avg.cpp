@@ -8,6 +8,7 @@
 #include "tables/error_model.h"
 #include "common/material.h"
 #include "tables/family.h"
+#include "tables/registry.h"
 #include "common/format.h"
 #include "reference/reference.h"
 #include "tables/ladder.h"
@@ -23,8 +24,12 @@ constexpr double kEtaLo = 0.25, kEtaHi = 4.0;
 class FresnelAvg final : public TableFamily {
  public:
   std::string name() const override { return "fresnel-avg"; }
-  std::vector<TableKind> kinds() const override { return {TableKind::FresnelAvg}; }
-  int defaultSize(TableKind) const override { return 128; }
+  std::vector<KindInfo> describe() const override {
+    KindInfo k{TableKind::FresnelAvg};
+    k.defaultSize = 128;
+    k.shaderValue = "Favg";
+    return {k};
+  }
 
   std::vector<Job> plan(const BakeRequest& req) const override {
     if (!req.merl.empty() || !req.preset.empty()) return {};
@@ -33,7 +38,7 @@ class FresnelAvg final : public TableFamily {
       throw Error(kExitUsage, "--table fresnel-avg runs over eta: it takes --fresnel dielectric or schlick-tir (for "
                               "other models brdfbake energy prints F_avg, and every Fresnel table records it as "
                               "brdf.fresnel.avg)");
-    int n = req.size ? *req.size : defaultSize(TableKind::FresnelAvg);
+    int n = req.size ? *req.size : brdfbake::defaultSize(TableKind::FresnelAvg);
     if (n < 2) throw Error(kExitUsage, "--size must be at least 2 for fresnel-avg, got " + std::to_string(n));
     TableJob job{TableKind::FresnelAvg, -1, -1, n, 1, req.nodeGrid, req.half, "", req.fresnel, -1};
     job.path = req.outDir + "/fresnel-avg_" + fresnelNames()[job.fresnel.model] + ".exr";

@@ -212,10 +212,25 @@ namespace {
 class Microfacet final : public TableFamily {
  public:
   std::string name() const override { return "microfacet"; }
-  std::vector<TableKind> kinds() const override {
-    return {TableKind::SplitSum, TableKind::Albedo, TableKind::AlbedoAvg, TableKind::Kp};
+  std::vector<KindInfo> describe() const override {
+    KindInfo splitsum{TableKind::SplitSum};
+    splitsum.defaultSize = 128;
+    splitsum.energy = "A+B", splitsum.energyChannel = "B";
+    splitsum.shader = ShaderLookup::SplitSum;
+    splitsum.inScenes = splitsum.furnace = splitsum.muRAxes = splitsum.layouts = true;
+    KindInfo albedo{TableKind::Albedo};
+    albedo.energy = "E", albedo.energyChannel = "R";
+    albedo.shaderValue = "E";
+    albedo.inScenes = albedo.furnace = albedo.muRAxes = true;
+    KindInfo avg{TableKind::AlbedoAvg};
+    avg.energy = "E_avg", avg.energyChannel = "R";
+    avg.shaderValue = "Eavg";
+    avg.inScenes = avg.furnace = true;
+    KindInfo kp{TableKind::Kp};
+    kp.shaderValue = "Kp";
+    kp.inScenes = true;
+    return {splitsum, albedo, avg, kp};
   }
-  int defaultSize(TableKind kind) const override { return kind == TableKind::SplitSum ? 128 : 32; }
 
   std::vector<Job> plan(const BakeRequest& req) const override {
     if (!req.merl.empty()) return {};

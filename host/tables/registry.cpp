@@ -40,9 +40,53 @@ const TableFamily& familyFor(const BakeRequest& req, TableKind kind) {
     if (f->takes(req) && std::find(k.begin(), k.end(), kind) != k.end()) return *f;
   }
   throw Error(kExitUsage, "--table " + tableName(kind) + ": no table family bakes it for this request" +
-                              (req.merl.empty() ? "" : " (a measured material bakes albedo, albedo-avg or splitsum)"));
+                              (req.merl.empty() ? "" : " (a measured material bakes " + kindNames(kindsFor(req)) + ")"));
 }
 
-int defaultSize(TableKind kind) { return familyOf(kind).defaultSize(kind); }
+std::vector<TableKind> kindsFor(const BakeRequest& req) {
+  std::vector<TableKind> v;
+  for (const TableFamily* f : families())
+    if (f->takes(req))
+      for (TableKind k : f->kinds())
+        if (std::find(v.begin(), v.end(), k) == v.end()) v.push_back(k);
+  return v;
+}
+
+std::string kindNames(const std::vector<TableKind>& kinds, const std::string& last) {
+  std::string s;
+  for (size_t i = 0; i < kinds.size(); ++i)
+    s += (i == 0 ? "" : i + 1 == kinds.size() ? " " + last + " " : ", ") + tableName(kinds[i]);
+  return s;
+}
+
+const std::vector<KindInfo>& allKinds() {
+  static const std::vector<KindInfo> all = [] {
+    std::vector<KindInfo> v;
+    for (size_t k = 0; k < tableNames().size(); ++k) {
+      const TableKind kind = static_cast<TableKind>(k);
+      const KindInfo* found = nullptr;
+      for (const TableFamily* f : families())
+        for (const KindInfo& info : f->describe())
+          if (info.kind == kind) {
+            if (found) throw Error(kExitSoftware, "internal: two families describe " + tableName(kind));
+            v.push_back(info);
+            found = &v.back();
+          }
+      if (!found) throw Error(kExitSoftware, "internal: no table family describes " + tableName(kind));
+    }
+    return v;
+  }();
+  return all;
+}
+
+const KindInfo& kindInfo(TableKind kind) { return allKinds()[static_cast<size_t>(kind)]; }
+
+const KindInfo* findKind(const std::string& name) {
+  for (size_t k = 0; k < tableNames().size(); ++k)
+    if (tableNames()[k] == name) return &allKinds()[k];
+  return nullptr;
+}
+
+int defaultSize(TableKind kind) { return kindInfo(kind).defaultSize; }
 
 }  // namespace brdfbake
