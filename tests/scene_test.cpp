@@ -179,11 +179,11 @@ TEST(Registry, EveryKindIsDescribedOnceByAFamilyThatBakesIt) {
 }
 
 // A manifest's [output.size] takes exactly the kinds whose families say scenes plan them
-// (KindInfo::inScenes), and the 3-axis form N or [X, Y, Z] exactly where the kind takes three sizes.
+// (KindInfo::inScenes), and the form [X, Y, Z] where the kind is a 3D texture (KindInfo::volume).
 TEST(Scene, OutputSizeKeysAreTheKindsScenesPlan) {
   for (const KindInfo& k : allKinds()) {
     const std::string name = tableName(k.kind);
-    const std::string text = "[output.size]\n\"" + name + "\" = " + (k.sizeAxes == 3 ? "[4, 4, 4]" : "16") +
+    const std::string text = "[output.size]\n\"" + name + "\" = " + (k.volume ? "[4, 4, 4]" : "16") +
                              "\n[[material]]\nname = \"a\"\n";
     bool parsed = true;
     std::string why;

@@ -32,6 +32,14 @@ std::vector<std::string> splitCommas(const std::string& s) {
 
 namespace {
 
+// The albedo kinds (a Fresnel model's or a measured material's default tables), or the first of
+// them alone (convergence measures one kind).
+std::vector<TableKind> albedoKinds(bool firstOnly) {
+  std::vector<TableKind> v = kindsWhere([](const KindInfo& k) { return k.albedo; });
+  if (firstOnly) v.resize(1);
+  return v;
+}
+
 int parseSize(const std::string& text) {
   errno = 0;
   char* end = nullptr;
@@ -67,7 +75,7 @@ void checkFormatOptions(BakeRequest& req) {
                                                           : " stores unorm16 only (its values mapped onto [0, 1]); leave "
                                                             "--precision out or give unorm16"));
   const bool png = std::find(req.formats.begin(), req.formats.end(), FileFormat::Png16) != req.formats.end();
-  if (png && std::any_of(req.tables.begin(), req.tables.end(), [](TableKind t) { return kindInfo(t).sizeAxes == 3; }))
+  if (png && std::any_of(req.tables.begin(), req.tables.end(), [](TableKind t) { return kindInfo(t).volume; }))
     throw Error(kExitUsage, "--format png16: a 3D table (brdf3d) has no PNG form (PNG is 2D); use ktx2 or dds (3D "
                             "textures), exr (an atlas of slices) or header");
 }
@@ -311,8 +319,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       throw Error(kExitUsage, "--brdf merl:" + req.merl + ": the measured data is the whole material; --ndf, --gaf, "
                               "--fresnel, --diffuse and their parameters do not apply");
     if (req.tables.empty())
-      req.tables = cmd.kind == Command::Kind::Convergence ? std::vector<TableKind>{TableKind::Albedo}
-                                                          : std::vector<TableKind>{TableKind::Albedo, TableKind::AlbedoAvg};
+      req.tables = albedoKinds(cmd.kind == Command::Kind::Convergence);
     const std::vector<TableKind> measured = kindsFor(req);  // the measured family's kinds
     for (TableKind t : req.tables)
       if (std::find(measured.begin(), measured.end(), t) == measured.end())
@@ -326,7 +333,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
                               "--fresnel, --diffuse and --brdf do not apply (--size, --grid, --half, -o do)");
     req.ndfs = {NDF_GGX, NDF_CHARLIE};
     req.gafs = {GAF_SMITH_CORRELATED, GAF_NEUBELT, GAF_CHARLIE_SMITH};
-    req.tables = {TableKind::SplitSum, TableKind::Albedo};
+    req.tables = kindsWhere([](const KindInfo& k) { return k.muRAxes; });  // the preset's split sums and albedos
   }
   // the sheen NDF alone without --gaf: its own visibility (the default smith-correlated does not pair)
   if (req.gafs.empty() && !req.ndfs.empty() && std::all_of(req.ndfs.begin(), req.ndfs.end(), isSheenNdf))
@@ -354,7 +361,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     if (req.tables.size() > 1)
       throw Error(kExitUsage, "--table: convergence measures one table kind at a time, got " +
                                   std::to_string(req.tables.size()));
-    if (req.tables.empty()) req.tables = {TableKind::Albedo};
+    if (req.tables.empty()) req.tables = albedoKinds(true);
   }
   if (req.sigma && cmd.kind == Command::Kind::Bake) {
     if (req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
@@ -364,13 +371,13 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   validateVolumeOptions(cmd.kind == Command::Kind::Bake, req);
   if (!req.tables.empty()) {
   } else if (req.diffuse >= 0) {
-    req.tables = {TableKind::Albedo};  // the diffuse model's albedo
+    req.tables = kindsWhere([](const KindInfo& k) { return k.albedo && k.muRAxes; });  // the diffuse model's albedo
   } else if (req.fresnelGiven) {
-    req.tables = {TableKind::Albedo, TableKind::AlbedoAvg};  // the tables a Fresnel model enters
+    req.tables = albedoKinds(false);  // the tables a Fresnel model enters
   } else if (req.layoutPreset || !req.layout.identity()) {
-    req.tables = {TableKind::SplitSum};  // the one table a layout arranges
+    req.tables = kindsWhere([](const KindInfo& k) { return k.layouts; });  // the one table a layout arranges
   } else if (req.muSqrt.value_or(false)) {
-    req.tables = {TableKind::SplitSum, TableKind::Albedo};  // the tables over (mu, r)
+    req.tables = kindsWhere([](const KindInfo& k) { return k.muRAxes; });  // the tables over (mu, r)
   } else {
     req.tables = def.tables;
   }

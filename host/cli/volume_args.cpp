@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "common/errors.h"
 #include "common/format.h"
+#include "tables/registry.h"
 
 namespace brdfbake {
 
@@ -107,9 +108,13 @@ bool parseVolumeOption(const std::string& opt, const std::function<const std::st
 void validateVolumeOptions(bool bake, BakeRequest& req) {
   auto& v = req.volume;
   if (v.flags.empty()) return;
-  bool volume = std::find(req.tables.begin(), req.tables.end(), TableKind::Brdf3d) != req.tables.end();
-  // the rough-dielectric cube takes NX,NY,NZ too (tables/dielectric.cpp), and no other brdf3d option
-  bool cube = std::find(req.tables.begin(), req.tables.end(), TableKind::Dielectric) != req.tables.end();
+  // the 3D textures take every option; other kinds with three size axes (the rough-dielectric cube,
+  // tables/dielectric.cpp) take NX,NY,NZ and no other
+  const auto has = [&](bool (*pick)(const KindInfo&)) {
+    return std::any_of(req.tables.begin(), req.tables.end(), [&](TableKind t) { return pick(kindInfo(t)); });
+  };
+  const bool volume = has([](const KindInfo& k) { return k.volume; });
+  const bool cube = has([](const KindInfo& k) { return k.sizeAxes == 3 && !k.volume; });
   if (bake && cube && !volume && v.flags.size() == 1 && v.flags[0] == "--size NX,NY,NZ") return;
   if (!bake || !volume)
     throw Error(kExitUsage, v.flags[0] + ": only --table brdf3d takes it" +

@@ -106,11 +106,11 @@ std::vector<std::string> parseLayoutChannels(const std::string& list) {
 
 TableImage applyLayout(const TableImage& img, const TableLayout& layout) {
   if (layout.identity()) return img;
-  auto table = img.strings.find("brdf.table");
-  if (table == img.strings.end() || table->second != "splitsum" || img.planes.size() < 2)
+  // a layout arranges A and B: a table that stores them as R and G (the split sum's, every variant)
+  auto ch = img.strings.find("brdf.channels");
+  if (ch == img.strings.end() || ch->second.rfind("R=A,G=B", 0) != 0 || img.planes.size() < 2)
     throw Error(kExitUsage, "--layout, --axes, --flip-x, --flip-y, --channels apply to the splitsum table only");
   const std::vector<std::string> chans = layout.channels.empty() ? std::vector<std::string>{"A", "B", "A+B"} : layout.channels;
-  auto ch = img.strings.find("brdf.channels");
   const bool thirdIsSum = img.planes.size() > 2 && ch != img.strings.end() && ch->second.find("B=A+B") != std::string::npos;
   TableImage out = img;
   const int w = img.width, h = img.height;

@@ -9,7 +9,7 @@ BakeRequest defaultRequest() {
   BakeRequest r;
   r.ndfs = {ndfId("ggx")};
   r.gafs = {gafId("smith-correlated")};
-  r.tables = {TableKind::SplitSum, TableKind::Albedo, TableKind::AlbedoAvg, TableKind::Kp};
+  r.tables = kindsWhere([](const KindInfo& k) { return k.inDefaultSet; });
   return r;
 }
 

@@ -13,6 +13,7 @@
 #include "common/format.h"
 #include "tables/family.h"
 #include "version.h"
+#include "tables/registry.h"
 
 namespace brdfbake {
 
@@ -103,51 +104,57 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
     bool schlickLike = fm == FRESNEL_ONE || fm == FRESNEL_SCHLICK;
     if (L.ibl) {
       if (schlickLike || fm == FRESNEL_F82_TINT) {
-        BakeRequest r = request(m, TableKind::SplitSum);
-        r.fresnel.model = fm == FRESNEL_F82_TINT ? FRESNEL_F82_TINT : FRESNEL_SCHLICK;
-        if (fm == FRESNEL_F82_TINT) r.fresnel = m.fresnel;  // its split has a third channel, F0-free
-        r.fresnel.f0.clear();
-        r.fresnel.f82.clear();
-        validateFresnel(r.fresnel);
-        r.fresnelGiven = true;
-        if (m.diffuse == DIFFUSE_BURLEY) r.diffuse = DIFFUSE_BURLEY;
-        addTables(sp, r, m, std::string("image-based lighting (split-sum DFG") +
-                                (m.diffuse == DIFFUSE_BURLEY ? ", burley's diffuse albedo in B" : "") + ")");
+        for (TableKind k : kindsServing(kUseIbl)) {
+          BakeRequest r = request(m, k);
+          r.fresnel.model = fm == FRESNEL_F82_TINT ? FRESNEL_F82_TINT : FRESNEL_SCHLICK;
+          if (fm == FRESNEL_F82_TINT) r.fresnel = m.fresnel;  // its split has a third channel, F0-free
+          r.fresnel.f0.clear();
+          r.fresnel.f82.clear();
+          validateFresnel(r.fresnel);
+          r.fresnelGiven = true;
+          if (m.diffuse == DIFFUSE_BURLEY) r.diffuse = DIFFUSE_BURLEY;
+          addTables(sp, r, m, std::string("image-based lighting (split-sum DFG") +
+                                  (m.diffuse == DIFFUSE_BURLEY ? ", burley's diffuse albedo in B" : "") + ")");
+        }
       } else {
-        BakeRequest r = request(m, TableKind::Albedo);
-        r.fresnel = m.fresnel;
-        r.fresnelGiven = true;
-        addTables(sp, r, m, "image-based lighting (" + fresnelNames()[fm] + " has no Schlick split: its DFG is the "
-                            "Fresnel-weighted albedo)");
+        for (TableKind k : kindsServing(kUseIblFresnel)) {
+          BakeRequest r = request(m, k);
+          r.fresnel = m.fresnel;
+          r.fresnelGiven = true;
+          addTables(sp, r, m, "image-based lighting (" + fresnelNames()[fm] + " has no Schlick split: its DFG is the "
+                              "Fresnel-weighted albedo)");
+        }
       }
     }
     if (L.multiscatter)
-      for (TableKind k : {TableKind::Albedo, TableKind::AlbedoAvg})
+      for (TableKind k : kindsServing(kUseMultiscatter))
         addTables(sp, request(m, k), m, "multiple-scattering compensation (Kulla-Conty E and E_avg, F = 1)");
     if (L.analytic && m.ndf == NDF_GAUSSIAN) {
       anyGaussianAnalytic = true;
-      addTables(sp, request(m, TableKind::Kp), m, "analytic lights (the gaussian's D = p/k_p, k_p has no closed form)");
+      for (TableKind k : kindsServing(kUseNormalisation))
+        addTables(sp, request(m, k), m, "analytic lights (the gaussian's D = p/k_p, k_p has no closed form)");
     }
     if (m.coupling == "albedo-scaling")
-      for (TableKind k : {TableKind::Albedo, TableKind::AlbedoAvg}) {
+      for (TableKind k : kindsServing(kUseAlbedoScaling)) {
         BakeRequest r = request(m, k);
         r.fresnel = m.fresnel;
         r.fresnelGiven = !m.fresnel.isOne();
         addTables(sp, r, m, "albedo-scaling coupling (the diffuse lobe scaled by 1 - E_F, with E_F,avg)");
       }
-    if (m.brdf3d) {
-      anyVolume = true;
-      BakeRequest r = request(m, TableKind::Brdf3d);
-      r.fresnel = m.fresnel;
-      r.fresnelGiven = true;
-      r.diffuse = m.diffuse;
-      r.sigma = m.sigma;
-      r.size.reset();
-      r.volume.roughness = m.roughnessLo;
-      r.volume.rho = m.rho;
-      if (scene.output.brdf3dSize) r.volume.size = scene.output.brdf3dSize;
-      addTables(sp, r, m, "a 3D table of the whole material (brdf3d = true)");
-    }
+    if (m.brdf3d)
+      for (TableKind k : kindsServing(kUseWholeMaterial)) {
+        anyVolume = true;
+        BakeRequest r = request(m, k);
+        r.fresnel = m.fresnel;
+        r.fresnelGiven = true;
+        r.diffuse = m.diffuse;
+        r.sigma = m.sigma;
+        r.size.reset();
+        r.volume.roughness = m.roughnessLo;
+        r.volume.rho = m.rho;
+        if (scene.output.brdf3dSize) r.volume.size = scene.output.brdf3dSize;
+        addTables(sp, r, m, "a 3D table of the whole material (brdf3d = true)");
+      }
     size_t reasonsAfter = 0;
     for (const auto& t : sp.tables) reasonsAfter += t.reasons.size();
     if (sp.tables.size() == before && reasonsAfter > reasonsBefore)
@@ -158,9 +165,9 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
     if (m.transmission) {
       // rough glass: E_R and E_T over (mu, r, eta), and their averages (Kulla-Conty for dielectrics)
       anyGlass = true;
-      for (TableKind k : {TableKind::Dielectric, TableKind::DielectricAvg})
+      for (TableKind k : kindsServing(kUseTransmission))
         addTables(sp, request(m, k), m, "transmission (rough glass: reflected and transmitted albedo" +
-                                            std::string(k == TableKind::DielectricAvg ? ", their averages)" : ")"));
+                                            std::string(kindInfo(k).average ? ", their averages)" : ")"));
     }
     if (m.sheen) {
       // KHR_materials_sheen: the Charlie lobe's albedo (its albedo-scaling of the layers below, with
@@ -169,24 +176,29 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
       SceneMaterial sheen = m;
       sheen.ndf = NDF_CHARLIE;
       sheen.gaf = GAF_CHARLIE_SMITH;
-      BakeRequest a = request(sheen, TableKind::Albedo);
-      addTables(sp, a, m, "KHR_materials_sheen (sheen albedo scaling: E of charlie + charlie-smith)");
+      for (TableKind k : kindsServing(kUseSheen))
+        addTables(sp, request(sheen, k), m, "KHR_materials_sheen (sheen albedo scaling: E of charlie + charlie-smith)");
       if (L.ibl) {
         sheen.gaf = GAF_NEUBELT;
-        addTables(sp, request(sheen, TableKind::SplitSum), m, "KHR_materials_sheen under image-based lighting (charlie + neubelt)");
+        for (TableKind k : kindsServing(kUseSheenIbl))
+          addTables(sp, request(sheen, k), m, "KHR_materials_sheen under image-based lighting (charlie + neubelt)");
       }
     }
     for (const auto& n : m.notes) sp.notes.push_back("material '" + m.name + "': " + n);
   }
-  if (!L.ibl) sp.leftOut.push_back("splitsum: image-based lighting is off (lighting.ibl = false)");
+  // what was left out, each line led by the kinds that serve the use
+  auto serving = [](unsigned use, const std::string& last) { return kindNames(kindsServing(use), last); };
+  if (!L.ibl) sp.leftOut.push_back(serving(kUseIbl, "and") + ": image-based lighting is off (lighting.ibl = false)");
   if (!L.multiscatter)
-    sp.leftOut.push_back("albedo and albedo-avg with F = 1: multiple-scattering compensation is off (lighting.multiscatter)");
+    sp.leftOut.push_back(serving(kUseMultiscatter, "and") +
+                         " with F = 1: multiple-scattering compensation is off (lighting.multiscatter)");
   if (!anyGaussianAnalytic)
-    sp.leftOut.push_back(L.analytic ? "kp: every NDF lit by analytic lights has a closed-form normalisation (only the "
-                                      "gaussian needs a k_p table)"
-                                    : "kp: analytic lights are off (lighting.analytic = false)");
-  if (!anyVolume) sp.leftOut.push_back("brdf3d: no material asks for a 3D table (brdf3d = true)");
-  if (!anyGlass) sp.leftOut.push_back("dielectric, dielectric-avg: no material transmits (transmission = true)");
+    sp.leftOut.push_back(serving(kUseNormalisation, "and") +
+                         (L.analytic ? ": every NDF lit by analytic lights has a closed-form normalisation (only the "
+                                       "gaussian needs a k_p table)"
+                                     : ": analytic lights are off (lighting.analytic = false)"));
+  if (!anyVolume) sp.leftOut.push_back(serving(kUseWholeMaterial, "and") + ": no material asks for a 3D table (brdf3d = true)");
+  if (!anyGlass) sp.leftOut.push_back(serving(kUseTransmission, ",") + ": no material transmits (transmission = true)");
   sp.byHash.clear();
   sp.byPath.clear();
   sp.reasonSets.clear();

@@ -118,6 +118,8 @@ class Brdf3d final : public TableFamily {
   std::vector<KindInfo> describe() const override {
     KindInfo k{TableKind::Brdf3d};
     k.sizeAxes = 3;
+    k.volume = true;
+    k.sceneUses = kUseWholeMaterial;
     k.shader = ShaderLookup::Volume;
     k.inScenes = true;
     return {k};

@@ -211,9 +211,12 @@ class Dielectric final : public TableFamily {
     KindInfo cube{TableKind::Dielectric};
     cube.shader = ShaderLookup::EtaVolume;
     cube.inScenes = cube.furnace = true;
+    cube.sizeAxes = 3;
+    cube.sceneUses = kUseTransmission;
     KindInfo avg{TableKind::DielectricAvg};
     avg.shader = ShaderLookup::EtaAverages;
-    avg.inScenes = avg.furnace = true;
+    avg.inScenes = avg.furnace = avg.average = true;
+    avg.sceneUses = kUseTransmission;
     return {cube, avg};
   }
 

@@ -18,10 +18,29 @@ enum class ShaderLookup {
   OwnShader,         // textures that come with their own shader (ashikhmin-shirley): none written
 };
 
+// What a scene's shading reads a kind for: scene/scene_plan.cpp plans, for each material, the
+// kinds that serve each use it has (kindsServing, tables/registry.h).
+enum SceneUse : unsigned {
+  kUseIbl = 1u << 0,            // image-based lighting through a Schlick or F82 split (the split sum)
+  kUseIblFresnel = 1u << 1,     // image-based lighting for a Fresnel model with no split (its weighted albedo)
+  kUseMultiscatter = 1u << 2,   // Kulla-Conty compensation: E and E_avg with F = 1
+  kUseNormalisation = 1u << 3,  // analytic lights on an NDF whose normalisation has no closed form (k_p)
+  kUseAlbedoScaling = 1u << 4,  // the albedo-scaling coupling: E_F and E_F,avg
+  kUseWholeMaterial = 1u << 5,  // a 3D table of the whole material (brdf3d = true)
+  kUseTransmission = 1u << 6,   // rough glass: E_R, E_T and their averages
+  kUseSheen = 1u << 7,          // KHR_materials_sheen's albedo scaling (E of the Charlie lobe)
+  kUseSheenIbl = 1u << 8,       // KHR_materials_sheen under image-based lighting
+};
+
 struct KindInfo {
   TableKind kind;
   int defaultSize = 32;      // --size's default
-  int sizeAxes = 1;          // 3: --size and [output.size] take X,Y,Z (brdf3d)
+  int sizeAxes = 1;          // 3: --size takes NX,NY,NZ (brdf3d, dielectric)
+  bool volume = false;       // a 3D texture written slab by slab, with brdf3d's options; [output.size] takes N or [X, Y, Z]
+  bool inDefaultSet = false; // `brdfbake` with no --table bakes it
+  bool albedo = false;       // a hemispherical albedo or its average: what a Fresnel model or a measured material enters by default
+  bool average = false;      // an average over mu of another kind (albedo-avg, dielectric-avg)
+  unsigned sceneUses = 0;    // SceneUse bits
   // the quantity a lossless surface keeps at or below 1, and the channel that holds it ("" when the
   // kind has none): `info` and bakes warn when it exceeds 1
   std::string energy = {}, energyChannel = {};

@@ -217,18 +217,22 @@ class Microfacet final : public TableFamily {
     splitsum.defaultSize = 128;
     splitsum.energy = "A+B", splitsum.energyChannel = "B";
     splitsum.shader = ShaderLookup::SplitSum;
-    splitsum.inScenes = splitsum.furnace = splitsum.muRAxes = splitsum.layouts = true;
+    splitsum.inScenes = splitsum.furnace = splitsum.muRAxes = splitsum.layouts = splitsum.inDefaultSet = true;
+    splitsum.sceneUses = kUseIbl | kUseSheenIbl;
     KindInfo albedo{TableKind::Albedo};
     albedo.energy = "E", albedo.energyChannel = "R";
     albedo.shaderValue = "E";
-    albedo.inScenes = albedo.furnace = albedo.muRAxes = true;
+    albedo.inScenes = albedo.furnace = albedo.muRAxes = albedo.inDefaultSet = albedo.albedo = true;
+    albedo.sceneUses = kUseIblFresnel | kUseMultiscatter | kUseAlbedoScaling | kUseSheen;
     KindInfo avg{TableKind::AlbedoAvg};
     avg.energy = "E_avg", avg.energyChannel = "R";
     avg.shaderValue = "Eavg";
-    avg.inScenes = avg.furnace = true;
+    avg.inScenes = avg.furnace = avg.inDefaultSet = avg.albedo = avg.average = true;
+    avg.sceneUses = kUseMultiscatter | kUseAlbedoScaling;
     KindInfo kp{TableKind::Kp};
     kp.shaderValue = "Kp";
-    kp.inScenes = true;
+    kp.inScenes = kp.inDefaultSet = true;
+    kp.sceneUses = kUseNormalisation;
     return {splitsum, albedo, avg, kp};
   }
 

@@ -55,7 +55,7 @@ std::vector<TableKind> kindsFor(const BakeRequest& req) {
 std::string kindNames(const std::vector<TableKind>& kinds, const std::string& last) {
   std::string s;
   for (size_t i = 0; i < kinds.size(); ++i)
-    s += (i == 0 ? "" : i + 1 == kinds.size() ? " " + last + " " : ", ") + tableName(kinds[i]);
+    s += (i == 0 ? "" : i + 1 == kinds.size() && last != "," ? " " + last + " " : ", ") + tableName(kinds[i]);
   return s;
 }
 
@@ -77,6 +77,20 @@ const std::vector<KindInfo>& allKinds() {
     return v;
   }();
   return all;
+}
+
+std::vector<TableKind> kindsServing(unsigned uses) {
+  std::vector<TableKind> v;
+  for (const KindInfo& k : allKinds())
+    if (k.sceneUses & uses) v.push_back(k.kind);
+  return v;
+}
+
+std::vector<TableKind> kindsWhere(bool (*pick)(const KindInfo&)) {
+  std::vector<TableKind> v;
+  for (const KindInfo& k : allKinds())
+    if (pick(k)) v.push_back(k.kind);
+  return v;
 }
 
 const KindInfo& kindInfo(TableKind kind) { return allKinds()[static_cast<size_t>(kind)]; }
