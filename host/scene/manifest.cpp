@@ -114,25 +114,26 @@ void readOutput(const Reader& r, const toml::table& t, SceneOutput& out) {
     out.nodeGrid = g == "node";
   }
   if (auto* n = t.get("size")) {
+    // kept as written: the planner checks each key and value against the kind's description
     const toml::table& s = r.table(*n, "output.size");
-    std::vector<std::string> kinds = {"splitsum", "albedo", "albedo-avg", "kp", "brdf3d", "dielectric", "dielectric-avg"};
-    r.keysIn(s, "[output.size]", kinds);
+    auto integerOf = [](const toml::node& v) {
+      return v.is_integer() ? std::optional<int64_t>(v.as_integer()->get()) : std::nullopt;
+    };
     for (auto&& [k, v] : s) {
-      std::string kind(k.str());
-      if (kind == "brdf3d") {
-        if (v.is_array()) {
-          const toml::array& a = *v.as_array();
-          if (a.size() != 3) r.fail(v, "output.size.brdf3d must be N or [X, Y, Z]");
-          std::array<int, 3> n3{};
-          for (int i = 0; i < 3; ++i) n3[i] = r.integer(a[i], "output.size.brdf3d", 1, kMaxVolumeSize);
-          out.brdf3dSize = n3;
-        } else {
-          int n1 = r.integer(v, "output.size.brdf3d", 1, kMaxVolumeSize);
-          out.brdf3dSize = std::array<int, 3>{n1, n1, n1};
+      SceneSize e;
+      e.kind = std::string(k.str());
+      e.keyPos = SourcePos{r.file, static_cast<int>(k.source().begin.line), static_cast<int>(k.source().begin.column)};
+      e.valuePos = r.pos(v);
+      if (const toml::array* a = v.as_array()) {
+        e.array = true;
+        for (const toml::node& item : *a) {
+          e.itemPos.push_back(r.pos(item));
+          e.values.push_back(integerOf(item));
         }
       } else {
-        out.size[tableKind(kind)] = r.integer(v, "output.size." + kind, kMinSize, kMaxSize);
+        e.values.push_back(integerOf(v));
       }
+      out.sizes.push_back(e);
     }
   }
 }

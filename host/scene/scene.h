@@ -3,6 +3,7 @@
 // of tables that serves it.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -18,6 +19,17 @@ struct SourcePos {
   std::string file;
   int line = 0, column = 0;
   std::string str() const;
+};
+
+// One [output.size] entry as the manifest writes it. The manifest reader takes any key; the planner
+// checks it against the kinds' descriptions (tables/kind_info.h: which kinds scenes plan, which take
+// [X, Y, Z]) and the value against the kind's range, with these positions in its messages.
+struct SceneSize {
+  std::string kind;                 // the key
+  SourcePos keyPos, valuePos;
+  bool array = false;               // [X, Y, Z] (or an array of another length)
+  std::vector<SourcePos> itemPos;   // each array item's position
+  std::vector<std::optional<int64_t>> values;  // the value, or each item; empty optional: not an integer
 };
 
 struct SceneMaterial {
@@ -46,8 +58,7 @@ struct SceneOutput {
   std::string dir = "out";   // relative to the scene file's directory
   bool half = false;
   bool nodeGrid = false;
-  std::map<TableKind, int> size;          // per table kind; missing: the kind's default
-  std::optional<std::array<int, 3>> brdf3dSize;
+  std::vector<SceneSize> sizes;  // [output.size], as written; missing: the kind's default
 };
 
 struct Scene {

@@ -72,9 +72,51 @@ void addTables(ScenePlan& sp, const BakeRequest& req, const SceneMaterial& m, co
   }
 }
 
+// [output.size] checked against the kinds' descriptions: each key a kind scenes plan, each value in
+// the kind's range ([X, Y, Z] or N for a 3D texture). Messages name the manifest's line and column.
+struct SceneSizes {
+  std::map<TableKind, int> size;
+  std::map<TableKind, std::array<int, 3>> volume;
+};
+
+SceneSizes checkSizes(const std::vector<SceneSize>& entries) {
+  SceneSizes out;
+  std::vector<std::string> valid;
+  for (const KindInfo& k : allKinds())
+    if (k.inScenes) valid.push_back(tableName(k.kind));
+  for (const SceneSize& e : entries) {
+    const KindInfo* k = findKind(e.kind);
+    if (!k || !k->inScenes) {
+      const std::string near = closestName(e.kind, valid);
+      throw Error(kExitDataErr, e.keyPos.str() + ": unknown key '" + e.kind + "' in [output.size]" +
+                                    (near.empty() ? "" : " (did you mean '" + near + "'?)") + "; valid: " + joinNames(valid));
+    }
+    const std::string what = "output.size." + e.kind;
+    auto integer = [&](const std::optional<int64_t>& v, const SourcePos& at, int lo, int hi) {
+      const std::string range = what + " must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi);
+      if (!v) throw Error(kExitDataErr, at.str() + ": " + range);
+      if (*v < lo || *v > hi) throw Error(kExitDataErr, at.str() + ": " + range + ", got " + std::to_string(*v));
+      return static_cast<int>(*v);
+    };
+    if (k->volume && e.array) {
+      if (e.values.size() != 3) throw Error(kExitDataErr, e.valuePos.str() + ": " + what + " must be N or [X, Y, Z]");
+      std::array<int, 3> n3{};
+      for (int i = 0; i < 3; ++i) n3[i] = integer(e.values[i], e.itemPos[i], 1, kMaxVolumeSize);
+      out.volume[k->kind] = n3;
+    } else if (k->volume) {
+      const int n1 = integer(e.values[0], e.valuePos, 1, kMaxVolumeSize);
+      out.volume[k->kind] = {n1, n1, n1};
+    } else {
+      out.size[k->kind] = integer(e.array ? std::nullopt : e.values[0], e.valuePos, kMinSize, kMaxSize);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 ScenePlan planScene(const Scene& scene, const std::string& outDir) {
+  const SceneSizes sizes = checkSizes(scene.output.sizes);
   ScenePlan sp;
   sp.scene = scene.name;
   std::string dir = outDir;
@@ -90,8 +132,8 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
     r.outDir = dir;
     r.half = scene.output.half;
     r.nodeGrid = scene.output.nodeGrid;
-    auto it = scene.output.size.find(kind);
-    if (it != scene.output.size.end()) r.size = it->second;
+    auto it = sizes.size.find(kind);
+    if (it != sizes.size.end()) r.size = it->second;
     return r;
   };
   bool anyGaussianAnalytic = false, anyVolume = false, anyGlass = false;
@@ -152,7 +194,7 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
         r.size.reset();
         r.volume.roughness = m.roughnessLo;
         r.volume.rho = m.rho;
-        if (scene.output.brdf3dSize) r.volume.size = scene.output.brdf3dSize;
+        if (auto v = sizes.volume.find(k); v != sizes.volume.end()) r.volume.size = v->second;
         addTables(sp, r, m, "a 3D table of the whole material (brdf3d = true)");
       }
     size_t reasonsAfter = 0;
