@@ -203,7 +203,7 @@ TEST(MuAxis, InterpolationEstimateHoldsOnBothAxes) {
   double band[2][2][4] = {};  // [node][sqrt][region]
   for (bool node : {false, true})
     for (bool sq : {false, true}) {
-      TableJob job{TableKind::SplitSum, NDF_GGX, GAF_SMITH_CORRELATED, n, n, node, false, "", FresnelChoice{}, -1};
+      TableJob job = tableJob(TableKind::SplitSum, NDF_GGX, GAF_SMITH_CORRELATED, n, n, node, false);
       job.muSqrt = sq;
       double secs = 0;
       TableImage t = computeTable(k, job, &secs);

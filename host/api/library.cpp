@@ -15,12 +15,13 @@
 
 namespace brdfbake {
 
-namespace {
-
-struct Internal {
+// What write() needs of a table bake() made: its job (family, spec, path) and the table itself.
+struct TablePlanRecord {
   Job job;
   BakedTable baked;
 };
+
+namespace {
 
 Table toTable(const Job& job, BakedTable baked) {
   Table t;
@@ -44,14 +45,14 @@ Table toTable(const Job& job, BakedTable baked) {
   // a 2D table's files claim their format's and precision's storage rounding too (a float16 file
   // 2.45e-4 where the values' bound is 6.71e-7): errorBound is what write() will claim, the largest
   // over the request's formats, planned as write() plans them
-  if (baked.volume.empty() && job.spec.type() == typeid(TableJob)) {
+  if (baked.volume.empty() && job.is<TableJob>()) {
     FileSet scratch;
     BakedTable copy = baked;
     job.family->addBakedFiles(job, copy, scratch);
     for (const TableReport& r : scratch.reports) t.errorBound = std::max(t.errorBound, r.errorBound);
     t.metadata["brdf.error"] = fmtG9(t.errorBound);
   }
-  t.internal = std::make_shared<Internal>(Internal{job, std::move(baked)});
+  t.internal = std::make_shared<TablePlanRecord>(TablePlanRecord{job, std::move(baked)});
   return t;
 }
 
@@ -83,7 +84,7 @@ void write(const std::vector<Table>& tables, const std::string& dir) {
   for (const Table& t : tables) {
     if (!t.internal)
       throw Error(kExitUsage, "write: " + t.path + " was not made by bake() (read tables are already files)");
-    auto in = std::static_pointer_cast<const Internal>(t.internal);
+    const std::shared_ptr<const TablePlanRecord>& in = t.internal;
     Job job = in->job;
     if (!dir.empty()) {
       size_t slash = job.path.find_last_of('/');

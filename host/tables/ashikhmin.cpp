@@ -43,7 +43,8 @@ class Ashikhmin final : public TableFamily {
                                   "without --diffuse");
     std::vector<Job> jobs;
     for (int t = 0; t < kAsTextures; ++t) {
-      TableJob job{TableKind::AshikhminShirley, -1, -1, n, n, false, req.half, "", {}, -1, t};
+      TableJob job = tableJob(TableKind::AshikhminShirley, -1, -1, n, n, false, req.half);
+      job.texture = t;
       job.path = req.outDir + "/" + ashikhminFileName(t);
       applyFormats(req, job);
       jobs.push_back(makeJob(this, job.kind, job));

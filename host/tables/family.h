@@ -34,6 +34,11 @@ struct BakedTable {
   double seconds = 0;                       // compute time
 };
 
+// Data a family keeps for the length of a bake (BakeContext::cache).
+struct FamilyData {
+  virtual ~FamilyData() = default;
+};
+
 // What a bake shares between its jobs: the device (made on first use), data read once, the
 // request's observer (stages and progress, brdfbake/observer.h).
 class BakeContext {
@@ -53,8 +58,9 @@ class BakeContext {
     reuse_ = true;
     if (runner_) runner_->setReuse(true);
   }
-  // Data a family reads once per bake (a MERL file), keyed by the family.
-  std::map<std::string, std::shared_ptr<void>> cache;
+  // Data a family reads once per bake (a MERL file), keyed by the family; each family's type
+  // derives from FamilyData.
+  std::map<std::string, std::shared_ptr<const FamilyData>> cache;
 
  private:
   std::string device_;

@@ -1,12 +1,14 @@
 // A planned table: which family bakes it, where it lands, and the family's own description of it.
 // The plan (plan/plan.h) is a list of these; only the family that made a job reads its spec.
 #pragma once
-#include <any>
+#include <memory>
+#include <type_traits>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "common/brdf3d_grid.h"
+#include "common/errors.h"
 #include "common/material.h"
 #include "common/models.h"
 #include "formats/layout.h"
@@ -16,17 +18,23 @@ namespace brdfbake {
 
 class TableFamily;  // tables/family.h
 
+// The part of a job that only its family reads. Each family's job type derives from it; a Job holds
+// it typed, and Job::get<T>() checks the type.
+struct JobSpec {
+  virtual ~JobSpec() = default;
+  std::string path;  // the output file
+};
+
 // A 2D (or 1D) table over (mu, r), r, or eta: the microfacet family, fresnel-avg, the
 // Ashikhmin-Shirley textures and a measured material's tables.
-struct TableJob {
-  TableKind kind;
-  int ndf;
-  int gaf;           // GAF_NONE for kp, which depends on the NDF only
-  int width, height; // x = mu (2D tables) or r (1D), y = r (2D) or 1
-  bool nodeGrid;
-  bool half;
-  std::string path;  // output file
-  FresnelChoice fresnel;  // albedo, albedo-avg: the model in B (one: F = 1); splitsum: schlick or f82-tint
+struct TableJob : JobSpec {
+  TableKind kind = TableKind::SplitSum;
+  int ndf = -1;
+  int gaf = -1;          // GAF_NONE for kp, which depends on the NDF only
+  int width = 0, height = 1;  // x = mu (2D tables) or r (1D), y = r (2D) or 1
+  bool nodeGrid = false;
+  bool half = false;
+  FresnelChoice fresnel = {};  // albedo, albedo-avg: the model in B (one: F = 1); splitsum: schlick or f82-tint
   int diffuse = -1;       // albedo: a diffuse model's albedo (ndf, gaf unused); splitsum: burley in B
   int texture = -1;       // ashikhmin-shirley: Tex0, Tex1 or Tex2 (one file each)
   // the files written (path's extension replaced per format) and the precision of their channels;
@@ -39,10 +47,22 @@ struct TableJob {
   std::string merl = {};    // a measured material's MERL file (tables/measured.cpp), or ""
 };
 
+// A table of `kind` for the pair (ndf, gaf), width x height texels, the other fields at their defaults.
+inline TableJob tableJob(TableKind kind, int ndf, int gaf, int width, int height, bool nodeGrid, bool half) {
+  TableJob j;
+  j.kind = kind;
+  j.ndf = ndf;
+  j.gaf = gaf;
+  j.width = width;
+  j.height = height;
+  j.nodeGrid = nodeGrid;
+  j.half = half;
+  return j;
+}
+
 // A 3D table (--table brdf3d): one per NDF/GAF pair, baked and written slab by slab.
-struct VolumeJob {
+struct VolumeJob : JobSpec {
   Brdf3dSpec spec;
-  std::string path;
   bool half = false;
   bool merl = false;      // MERL's binary layout instead of an EXR atlas
   int cols = 1, rows = 1; // the EXR atlas: slices left to right, then top to bottom
@@ -52,34 +72,43 @@ struct VolumeJob {
 
 // A rough-dielectric table (--table dielectric: 3D over (mu, r, eta coordinate), an EXR atlas of
 // eta slices; dielectric-avg: 2D over (r, eta coordinate)). tables/dielectric_bake.h.
-struct DielectricJob {
+struct DielectricJob : JobSpec {
   int ndf = 0, gaf = 0;
   bool avg = false;          // dielectric-avg
   int nx = 32, ny = 32, nz = 32;  // mu, r, eta (avg: nx = r, ny = eta, nz = 1)
   bool nodeGrid = false, half = false;
   double etaLo = 0.4, etaHi = 2.5;
   int cols = 1, rows = 1;    // the atlas (3D)
-  std::string path;
 };
 
 struct Job {
   const TableFamily* family = nullptr;
   TableKind kind = TableKind::SplitSum;
   std::string path;  // the output file (its extension replaced per format); scenes may rename it
-  std::any spec;     // the family's own: TableJob, VolumeJob, DielectricJob or its own type
+  std::shared_ptr<const JobSpec> spec;  // the family's own: TableJob, VolumeJob, DielectricJob or its own type
 
-  // The spec, with the job's path in it (the families' helpers read the path from their spec).
+  // Whether the spec is a T.
+  template <class T>
+  bool is() const {
+    return dynamic_cast<const T*>(spec.get()) != nullptr;
+  }
+  // The spec as the T its family made, with the job's path in it (the families' helpers read the
+  // path from their spec). Error(kExitSoftware) when it is another type: a family read a job it did
+  // not plan.
   template <class T>
   T get() const {
-    T s = std::any_cast<const T&>(spec);
-    s.path = path;
-    return s;
+    const T* s = dynamic_cast<const T*>(spec.get());
+    if (!s) throw Error(kExitSoftware, "internal: the job for " + path + " holds another family's spec");
+    T copy = *s;
+    copy.path = path;
+    return copy;
   }
 };
 
 template <class T>
 Job makeJob(const TableFamily* family, TableKind kind, const T& spec) {
-  return Job{family, kind, spec.path, spec};
+  static_assert(std::is_base_of_v<JobSpec, T>, "a job's spec derives from JobSpec");
+  return Job{family, kind, spec.path, std::make_shared<const T>(spec)};
 }
 
 }  // namespace brdfbake

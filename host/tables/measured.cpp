@@ -34,7 +34,7 @@ class Measured final : public TableFamily {
       int n = kind == TableKind::AlbedoAvg ? 1 : req.size ? *req.size : brdfbake::defaultSize(kind);
       if (req.nodeGrid && kind != TableKind::AlbedoAvg && n < 2)
         throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
-      TableJob job{kind, -1, -1, n, 1, req.nodeGrid, req.half, "", {}, -1};
+      TableJob job = tableJob(kind, -1, -1, n, 1, req.nodeGrid, req.half);
       job.path = req.outDir + "/" + tableName(kind) + "_merl-" + merlMaterialName(req.merl) + ".exr";
       job.merl = req.merl;
       applyFormats(req, job);
@@ -58,7 +58,7 @@ class Measured final : public TableFamily {
     BakedTable t;
     auto it = ctx.cache.find(key);
     if (it != ctx.cache.end()) {
-      t.image = *std::static_pointer_cast<TableImage>(it->second);
+      t.image = dynamic_cast<const ComputedTable&>(*it->second).image;
       t.image.strings["brdf.table"] = tableName(job.kind);
       t.image.strings["brdf.channels"] = merlChannels(job.kind);
     } else {
@@ -69,7 +69,7 @@ class Measured final : public TableFamily {
       if (obs)
         progress = [obs, what](double done, double total, double seconds) { obs->progress(what, "texels", done, total, seconds); };
       t.image = merlTable(data(ctx, job.merl), merlMaterialName(job.merl), job.kind, job.width, job.nodeGrid, job.half, progress);
-      ctx.cache[key] = std::make_shared<TableImage>(t.image);
+      ctx.cache[key] = std::make_shared<const ComputedTable>(t.image);
     }
     t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return t;
@@ -146,10 +146,19 @@ class Measured final : public TableFamily {
   JobSummary summary(const Job& job) const override { return tableJobSummary(job.get<TableJob>()); }
 
  private:
+  // A table computed once per bake (splitsum's values are albedo's), and a MERL file read once.
+  struct ComputedTable : FamilyData {
+    explicit ComputedTable(TableImage i) : image(std::move(i)) {}
+    TableImage image;
+  };
+  struct MerlFile : FamilyData {
+    explicit MerlFile(MerlData d) : data(std::move(d)) {}
+    MerlData data;
+  };
   static const MerlData& data(BakeContext& ctx, const std::string& path) {
-    std::shared_ptr<void>& slot = ctx.cache["merl:" + path];
-    if (!slot) slot = std::make_shared<MerlData>(readMerl(path));
-    return *std::static_pointer_cast<MerlData>(slot);
+    std::shared_ptr<const FamilyData>& slot = ctx.cache["merl:" + path];
+    if (!slot) slot = std::make_shared<const MerlFile>(readMerl(path));
+    return dynamic_cast<const MerlFile&>(*slot).data;
   }
 };
 

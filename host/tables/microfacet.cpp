@@ -268,7 +268,8 @@ class Microfacet final : public TableFamily {
       if (asks(req, TableKind::Albedo)) {
         int n = req.size ? *req.size : defaultSize(TableKind::Albedo);
         if (req.nodeGrid && n < 2) throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
-        TableJob job{TableKind::Albedo, -1, -1, n, n, req.nodeGrid, req.half, "", {}, req.diffuse};
+        TableJob job = tableJob(TableKind::Albedo, -1, -1, n, n, req.nodeGrid, req.half);
+        job.diffuse = req.diffuse;
         jobs.push_back(add(req, job));
       }
     }
@@ -290,8 +291,9 @@ class Microfacet final : public TableFamily {
                                         (gaf == GAF_NEUBELT ? "at the corner r = 0: E(0, r) grows like 1/(r sqrt(2 pi))"
                                                             : "its fitted Lambda is finite at grazing, so G/(n.o) is not") +
                                         "), the grid's first column; use --grid texel-center for " + tableName(kind));
-          TableJob job{kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, req.half, "", req.fresnel,
-                       kind == TableKind::SplitSum ? req.diffuse : -1};
+          TableJob job = tableJob(kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, req.half);
+          job.fresnel = req.fresnel;
+          job.diffuse = kind == TableKind::SplitSum ? req.diffuse : -1;
           job.muSqrt = twoD && req.muSqrt.value_or(false);  // validated: cli/layout_args.cpp
           jobs.push_back(add(req, job));
         }
@@ -363,7 +365,7 @@ class Microfacet final : public TableFamily {
         throw Error(kExitUsage, "--preset gltf --grid node: the sheen tables are infinite at mu = 0 (charlie-smith's "
                                 "Lambda is finite at grazing; neubelt's corner mu = r = 0), the node grid's first column; "
                                 "the preset bakes texel centres, which texture(lut, vec2(NdotV, roughness)) samples");
-      TableJob job{kind, ndf, gaf, n, n, false, req.half, "", FresnelChoice{}, -1, -1, {FileFormat::Exr}, Precision::Float32};
+      TableJob job = tableJob(kind, ndf, gaf, n, n, false, req.half);
       jobs.push_back(add(req, job));
     }
     return jobs;

@@ -23,6 +23,8 @@
 
 namespace brdfbake {
 
+struct TablePlanRecord;  // defined inside the library (host/api/library.cpp)
+
 // One baked table in memory.
 struct Table {
   std::string path;   // where write() puts it (under the request's outDir), e.g. out/splitsum_ggx_smith-correlated.exr
@@ -37,8 +39,9 @@ struct Table {
   float at(int x, int y, int channel, int z = 0) const {
     return planes[static_cast<size_t>(channel)][(static_cast<size_t>(z) * height + y) * width + x];
   }
-  // The library's own record of how the table was planned (its family and job): write() uses it.
-  std::shared_ptr<const void> internal;
+  // The library's own record of how the table was planned (its family and job), opaque to callers:
+  // write() uses it.
+  std::shared_ptr<const TablePlanRecord> internal;
 };
 
 // Bakes every table of `req` in memory, on req.device (default: the first CPU device). Throws
