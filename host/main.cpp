@@ -39,7 +39,9 @@ int runCommand(Command& cmd) {
   {
     switch (cmd.kind) {
       case Command::Kind::Help:
-        std::cout << (cmd.helpFor.empty() ? overviewHelp() : cmd.helpFor == "--markdown" ? markdownHelp() : commandHelp(cmd.helpFor));
+        std::cout << (cmd.helpFor.empty()           ? overviewHelp()
+                      : cmd.helpFor == "--markdown" ? markdownHelp()
+                                                    : commandHelp(cmd.helpFor));
         return kExitOk;
       case Command::Kind::Completion:
         std::cout << bashCompletion();
@@ -49,8 +51,10 @@ int runCommand(Command& cmd) {
         return kExitOk;
       case Command::Kind::Devices:
         if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
-        if (!cmd.file.empty()) std::cout << preparePrograms(cmd.file, cmd.bake.device);
-        else std::cout << describeDevices();
+        if (!cmd.file.empty())
+          std::cout << preparePrograms(cmd.file, cmd.bake.device);
+        else
+          std::cout << describeDevices();
         return kExitOk;
       case Command::Kind::Info: {
         const TableFile file = readTableFile(cmd.file);  // any format the baker writes
@@ -74,8 +78,10 @@ int runCommand(Command& cmd) {
           checkNotAnInput(cmd.file, cmd.files, "-o");
         }
         std::string code = shaderForFiles(cmd.files, cmd.hlsl ? ShaderLang::Hlsl : ShaderLang::Glsl);
-        if (cmd.file.empty()) std::cout << code;
-        else writeTextFile(cmd.file, code);
+        if (cmd.file.empty())
+          std::cout << code;
+        else
+          writeTextFile(cmd.file, code);
         return kExitOk;
       }
       case Command::Kind::Sample:
@@ -142,8 +148,8 @@ int checkedStdout(int code) {
   const bool failed = std::cout.fail() || std::fflush(stdout) != 0 || std::ferror(stdout);
   if (!failed) return code;
   const int err = errno;
-  std::cerr << "brdfbake: cannot write standard output" << (err ? std::string(": ") + std::strerror(err) : std::string())
-            << "\n";
+  std::cerr << "brdfbake: cannot write standard output"
+            << (err ? std::string(": ") + std::strerror(err) : std::string()) << "\n";
   return code == kExitOk ? kExitIoErr : code;
 }
 

@@ -64,8 +64,8 @@ double checkTexel(const KernelTable& t, size_t k, int ndf, int gaf, double mu, d
     const bool sharp = brdf64::hemi_model_error(ndf, gaf) == 0;
     for (int c = 0; c < 3; ++c) {
       EXPECT_LE(rel(est[c], want[c]), bound + slack)
-          << "quadrature bound not honest, budget " << refine << ", channel " << "ABE"[c] << ": estimate "
-          << est[c] << " exact " << want[c] << " bound " << bound;
+          << "quadrature bound not honest, budget " << refine << ", channel "
+          << "ABE"[c] << ": estimate " << est[c] << " exact " << want[c] << " bound " << bound;
       flt[c] = std::min(flt[c], rel(t.planes[c][k], est[c]));
     }
     // as the claim is made: the largest error over A, B, E against the largest estimate, per unit
@@ -82,7 +82,8 @@ double checkTexel(const KernelTable& t, size_t k, int ndf, int gaf, double mu, d
   const double arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf));
   double e = 0;
   for (int c = 0; c < 3; ++c) {
-    EXPECT_LE(flt[c], arith) << "float model exceeded, channel " << "ABE"[c] << ": device " << t.planes[c][k];
+    EXPECT_LE(flt[c], arith) << "float model exceeded, channel "
+                             << "ABE"[c] << ": device " << t.planes[c][k];
     gWorstFloat = std::max(gWorstFloat, flt[c] / arith);
     e = std::max(e, rel(t.planes[c][k], want[c]));
   }
@@ -106,23 +107,28 @@ TEST_P(PairTest, HemisphereMatchesReference) {
         checkTexel(t, static_cast<size_t>(j) * n + i, ndf, gaf, mu, r);
       }
   }
-  std::printf("%s: largest float error so far %.2f of the float model's bound; largest miss of a sharpened "
-              "estimate so far %.2e of the value at the default budget (floor %.0e), %.2e at the refined one "
-              "(floor %.0e)\n",
-              pairName(ndf, gaf).c_str(), gWorstFloat, gWorstMiss[0], double(brdf64::hemi_floor(0)),
-              gWorstMiss[1], double(brdf64::hemi_floor(1)));
+  std::printf(
+      "%s: largest float error so far %.2f of the float model's bound; largest miss of a sharpened "
+      "estimate so far %.2e of the value at the default budget (floor %.0e), %.2e at the refined one "
+      "(floor %.0e)\n",
+      pairName(ndf, gaf).c_str(), gWorstFloat, gWorstMiss[0], double(brdf64::hemi_floor(0)), gWorstMiss[1],
+      double(brdf64::hemi_floor(1)));
 }
 
 // E_avg at r = 0 (the mirror limit, exact: 2 int_0^1 E(mu, 0) mu dmu with E(mu, 0) = G at the
 // mirror configuration, docs/MODELS.md), at r = 0.5 and r = 1 against the reference.
 double exactMirrorAverage(int gaf) {
   switch (gaf) {
-    case GAF_IMPLICIT: return 0.5;                          // 2 int mu^3
-    case GAF_NEUMANN: return 2.0 / 3.0;                     // 2 int mu^2
-    case GAF_ASHIKHMIN_PREMOZE: return 8 * std::log(2.0) - 5;  // 2 int mu^2/(2 - mu)
-    case GAF_SCHLICK_GGX_DIRECT:                            // 2 int mu (8 mu/(7 mu + 1))^2
+    case GAF_IMPLICIT:
+      return 0.5;  // 2 int mu^3
+    case GAF_NEUMANN:
+      return 2.0 / 3.0;  // 2 int mu^2
+    case GAF_ASHIKHMIN_PREMOZE:
+      return 8 * std::log(2.0) - 5;  // 2 int mu^2/(2 - mu)
+    case GAF_SCHLICK_GGX_DIRECT:     // 2 int mu (8 mu/(7 mu + 1))^2
       return 128.0 / 2401.0 * (9.625 + 9 * std::log(2.0));
-    default: return 1.0;  // G = 1 at the mirror configuration
+    default:
+      return 1.0;  // G = 1 at the mirror configuration
   }
 }
 
@@ -179,7 +185,8 @@ TEST(Kp, KernelMatchesClosedFormsAndReference) {
       double exact = ndf == 3 ? (r == 0 ? 0 : reference::kp(ndf, r)) : 3.14159265358979323846 * a * a;
       EXPECT_LE(rel(t.planes[0][j], exact), 3e-7) << ndfNames()[ndf] << " r=" << r;  // float rounding
       EXPECT_LE(rel(t.planes[0][j], exact), t.err[j] + floatArithmeticError(t.planes[0][j], kKpFloat));
-      if (exact > 0) worstKp = std::max(worstKp, rel(t.planes[0][j], exact) / floatArithmeticError(t.planes[0][j], kKpFloat));
+      if (exact > 0)
+        worstKp = std::max(worstKp, rel(t.planes[0][j], exact) / floatArithmeticError(t.planes[0][j], kKpFloat));
     }
   }
   std::printf("k_p: largest error %.2f of the float model's bound\n", worstKp);
@@ -197,9 +204,10 @@ TEST_P(PairTest, EveryEdgeTexelOfA128TableMatchesReference) {
       if (i != 0 && j != 0 && i != n - 1 && j != n - 1) continue;
       worst = std::max(worst, checkTexel(t, static_cast<size_t>(j) * n + i, ndf, gaf, (i + 0.5) / n, (j + 0.5) / n));
     }
-  std::printf("%s + %s: largest edge-texel error %.2e; largest miss of a sharpened estimate so far %.2e of the value "
-              "(default budget), %.2e (refined)\n",
-              ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), worst, gWorstMiss[0], gWorstMiss[1]);
+  std::printf(
+      "%s + %s: largest edge-texel error %.2e; largest miss of a sharpened estimate so far %.2e of the value "
+      "(default budget), %.2e (refined)\n",
+      ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), worst, gWorstMiss[0], gWorstMiss[1]);
 }
 
 // Stiff parameters: Blinn-Phong exponents past 1e9 (r = 1/128 and below) at grazing views, every
@@ -212,7 +220,7 @@ TEST(Stiff, BlinnPhongHugeExponentsAndGrazingViewsMatchReference) {
     for (size_t k = 0; k < t.planes[2].size(); ++k)
       ASSERT_TRUE(std::isfinite(t.planes[0][k]) && std::isfinite(t.planes[1][k]) && std::isfinite(t.err[k]));
     if (gaf >= kReferenceSweepGafs) continue;  // finite; the reference comparison is smith_exact_test's
-    for (int i : {0, 1, n / 2, n - 1})  // mu = 1/128 (e = 2 128^4 ~ 5e8 at r = 1/128), 3/128, 1/2, 1 - 1/128
+    for (int i : {0, 1, n / 2, n - 1})         // mu = 1/128 (e = 2 128^4 ~ 5e8 at r = 1/128), 3/128, 1/2, 1 - 1/128
       checkTexel(t, static_cast<size_t>(i), NDF_BLINN_PHONG, gaf, (i + 0.5) / n, 0.5 / n);
   }
 }
@@ -233,7 +241,8 @@ TEST_P(PairTest, NodeTableNearTheCornerReadsWhatTheInsideHolds) {
   int i = static_cast<int>(x), j = static_cast<int>(y);
   double fx = x - i, fy = y - j;
   auto at = [&](int ii, int jj) { return static_cast<double>(t.planes[2][static_cast<size_t>(jj) * n + ii]); };
-  double lookup = (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) + fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
+  double lookup =
+      (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) + fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
   double ref = reference::albedo(ndf, gaf, r, mu).e();
   std::printf("%s: lookup %.4f, reference %.4f\n", pairName(ndf, gaf).c_str(), lookup, ref);
   EXPECT_NEAR(lookup, ref, 0.03) << pairName(ndf, gaf);  // measured: at most 0.023 (kelemen)
@@ -250,12 +259,21 @@ TEST(SharedProgram, SameBitsAsEachPairsOwnProgram) {
   KernelRunner own(selectDevice("").device), shared(selectDevice("").device);
   own.setSharing(KernelRunner::Sharing::PerPair);
   shared.setSharing(KernelRunner::Sharing::Shared);
-  const std::vector<std::pair<std::string, std::string>> pairs = {
-      {"ggx", "none"}, {"ggx", "cook-torrance"}, {"ggx", "smith-correlated"}, {"ggx", "smith"},
-      {"beckmann", "implicit"}, {"beckmann", "neumann"}, {"beckmann", "schlick-beckmann"},
-      {"blinn-phong", "kelemen"}, {"blinn-phong", "smith-exact"}, {"blinn-phong", "schlick-ggx-direct"},
-      {"gaussian", "ashikhmin-premoze"}, {"gaussian", "smith-correlated-exact"}, {"gaussian", "schlick-ggx"},
-      {"charlie", "charlie-smith"}, {"charlie", "neubelt"}};
+  const std::vector<std::pair<std::string, std::string>> pairs = {{"ggx", "none"},
+                                                                  {"ggx", "cook-torrance"},
+                                                                  {"ggx", "smith-correlated"},
+                                                                  {"ggx", "smith"},
+                                                                  {"beckmann", "implicit"},
+                                                                  {"beckmann", "neumann"},
+                                                                  {"beckmann", "schlick-beckmann"},
+                                                                  {"blinn-phong", "kelemen"},
+                                                                  {"blinn-phong", "smith-exact"},
+                                                                  {"blinn-phong", "schlick-ggx-direct"},
+                                                                  {"gaussian", "ashikhmin-premoze"},
+                                                                  {"gaussian", "smith-correlated-exact"},
+                                                                  {"gaussian", "schlick-ggx"},
+                                                                  {"charlie", "charlie-smith"},
+                                                                  {"charlie", "neubelt"}};
   HemiWeight glass;
   glass.moments = HEMI_FRESNEL;
   glass.fresnel = FRESNEL_DIELECTRIC;
@@ -305,19 +323,22 @@ TEST(KernelReuse, RepeatsReturnWhatRunningGives) {
   for (int ndf : {NDF_GGX, NDF_BECKMANN}) {
     KernelTable first = kept.hemisphere(ndf, GAF_SMITH, 6, 5, false);
     EXPECT_TRUE(same(first, plain.hemisphere(ndf, GAF_SMITH, 6, 5, false)));
-    EXPECT_TRUE(same(kept.hemisphere(ndf, GAF_SMITH_EXACT, 6, 5, false), plain.hemisphere(ndf, GAF_SMITH_EXACT, 6, 5, false)));
+    EXPECT_TRUE(
+        same(kept.hemisphere(ndf, GAF_SMITH_EXACT, 6, 5, false), plain.hemisphere(ndf, GAF_SMITH_EXACT, 6, 5, false)));
     EXPECT_TRUE(same(kept.albedoAvg(ndf, GAF_SMITH_CORRELATED_EXACT, 4, false),
                      plain.albedoAvg(ndf, GAF_SMITH_CORRELATED_EXACT, 4, false)));
   }
   // other arguments run: another size, another weight, a tabulated exact Lambda
-  EXPECT_TRUE(same(kept.hemisphere(NDF_GGX, GAF_SMITH, 5, 5, false), plain.hemisphere(NDF_GGX, GAF_SMITH, 5, 5, false)));
+  EXPECT_TRUE(
+      same(kept.hemisphere(NDF_GGX, GAF_SMITH, 5, 5, false), plain.hemisphere(NDF_GGX, GAF_SMITH, 5, 5, false)));
   HemiWeight glass;
   glass.moments = HEMI_FRESNEL;
   glass.fresnel = FRESNEL_DIELECTRIC;
   glass.x = 1.5f;
   EXPECT_TRUE(same(kept.hemisphere(NDF_GGX, GAF_SMITH, 6, 5, false, glass),
                    plain.hemisphere(NDF_GGX, GAF_SMITH, 6, 5, false, glass)));
-  EXPECT_FALSE(same(kept.hemisphere(NDF_GGX, GAF_SMITH, 6, 5, false, glass), kept.hemisphere(NDF_GGX, GAF_SMITH, 6, 5, false)));
+  EXPECT_FALSE(
+      same(kept.hemisphere(NDF_GGX, GAF_SMITH, 6, 5, false, glass), kept.hemisphere(NDF_GGX, GAF_SMITH, 6, 5, false)));
   kept.hemisphere(NDF_BLINN_PHONG, GAF_SMITH, 6, 5, false);
   EXPECT_TRUE(same(kept.hemisphere(NDF_BLINN_PHONG, GAF_SMITH_EXACT, 6, 5, false),
                    plain.hemisphere(NDF_BLINN_PHONG, GAF_SMITH_EXACT, 6, 5, false)));
@@ -338,8 +359,14 @@ TEST(KernelReuse, NodesOverlappingEarlierOnesGiveTheSameBits) {
   for (int k = 1; k <= 12; ++k) first.push_back(nodeAt(k / 13.0f, 0.05f * k, 1.0f));
   // the second request: points of the first in another order, a repeated one, new points, and a
   // point of the first with another target (another point)
-  second = {first[7], nodeAt(0.011f, 0.3f, 1.0f), first[2], first[2], nodeAt(0.5f, 0.02f, 1.0f), first[11],
-            nodeAt(first[4].s[0], first[4].s[1], 3e-7f), first[0]};
+  second = {first[7],
+            nodeAt(0.011f, 0.3f, 1.0f),
+            first[2],
+            first[2],
+            nodeAt(0.5f, 0.02f, 1.0f),
+            first[11],
+            nodeAt(first[4].s[0], first[4].s[1], 3e-7f),
+            first[0]};
   for (const HemiWeight& w : {HemiWeight{}, HemiWeight{HEMI_FRESNEL, FRESNEL_SCHLICK, 0.04f, 0.0f}}) {
     const auto seen = reusing.hemisphereNodes(NDF_GGX, GAF_SMITH_CORRELATED, first, w);
     const auto got = reusing.hemisphereNodes(NDF_GGX, GAF_SMITH_CORRELATED, second, w);

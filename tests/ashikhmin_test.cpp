@@ -53,7 +53,8 @@ TEST(AshikhminTex2, ApproachesTheLimitStablyAsUTendsToOne) {
       // and in float, where the naive power has 1 - u^2 = 0 from u > 1 - 3e-8
       float u32 = static_cast<float>(u);
       float got32 = brdf32::as_tex2(u32, static_cast<float>(v));
-      EXPECT_LE(std::fabs(got32 - tex2Reference(u32, static_cast<float>(v))) / ref, 2e-6) << "float, v " << v << " k " << k;
+      EXPECT_LE(std::fabs(got32 - tex2Reference(u32, static_cast<float>(v))) / ref, 2e-6)
+          << "float, v " << v << " k " << k;
       EXPECT_TRUE(std::isfinite(got32));
     }
   }
@@ -170,8 +171,8 @@ Errors recombination(int n, double nu, double nv, double rs) {
   std::vector<double> f(nc * nphi), g(nc * nphi);
   for (double to : {0.0, 30.0, 60.0, 80.0})
     for (double po : {0.0, 35.0}) {
-      double so = std::sin(to * kPi / 180), o[3] = {so * std::cos(po * kPi / 180), so * std::sin(po * kPi / 180),
-                                                    std::cos(to * kPi / 180)};
+      double so = std::sin(to * kPi / 180),
+             o[3] = {so * std::cos(po * kPi / 180), so * std::sin(po * kPi / 180), std::cos(to * kPi / 180)};
       double peak = 0, dpeak = 0, dworst = 0;
       for (int a = 0; a < nc; ++a)
         for (int b = 0; b < nphi; ++b) {
@@ -247,8 +248,8 @@ TEST(AshikhminRecombination, WholeBrdfIsDiffusePlusSpecularTimesCosine) {
 }
 
 // ---- the command line -----------------------------------------------------------------------
-using testing_cli::CmdResult;
 using testing_cli::bytes;
+using testing_cli::CmdResult;
 using testing_cli::run;
 fs::path freshDir(const std::string& name) { return testing_cli::freshDir("as", name, false); }
 

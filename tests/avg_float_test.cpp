@@ -100,7 +100,8 @@ TEST_P(AvgFloat, AverageFloatErrorWithinItsModel) {
       }
     }
     worstU = std::max(worstU, pairU);
-    std::printf("%s+%s: largest float error of E_avg %.2f u\n", ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), pairU);
+    std::printf("%s+%s: largest float error of E_avg %.2f u\n", ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(),
+                pairU);
   }
   std::printf("%s: largest float error of E_avg %.2f u, %.2f of the model\n", ndfNames()[ndf].c_str(), worstU,
               worstUse);
@@ -108,7 +109,8 @@ TEST_P(AvgFloat, AverageFloatErrorWithinItsModel) {
 
 // (charlie's averages have a float model of their own, measured on its tables and checked by
 // sheen_test.cpp's Sheen.FloatArithmeticWithinItsModels)
-INSTANTIATE_TEST_SUITE_P(MicrofacetNdfs, AvgFloat, ::testing::Values(NDF_GGX, NDF_BECKMANN, NDF_BLINN_PHONG, NDF_GAUSSIAN),
+INSTANTIATE_TEST_SUITE_P(MicrofacetNdfs, AvgFloat,
+                         ::testing::Values(NDF_GGX, NDF_BECKMANN, NDF_BLINN_PHONG, NDF_GAUSSIAN),
                          [](const ::testing::TestParamInfo<int>& info) {
                            std::string s = ndfNames()[info.param];
                            std::replace(s.begin(), s.end(), '-', '_');

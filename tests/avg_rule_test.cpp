@@ -88,7 +88,9 @@ TEST_P(AvgRule, BoundHoldsWithTheFloorsMeasuredOnTheAverage) {
         for (size_t j = t; j < rs.size(); j += 2) {
           auto compute = [&] { return reference::albedoAvg(ndf, gaf, rs[j]); };
           ref[j] = sweeping ? compute()
-                            : testing_ref::cached1(testing_ref::keyOf("albedoAvg " + ndfNames()[ndf] + " " + gafNames()[gaf], {rs[j]}), compute);
+                            : testing_ref::cached1(
+                                  testing_ref::keyOf("albedoAvg " + ndfNames()[ndf] + " " + gafNames()[gaf], {rs[j]}),
+                                  compute);
         }
       });
     for (std::thread& t : threads) t.join();
@@ -103,8 +105,10 @@ TEST_P(AvgRule, BoundHoldsWithTheFloorsMeasuredOnTheAverage) {
       double miss = (err - got[j].bound) / scale;
       if (miss > pairMiss) pairMiss = miss, at = rs[j];
     }
-    if (tabulated) worstTable = std::max(worstTable, pairMiss);
-    else worstMiss = std::max(worstMiss, pairMiss);
+    if (tabulated)
+      worstTable = std::max(worstTable, pairMiss);
+    else
+      worstMiss = std::max(worstMiss, pairMiss);
     std::printf("%s+%s: E_avg off its rule's bound by at most %.2e (r = %.4f)%s\n", ndfNames()[ndf].c_str(),
                 gafNames()[gaf].c_str(), pairMiss, at, tabulated ? " (tabulated Lambda)" : "");
   }
@@ -121,7 +125,8 @@ TEST_P(AvgRule, BoundHoldsWithTheFloorsMeasuredOnTheAverage) {
   std::printf("\n");
 }
 
-INSTANTIATE_TEST_SUITE_P(MicrofacetNdfs, AvgRule, ::testing::Values(NDF_GGX, NDF_BECKMANN, NDF_BLINN_PHONG, NDF_GAUSSIAN),
+INSTANTIATE_TEST_SUITE_P(MicrofacetNdfs, AvgRule,
+                         ::testing::Values(NDF_GGX, NDF_BECKMANN, NDF_BLINN_PHONG, NDF_GAUSSIAN),
                          [](const ::testing::TestParamInfo<int>& info) {
                            std::string s = ndfNames()[info.param];
                            std::replace(s.begin(), s.end(), '-', '_');

@@ -33,8 +33,8 @@ using namespace brdfbake;
 using testing_device::runner;
 constexpr double kPi = 3.14159265358979323846;
 
-using testing_cli::CmdResult;
 using testing_cli::bytes;
+using testing_cli::CmdResult;
 using testing_cli::run;
 fs::path freshDir(const std::string& name) { return testing_cli::freshDir("b3", name); }
 
@@ -71,9 +71,9 @@ Agreement compare(const Brdf3dSpec& s) {
       }
   for (size_t t = 0; t < want.size(); ++t) {
     double d = std::fabs(planes[0][t] - want[t]);
-    EXPECT_TRUE(std::isfinite(planes[0][t])) << ndfNames()[s.ndf] << "+" << gafNames()[s.gaf] << " param "
-                                             << s.kernelParam() << " grid " << s.kernelGrid() << " texel " << t
-                                             << " host " << want[t];
+    EXPECT_TRUE(std::isfinite(planes[0][t]))
+        << ndfNames()[s.ndf] << "+" << gafNames()[s.gaf] << " param " << s.kernelParam() << " grid " << s.kernelGrid()
+        << " texel " << t << " host " << want[t];
     a.relMax1 = std::max(a.relMax1, d / std::max(1.0, std::fabs(want[t])));
     if (std::fabs(want[t]) > 1e-3 * peak && d / std::fabs(want[t]) > a.rel) {
       a.rel = d / std::fabs(want[t]);
@@ -90,21 +90,22 @@ Agreement compare(const Brdf3dSpec& s) {
 TEST(Brdf3d, KernelMatchesHostEvaluation) {
   double worstRel = 0, worstMax1 = 0;
   for (int ndf = 0; ndf < NDF_COUNT; ++ndf)
-    for (int gaf : {GAF_SMITH_CORRELATED, GAF_SMITH, GAF_COOK_TORRANCE, GAF_SCHLICK_GGX, GAF_CHARLIE_SMITH, GAF_NEUBELT})
+    for (int gaf :
+         {GAF_SMITH_CORRELATED, GAF_SMITH, GAF_COOK_TORRANCE, GAF_SCHLICK_GGX, GAF_CHARLIE_SMITH, GAF_NEUBELT})
       if (pairSupported(ndf, gaf))
-      for (auto [param, sq] : {std::pair{Brdf3dParam::Angles, false}, std::pair{Brdf3dParam::Rusinkiewicz, true},
-                               std::pair{Brdf3dParam::Rusinkiewicz, false}})
-        for (Brdf3dGrid grid : {Brdf3dGrid::TexelCenter, Brdf3dGrid::Node, Brdf3dGrid::CellStart})
-          for (double r : {0.15, 0.6}) {
-            Brdf3dSpec s = spec(ndf, gaf, param, sq, grid, 12, r);
-            Agreement a = compare(s);
-            worstRel = std::max(worstRel, a.rel);
-            worstMax1 = std::max(worstMax1, a.relMax1);
-            EXPECT_LT(a.rel, 1e-6) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " param " << s.kernelParam()
-                                   << " grid " << s.kernelGrid() << " r " << r << " texel " << a.worst % s.nx << ","
-                                   << a.worst / s.nx % s.ny << "," << a.worst / s.nx / s.ny << ": " << a.got << " vs "
-                                   << a.want;
-          }
+        for (auto [param, sq] : {std::pair{Brdf3dParam::Angles, false}, std::pair{Brdf3dParam::Rusinkiewicz, true},
+                                 std::pair{Brdf3dParam::Rusinkiewicz, false}})
+          for (Brdf3dGrid grid : {Brdf3dGrid::TexelCenter, Brdf3dGrid::Node, Brdf3dGrid::CellStart})
+            for (double r : {0.15, 0.6}) {
+              Brdf3dSpec s = spec(ndf, gaf, param, sq, grid, 12, r);
+              Agreement a = compare(s);
+              worstRel = std::max(worstRel, a.rel);
+              worstMax1 = std::max(worstMax1, a.relMax1);
+              EXPECT_LT(a.rel, 1e-6) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " param " << s.kernelParam()
+                                     << " grid " << s.kernelGrid() << " r " << r << " texel " << a.worst % s.nx << ","
+                                     << a.worst / s.nx % s.ny << "," << a.worst / s.nx / s.ny << ": " << a.got << " vs "
+                                     << a.want;
+            }
   std::printf("worst relative error %.3g (where |f| > 1e-3 max), %.3g relative to max(1, |f|)\n", worstRel, worstMax1);
 }
 
@@ -145,7 +146,8 @@ TEST(Brdf3d, ReciprocityAndPhiSymmetry) {
     for (int z = 0; z < a.nz; ++z)
       for (int y = 0; y < a.ny; ++y)
         for (int x = 0; x < y; ++x) {
-          float u = p[(static_cast<size_t>(z) * a.ny + y) * a.nx + x], v = p[(static_cast<size_t>(z) * a.ny + x) * a.nx + y];
+          float u = p[(static_cast<size_t>(z) * a.ny + y) * a.nx + x],
+                v = p[(static_cast<size_t>(z) * a.ny + x) * a.nx + y];
           ASSERT_NEAR(u, v, 1e-6 * std::max(1.0f, std::fabs(u))) << ndfNames()[ndf] << " " << x << " " << y << " " << z;
         }
     Brdf3dSpec r = spec(ndf, GAF_SMITH_CORRELATED, Brdf3dParam::Rusinkiewicz, true, Brdf3dGrid::TexelCenter, 14, 0.3);
@@ -211,7 +213,7 @@ TEST(Brdf3d, AtlasRoundTrip) {
   ASSERT_EQ(got[0].size(), want.size());
   for (size_t t = 0; t < want.size(); ++t) ASSERT_EQ(got[0][t], want[t]) << t;
   for (int c = 0; c < 3; ++c) EXPECT_EQ(got[c], got[0]);  // one channel: R = G = B
-  for (int slot = 7; slot < 9; ++slot)  // the two unused slots
+  for (int slot = 7; slot < 9; ++slot)                    // the two unused slots
     for (int y = 0; y < 10; ++y)
       for (int x = 0; x < 12; ++x)
         EXPECT_EQ(img.planes[0][static_cast<size_t>((slot / 3) * 10 + y) * 36 + (slot % 3) * 12 + x], 0.0f);
@@ -224,8 +226,10 @@ TEST(Brdf3d, AtlasRoundTrip) {
 // material written by the host (formats/merl.h merlPlanesFromSpec) to float precision, in every bin.
 TEST(Brdf3d, MerlFormatFromTheKernelMatchesTheHostWriter) {
   fs::path dir = freshDir("merl");
-  CmdResult r = run("bake --table brdf3d --format merl --fresnel conductor --eta 0.2,0.92,1.1 --k 3.9,2.45,2.14 "
-                    "--roughness 0.4 -o '" + dir.string() + "'");
+  CmdResult r =
+      run("bake --table brdf3d --format merl --fresnel conductor --eta 0.2,0.92,1.1 --k 3.9,2.45,2.14 "
+          "--roughness 0.4 -o '" +
+          dir.string() + "'");
   ASSERT_EQ(r.code, 0) << r.out;
   fs::path file = dir / "brdf3d_ggx_smith-correlated_conductor.binary";
   ASSERT_EQ(fs::file_size(file), kMerlFileBytes);
@@ -310,7 +314,8 @@ TEST(Brdf3d, BadInputIsRejectedBeforeAnythingIsWritten) {
     std::string args, message;
     int code;
   } cases[] = {
-      {"--table brdf3d --size 0,8,8", "--size: each axis of a brdf3d or dielectric table must be an integer in 1..1024, got '0'", 64},
+      {"--table brdf3d --size 0,8,8",
+       "--size: each axis of a brdf3d or dielectric table must be an integer in 1..1024, got '0'", 64},
       {"--table brdf3d --size 8,8,2000", "got '2000'", 64},
       {"--table brdf3d --size 2000", "--size: each axis of a brdf3d table must be an integer in 1..1024, got 2000", 64},
       {"--table brdf3d --param polar", "--param must be angles or rusinkiewicz, got 'polar'", 64},
@@ -320,7 +325,8 @@ TEST(Brdf3d, BadInputIsRejectedBeforeAnythingIsWritten) {
       {"--table albedo --param angles", "--param: only --table brdf3d takes it", 64},
       {"--table brdf3d --atlas 2x2 --size 8", "--atlas 2x2 holds 4 slices, fewer than the table's 8", 64},
       {"--table brdf3d --format merl --size 8,8,8", "--format merl has MERL's fixed layout", 64},
-      {"--table brdf3d --format tiff", "--format must be one or more of exr, ktx2, dds, png16, header (merl: brdf3d only)", 64},
+      {"--table brdf3d --format tiff",
+       "--format must be one or more of exr, ktx2, dds, png16, header (merl: brdf3d only)", 64},
       {"--table brdf3d --size 4 --grid node --size 4", "--size given twice", 64},
   };
   for (const Case& c : cases) {

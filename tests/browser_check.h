@@ -75,11 +75,13 @@ inline PageCheck openInBrowser(const std::filesystem::path& page, const std::fil
                              (scratch / "profile").string() + "' --host-resolver-rules='MAP * ~NOTFOUND' ";
   const std::string url = "'file://" + html.string() + "'";
   const std::string dom = (scratch / "dom.html").string(), log = (scratch / "chromium.log").string();
-  int rc = std::system(("timeout 120 " + common + "--virtual-time-budget=5000 --dump-dom " + url + " >'" + dom +
-                        "' 2>'" + log + "'").c_str());
+  int rc = std::system(
+      ("timeout 120 " + common + "--virtual-time-budget=5000 --dump-dom " + url + " >'" + dom + "' 2>'" + log + "'")
+          .c_str());
   if (rc != 0) {
     ADD_FAILURE() << "Chromium did not run (" << chromium() << ", exit " << rc
-                  << "): apt-get install chromium (scripts/install-deps.sh)\n" << slurp(log);
+                  << "): apt-get install chromium (scripts/install-deps.sh)\n"
+                  << slurp(log);
     return c;
   }
   std::smatch m;
@@ -93,7 +95,8 @@ inline PageCheck openInBrowser(const std::filesystem::path& page, const std::fil
   }
   const fs::path shot = scratch / "shot.png";
   rc = std::system(("timeout 120 " + common + "--window-size=1000,1400 --screenshot='" + shot.string() + "' " + url +
-                    " >/dev/null 2>>'" + log + "'").c_str());
+                    " >/dev/null 2>>'" + log + "'")
+                       .c_str());
   c.inked = rc == 0 ? inkedFraction(shot) : -1;
   return c;
 }

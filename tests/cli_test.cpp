@@ -45,7 +45,6 @@ size_t countFiles(const fs::path& d) {
   return n;
 }
 
-
 // One default bake shared by the tests that read its files.
 const fs::path& defaultBake() {
   static fs::path dir;
@@ -60,8 +59,7 @@ const fs::path& defaultBake() {
 TEST(Cli, DefaultBakeWritesTheFourTablesIntoOut) {
   fs::path out = defaultBake() / "out";
   for (const char* f : {"splitsum_ggx_smith-correlated.exr", "albedo_ggx_smith-correlated.exr",
-                        "albedo-avg_ggx_smith-correlated.exr", "kp_ggx.exr"})
-  {
+                        "albedo-avg_ggx_smith-correlated.exr", "kp_ggx.exr"}) {
     ASSERT_TRUE(fs::exists(out / f)) << f;
     // every default-size table claims at most 1e-5 (tests/accuracy_test.cpp checks it is honest)
     float claim = brdfbake::readTableExr((out / f).string()).floats["brdf.error"];
@@ -129,7 +127,8 @@ TEST(Cli, SameInputSameBytes) {
 
 TEST(Cli, ProductOfModelsAndHalfOutput) {
   fs::path d = freshDir("product");
-  CmdResult r = run("bake --ndf beckmann,gaussian --gaf smith --gaf kelemen --table albedo --size 8 --half -o '" + d.string() + "'");
+  CmdResult r = run("bake --ndf beckmann,gaussian --gaf smith --gaf kelemen --table albedo --size 8 --half -o '" +
+                    d.string() + "'");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(countFiles(d), 4u);
   std::string f = (d / "albedo_gaussian_kelemen.exr").string();
@@ -229,15 +228,33 @@ TEST(Cli, DiskFullMidBakeLeavesEarlierOutputsUntouched) {
   fs::create_directories(d / "disk");
   std::string exe = BRDFBAKE_EXE, disk = (d / "disk").string(), rep = (d / "report").string();
   std::ofstream(d / "t.sh") << "set -u\n"
-                               "mount -t tmpfs -o size=200k tmpfs '" << disk << "' || { echo 'cannot mount a tmpfs (root needed)'; exit 99; }\n"
-                               "'" << exe << "' --table kp,albedo,splitsum --size 8 -o '" << disk << "/out' > /dev/null || exit 98\n"
-                               "list() { (cd '" << disk << "' && find . -type f | sort | xargs sha256sum); }\n"
-                               "list > '" << rep << ".before'\n"
-                               "'" << exe << "' --table kp,albedo,splitsum -o '" << disk << "/out'; echo $? > '" << rep << ".rc'\n"
-                               "list > '" << rep << ".after'\n"
-                               "'" << exe << "' --table kp,albedo,splitsum -o '" << disk << "/new/sub'; echo $? > '" << rep << ".rc2'\n"
-                               "test -e '" << disk << "/new' && echo left > '" << rep << ".new'\n"
-                               "'" << exe << "' --table brdf3d -o '" << disk << "/vol'; echo $? > '" << rep << ".rc3'\n"
+                               "mount -t tmpfs -o size=200k tmpfs '"
+                            << disk
+                            << "' || { echo 'cannot mount a tmpfs (root needed)'; exit 99; }\n"
+                               "'"
+                            << exe << "' --table kp,albedo,splitsum --size 8 -o '" << disk
+                            << "/out' > /dev/null || exit 98\n"
+                               "list() { (cd '"
+                            << disk
+                            << "' && find . -type f | sort | xargs sha256sum); }\n"
+                               "list > '"
+                            << rep
+                            << ".before'\n"
+                               "'"
+                            << exe << "' --table kp,albedo,splitsum -o '" << disk << "/out'; echo $? > '" << rep
+                            << ".rc'\n"
+                               "list > '"
+                            << rep
+                            << ".after'\n"
+                               "'"
+                            << exe << "' --table kp,albedo,splitsum -o '" << disk << "/new/sub'; echo $? > '" << rep
+                            << ".rc2'\n"
+                               "test -e '"
+                            << disk << "/new' && echo left > '" << rep
+                            << ".new'\n"
+                               "'"
+                            << exe << "' --table brdf3d -o '" << disk << "/vol'; echo $? > '" << rep
+                            << ".rc3'\n"
                                "exit 0\n";
   CmdResult r{0, ""};
   {
@@ -255,7 +272,8 @@ TEST(Cli, DiskFullMidBakeLeavesEarlierOutputsUntouched) {
   EXPECT_EQ(bytes(rep + ".rc3"), "74\n") << r.out;
   EXPECT_NE(r.out.find("not enough space for the brdf3d table(s) in " + disk + "/vol"), std::string::npos) << r.out;
   // refused before the first temporary: the set's bound (raw texels plus 64 KiB a file) exceeds the free space
-  EXPECT_NE(r.out.find("-o " + disk + "/out: not enough space: the 3 file(s) may need up to"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("-o " + disk + "/out: not enough space: the 3 file(s) may need up to"), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("nothing was written"), std::string::npos) << r.out;
   const std::string before = bytes(rep + ".before");
   EXPECT_EQ(std::count(before.begin(), before.end(), '\n'), 3) << before;
@@ -281,12 +299,14 @@ TEST(Cli, InterruptWhileWritingLeavesTheDirectoryAsItWas) {
   ASSERT_EQ(r.code, 0) << r.out;
   auto before = snapshot(d);
   // hold after the temporaries are written, before they are renamed; interrupt there
-  pid_t pid = spawn({"--table", "kp,albedo,albedo-avg", "-o", out.string()}, "BRDFBAKE_TEST_HOLD_BEFORE_COMMIT_MS", "20000");
+  pid_t pid =
+      spawn({"--table", "kp,albedo,albedo-avg", "-o", out.string()}, "BRDFBAKE_TEST_HOLD_BEFORE_COMMIT_MS", "20000");
   bool temps = false;
   for (int k = 0; k < 600 && !temps; ++k) {  // until all three temporaries exist (at most 60 s)
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     int n = 0;
-    for (const auto& e : fs::directory_iterator(out)) n += e.path().filename().string().find(".brdfbake-tmp-") != std::string::npos;
+    for (const auto& e : fs::directory_iterator(out))
+      n += e.path().filename().string().find(".brdfbake-tmp-") != std::string::npos;
     temps = n == 3;
   }
   EXPECT_TRUE(temps) << "the temporaries never appeared";
@@ -304,7 +324,8 @@ TEST(Cli, GnuStyleOptionsParentsAndTopLevelOptions) {
   EXPECT_EQ(t.width, 4);
   EXPECT_EQ(t.strings["brdf.ndf"], "beckmann");
   // the report's columns line up: every line has "table" at the same column
-  r = run("bake --ndf blinn-phong --gaf schlick-ggx-direct --table albedo-avg,kp --size 4 -o '" + (d / "x").string() + "'");
+  r = run("bake --ndf blinn-phong --gaf schlick-ggx-direct --table albedo-avg,kp --size 4 -o '" + (d / "x").string() +
+          "'");
   ASSERT_EQ(r.code, 0) << r.out;
   std::istringstream lines(r.out);
   std::string line;
@@ -320,14 +341,16 @@ TEST(Cli, GnuStyleOptionsParentsAndTopLevelOptions) {
 
 TEST(Cli, CacheDirHoldsTheCompiledKernels) {
   fs::path d = freshDir("cache");
-  CmdResult r = run("--table kp --size 4 --cache-dir '" + (d / "cache").string() + "' -o '" + (d / "out").string() + "'");
+  CmdResult r =
+      run("--table kp --size 4 --cache-dir '" + (d / "cache").string() + "' -o '" + (d / "out").string() + "'");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_GT(countFiles(d / "cache"), 0u) << "PoCL did not use --cache-dir";
 }
 
 TEST(Cli, NoOpenClPlatformNamesThePackage) {
   fs::path d = freshDir("noplatform");
-  CmdResult r = run("bake --table kp -o '" + (d / "out").string() + "'", "", "OCL_ICD_VENDORS=/nonexistent OCL_ICD_FILENAMES=");
+  CmdResult r =
+      run("bake --table kp -o '" + (d / "out").string() + "'", "", "OCL_ICD_VENDORS=/nonexistent OCL_ICD_FILENAMES=");
   EXPECT_EQ(r.code, 69) << r.out;
   EXPECT_NE(r.out.find("pocl-opencl-icd"), std::string::npos) << r.out;
   EXPECT_EQ(countFiles(d), 0u);
@@ -364,7 +387,8 @@ TEST(CliMaterials, FresnelTablesRecordTheModelAndRgbParameters) {
   CmdResult r = run("--fresnel conductor --eta 0.18,0.42,1.37 --k 3.42,2.35,1.77 --size 8 -o " + (d / "o").string());
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(countFiles(d / "o"), 2u) << "albedo and albedo-avg only: kp has no Fresnel";
-  brdfbake::TableImage t = brdfbake::readTableExr((d / "o/albedo_ggx_smith-correlated_conductor-eta0.18_0.42_1.37-k3.42_2.35_1.77.exr").string());
+  brdfbake::TableImage t = brdfbake::readTableExr(
+      (d / "o/albedo_ggx_smith-correlated_conductor-eta0.18_0.42_1.37-k3.42_2.35_1.77.exr").string());
   EXPECT_EQ(t.strings["brdf.fresnel"], "conductor");
   EXPECT_EQ(t.strings["brdf.fresnel.eta"], "0.18,0.42,1.37");
   EXPECT_EQ(t.strings["brdf.fresnel.k"], "3.42,2.35,1.77");
@@ -467,10 +491,12 @@ TEST(CliMaterials, EnergyWritesItsPageWithTheFurnace) {
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("report: " + (d / "energy/index.html").string()), std::string::npos) << r.out;
   const std::string html = bytes(d / "energy/index.html");
-  EXPECT_EQ(verdictLine(html), "<p class=\"verdict pass\"><strong>PASS: </strong>all 1 material(s) conserve energy</p>") << html;
+  EXPECT_EQ(verdictLine(html), "<p class=\"verdict pass\"><strong>PASS: </strong>all 1 material(s) conserve energy</p>")
+      << html;
   EXPECT_NE(html.find("\nglass               no"), std::string::npos) << html;
   EXPECT_NE(html.find("every measured pixel within its bound"), std::string::npos) << html;
-  EXPECT_NE(bytes(d / "energy/energy.csv").find("material,mu,r,param,channel,lobe1,lobe2,total,bound\n\"ggx+smith-correlated, rough glass"),
+  EXPECT_NE(bytes(d / "energy/energy.csv")
+                .find("material,mu,r,param,channel,lobe1,lobe2,total,bound\n\"ggx+smith-correlated, rough glass"),
             std::string::npos);
   EXPECT_EQ(bytes(d / "energy/render_ggx_smith-correlated.png").substr(1, 3), "PNG");
   brdfbake::testing_browser::expectPageWorks(d / "energy/index.html", fs::path(d.string() + "-browser"), 1);
@@ -487,13 +513,15 @@ TEST(CliMaterials, EnergyGateExitStatuses) {
   // conserving: the diffuse lobe gets what the specular left
   CmdResult r = run("energy --fresnel dielectric --diffuse lambert --coupling albedo-scaling --size 9");
   EXPECT_EQ(r.code, 0) << r.out;
-  EXPECT_EQ(r.out.rfind("conserves: ggx+smith-correlated, fresnel dielectric eta=1.5, diffuse lambert", 0), 0u) << r.out;
+  EXPECT_EQ(r.out.rfind("conserves: ggx+smith-correlated, fresnel dielectric eta=1.5, diffuse lambert", 0), 0u)
+      << r.out;
   // Burley's diffuse summed with a specular lobe: E_d(0, r=1) = 785/504, plus the specular
   r = run("energy --fresnel schlick --diffuse burley --size 9");
   EXPECT_EQ(r.code, 1) << r.out;
   EXPECT_EQ(r.out.rfind("VIOLATES: ", 0), 0u) << r.out;
   EXPECT_NE(r.out.find("diffuse burley alone: largest albedo 1.55754 at mu=0 r=1, above 1 by 0.558"), std::string::npos)
-      << "Burley's maximum, 785/504:\n" << r.out;
+      << "Burley's maximum, 785/504:\n"
+      << r.out;
   // the errata: Shirley's 1 - F0 as a divisor violates by far more than the corrected form's
   // 1.3e-3 (the corrected Shirley is exact only for the mirror: see the README)
   r = run("energy --fresnel schlick --f0 0.5 --diffuse shirley-as-printed --size 9");
@@ -562,7 +590,8 @@ TEST(CliEvidence, VerifyPassesTheDefaultPairAndWritesItsPage) {
                        "reciprocity ok; dielectric energy ok"),
             std::string::npos)
       << r.out;
-  for (const char* f : {"index.html", "verify.csv", "furnace_ggx_smith-correlated.svg", "loss_ggx_smith-correlated.svg"}) {
+  for (const char* f :
+       {"index.html", "verify.csv", "furnace_ggx_smith-correlated.svg", "loss_ggx_smith-correlated.svg"}) {
     ASSERT_TRUE(fs::exists(d / "verify" / f)) << f;
     EXPECT_GT(fs::file_size(d / "verify" / f), 200u) << f;
   }
@@ -578,7 +607,8 @@ TEST(CliEvidence, VerifyPassesTheDefaultPairAndWritesItsPage) {
   EXPECT_EQ(countFiles(d), 9u) << "the page, its CSV, two data files, scripts, plots and the render; no temporaries";
   // the page opens with its summary; a passing pair's heat map has no failure legend, and its
   // colour scale marks E = 1
-  EXPECT_EQ(verdictLine(html), "<p class=\"verdict pass\"><strong>PASS: </strong>all 1 pair(s) pass every check</p>") << html;
+  EXPECT_EQ(verdictLine(html), "<p class=\"verdict pass\"><strong>PASS: </strong>all 1 pair(s) pass every check</p>")
+      << html;
   const std::string gp = bytes(d / "verify/furnace_ggx_smith-correlated.gp");
   EXPECT_EQ(gp.find("E > 1 + bound"), std::string::npos) << gp;
   EXPECT_NE(gp.find("set cbtics add ('E = 1' 1)"), std::string::npos) << gp;
@@ -590,9 +620,10 @@ TEST(CliEvidence, VerifyWithoutEglWritesItsPageAndSaysWhy) {
   CmdResult r = run("verify --size 5 -o " + d.string(), "", "BRDFBAKE_EGL_LIBRARY=/nonexistent/libEGL.so.1");
   ASSERT_EQ(r.code, 0) << r.out;
   const std::string html = bytes(d / "verify/index.html");
-  EXPECT_NE(html.find("Furnace render: not drawn, no OpenGL ES device: render: no EGL library (/nonexistent/libEGL.so.1): "
-                      "install Mesa's EGL"),
-            std::string::npos)
+  EXPECT_NE(
+      html.find("Furnace render: not drawn, no OpenGL ES device: render: no EGL library (/nonexistent/libEGL.so.1): "
+                "install Mesa's EGL"),
+      std::string::npos)
       << html;
   EXPECT_FALSE(fs::exists(d / "verify/render_ggx_smith-correlated.png"));
 }
@@ -608,7 +639,9 @@ TEST(CliEvidence, VerifyFlagsBrokenModels) {
   // a failing pair's map marks the texels over their bound; the summary counts the failures
   EXPECT_NE(bytes(d / "verify/furnace_blinn-phong_smith.gp").find("E > 1 + bound"), std::string::npos);
   const std::string html = bytes(d / "verify/index.html");
-  EXPECT_EQ(verdictLine(html), "<p class=\"verdict fail\"><strong>FAIL: </strong>3 of 4 pair(s) fail a check (below)</p>") << html;
+  EXPECT_EQ(verdictLine(html),
+            "<p class=\"verdict fail\"><strong>FAIL: </strong>3 of 4 pair(s) fail a check (below)</p>")
+      << html;
   EXPECT_NE(r.out.find("pass  ggx+smith:"), std::string::npos) << r.out;
 }
 
@@ -647,7 +680,8 @@ TEST(CliEvidence, StressIsCleanAndWritesItsPage) {
   EXPECT_NE(html.find("every measured pixel within its bound"), std::string::npos);
   // the verdict first; the plot's legend below the data, with no failure entry when nothing fails
   EXPECT_EQ(verdictLine(html),
-            "<p class=\"verdict pass\"><strong>PASS: </strong>all 129 points pass: finite, within their bounds, limits met</p>")
+            "<p class=\"verdict pass\"><strong>PASS: </strong>all 129 points pass: finite, within their bounds, limits "
+            "met</p>")
       << html;
   const std::string gp = bytes(d / "stress/stress.gp");
   EXPECT_NE(gp.find("set key outside"), std::string::npos) << gp;
@@ -665,10 +699,13 @@ TEST(CliEvidence, ConvergenceShowsEachMethodAgainstTheReference) {
   CmdResult r = run("convergence --size 4 -o " + d.string());
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_TRUE(fs::exists(d / "convergence/render_ggx_smith-correlated.png"));
-  EXPECT_EQ(verdictLine(bytes(d / "convergence/index.html")).rfind("<p class=\"verdict measured\">quadrature (device, float): true error ", 0), 0u)
+  EXPECT_EQ(verdictLine(bytes(d / "convergence/index.html"))
+                .rfind("<p class=\"verdict measured\">quadrature (device, float): true error ", 0),
+            0u)
       << bytes(d / "convergence/index.html");
   brdfbake::testing_browser::expectPageWorks(d / "convergence/index.html", fs::path(d.string() + "-browser"), 2);
-  for (const char* m : {"quadrature (device, float)  ", "quadrature (host, double)  ", "Monte Carlo (Hammersley, float)  "})
+  for (const char* m :
+       {"quadrature (device, float)  ", "quadrature (host, double)  ", "Monte Carlo (Hammersley, float)  "})
     EXPECT_NE(r.out.find(m), std::string::npos) << m << "\n" << r.out;
   std::string out = r.out.substr(r.out.find("time to 1e-7"));  // the summary rows
   size_t q = out.find("\nquadrature (device, float)   ");
@@ -687,10 +724,11 @@ TEST(CliEvidence, ConvergenceShowsEachMethodAgainstTheReference) {
   r = run("convergence --size 0");
   EXPECT_EQ(r.code, 64) << r.out;
   // a ladder that is empty or absurd
-  for (auto [args, msg] : {std::pair{"--samples ''", "--samples must be a comma-separated, increasing list"},
-                           {"--samples 64,16", "--samples must be increasing (a ladder of budgets), got 16 after 64"},
-                           {"--levels 0,9", "--levels must be a comma-separated, increasing list of integers in 0..5, got '9'"},
-                           {"--samples 0", "in 1..4194304, got '0'"}}) {
+  for (auto [args, msg] :
+       {std::pair{"--samples ''", "--samples must be a comma-separated, increasing list"},
+        {"--samples 64,16", "--samples must be increasing (a ladder of budgets), got 16 after 64"},
+        {"--levels 0,9", "--levels must be a comma-separated, increasing list of integers in 0..5, got '9'"},
+        {"--samples 0", "in 1..4194304, got '0'"}}) {
     r = run(std::string("convergence ") + args);
     EXPECT_EQ(r.code, 64) << args << "\n" << r.out;
     EXPECT_NE(r.out.find(msg), std::string::npos) << args << "\n" << r.out;
@@ -740,7 +778,8 @@ TEST(CliEvidence, ConvergenceForEveryTableKind) {
       // eta above 1: below it, at (mu 0.75, r 0.75, eta 0.667), next to the critical cosine 0.745, the
       // device and the o-space reference differ by 1.6e-7 in E_R where the device's bound is 1.6e-9
       // (docs/accuracy.md, open)
-      {"--table dielectric --ndf ggx --gaf smith --size 2 --eta-range 1.33,1.5 --levels 0,1", "dielectric (E_R and E_T)"},
+      {"--table dielectric --ndf ggx --gaf smith --size 2 --eta-range 1.33,1.5 --levels 0,1",
+       "dielectric (E_R and E_T)"},
       {"--table dielectric-avg --ndf beckmann --gaf smith --size 1 --eta-range 0.7,1.5 --levels 0", "dielectric-avg"},
       {merl + " --table albedo --size 1 --levels 0,1", "albedo of merl:"}};
   for (const auto& [args, title] : cases) {
@@ -762,8 +801,10 @@ TEST(CliEvidence, ConvergenceForEveryTableKind) {
     std::map<std::string, std::pair<double, double>> span;  // first and last error per method
     for (const ConvRow& row : rows) {
       auto it = span.find(row.method);
-      if (it == span.end()) span[row.method] = {row.error, -1};
-      else it->second.second = row.error;
+      if (it == span.end())
+        span[row.method] = {row.error, -1};
+      else
+        it->second.second = row.error;
     }
     for (const auto& [m, fl] : span)
       if (fl.second >= 0) {

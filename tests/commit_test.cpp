@@ -109,7 +109,8 @@ TEST(Commit, KilledCommitIsFinishedByTheNextBake) {
   fs::remove_all(d / "o");
   fs::create_directory(d / "o");
   const std::string gone = std::to_string(deadPid());
-  for (const std::string n : {".kp_ggx.exr.brdfbake-tmp-" + gone + "-AbC123", ".kp_ggx.exr.brdfbake-tmp-" + gone + "-AbC123.old"})
+  for (const std::string n :
+       {".kp_ggx.exr.brdfbake-tmp-" + gone + "-AbC123", ".kp_ggx.exr.brdfbake-tmp-" + gone + "-AbC123.old"})
     std::ofstream(d / "o" / n) << "partial";
   std::ofstream(d / "o" / ".mine") << "not ours";
   ASSERT_EQ(run(std::string(kSmall) + " -o o", d.string()).code, 0);
@@ -123,8 +124,11 @@ TEST(Commit, ASweepRemovesOnlyWhatIsProvablyOurs) {
   const fs::path d = freshDir("commit", "ownership");
   fs::create_directories(d / "o");
   const std::string gone = std::to_string(deadPid()), live = std::to_string(::getpid());
-  const std::vector<std::string> keep = {".notes.tmp-123", ".notes.tmp-123.old", ".x.exr.brdfbake-tmp-AbC123",
-                                         ".x.exr.brdfbake-tmp-" + live + "-AbC123", ".x.exr.brdfbake-tmp-" + gone + "-toolong1",
+  const std::vector<std::string> keep = {".notes.tmp-123",
+                                         ".notes.tmp-123.old",
+                                         ".x.exr.brdfbake-tmp-AbC123",
+                                         ".x.exr.brdfbake-tmp-" + live + "-AbC123",
+                                         ".x.exr.brdfbake-tmp-" + gone + "-toolong1",
                                          ".brdfbake-tmp-" + gone + "-AbC123"};
   for (const std::string& n : keep) std::ofstream(d / "o" / n) << "keep " << n;
   std::ofstream(d / "o" / (".kp_ggx.exr.brdfbake-tmp-" + gone + "-Zz9Yy8")) << "a killed bake's";

@@ -36,9 +36,9 @@ inline Texture read(const std::string& path) {
   };
   // DXGI_FORMAT values (dxgiformat.h) of the uncompressed formats the baker may write
   static const std::map<uint32_t, Info> kFormats = {
-      {2, {4, 32, true}},   {6, {3, 32, true}},   {16, {2, 32, true}},  {41, {1, 32, true}},
-      {10, {4, 16, true}},  {34, {2, 16, true}},  {54, {1, 16, true}},  {11, {4, 16, false}},
-      {35, {2, 16, false}}, {56, {1, 16, false}}, {28, {4, 8, false}},  {49, {2, 8, false}}, {61, {1, 8, false}}};
+      {2, {4, 32, true}},  {6, {3, 32, true}},  {16, {2, 32, true}},  {41, {1, 32, true}},  {10, {4, 16, true}},
+      {34, {2, 16, true}}, {54, {1, 16, true}}, {11, {4, 16, false}}, {35, {2, 16, false}}, {56, {1, 16, false}},
+      {28, {4, 8, false}}, {49, {2, 8, false}}, {61, {1, 8, false}}};
   Texture t;
   std::ifstream in(path, std::ios::binary);
   const std::string b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -91,8 +91,10 @@ inline Texture read(const std::string& path) {
     const size_t at = 148 + i * bytes;
     uint32_t raw = 0;
     for (int k = bytes - 1; k >= 0; --k) raw = (raw << 8) | static_cast<unsigned char>(b[at + k]);
-    if (!t.isFloat) t.texels[i] = raw / (t.bits == 16 ? 65535.0 : 255.0);
-    else if (t.bits == 16) t.texels[i] = static_cast<float>(Imath::half(Imath::half::FromBits, static_cast<uint16_t>(raw)));
+    if (!t.isFloat)
+      t.texels[i] = raw / (t.bits == 16 ? 65535.0 : 255.0);
+    else if (t.bits == 16)
+      t.texels[i] = static_cast<float>(Imath::half(Imath::half::FromBits, static_cast<uint16_t>(raw)));
     else {
       float f;
       std::memcpy(&f, &raw, 4);

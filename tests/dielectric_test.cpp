@@ -29,7 +29,9 @@ namespace fs = std::filesystem;
 using testing_device::rel;
 using testing_device::runner;
 
-const int kPairs[4][2] = {{NDF_GGX, GAF_SMITH}, {NDF_GGX, GAF_SMITH_CORRELATED}, {NDF_BECKMANN, GAF_SMITH},
+const int kPairs[4][2] = {{NDF_GGX, GAF_SMITH},
+                          {NDF_GGX, GAF_SMITH_CORRELATED},
+                          {NDF_BECKMANN, GAF_SMITH},
                           {NDF_BECKMANN, GAF_SMITH_CORRELATED}};
 
 // A node grid over mu and r (n x n: mu, r = 0, 1/(n-1), ..., 1) at the given etas: planes E_R, E_T, bound.
@@ -42,7 +44,7 @@ size_t at(int n, int z, int y, int x) { return (static_cast<size_t>(z) * n + y) 
 // TIR at 1/1.5), grazing-ish and normal views, rough and smooth-ish surfaces, all four pairs.
 TEST(Dielectric, KernelMatchesReference) {
   const std::vector<double> etas = {1.0001, 1.01, 0.99, 1 / 1.5, 1.5, 2.5};
-  const int n = 5;  // mu, r in {0, .25, .5, .75, 1}
+  const int n = 5;                                 // mu, r in {0, .25, .5, .75, 1}
   const int pts[3][2] = {{1, 1}, {2, 3}, {4, 2}};  // (mu index, r index): a few per eta, the reference is slow
   double worst = 0;
   for (int pi = 0; pi < 4; ++pi) {
@@ -55,10 +57,13 @@ TEST(Dielectric, KernelMatchesReference) {
       size_t k = at(n, z, pt[1], pt[0]);
       double er = rel(t[0][k], ref.r), et = rel(t[1][k], ref.t);
       worst = std::max({worst, er, et});
-      EXPECT_LT(er, 1e-5) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " mu " << mu << " r " << r << " eta " << etas[z];
-      EXPECT_LT(et, 1e-5) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " mu " << mu << " r " << r << " eta " << etas[z];
+      EXPECT_LT(er, 1e-5) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " mu " << mu << " r " << r << " eta "
+                          << etas[z];
+      EXPECT_LT(et, 1e-5) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " mu " << mu << " r " << r << " eta "
+                          << etas[z];
       // the reference's own accuracy: ~1e-8 (two methods agree to 6e-8, docs/rough-glass.md)
-      EXPECT_LE(std::max(er, et), t[2][k] + 1e-7) << "bound not honest at mu " << mu << " r " << r << " eta " << etas[z];
+      EXPECT_LE(std::max(er, et), t[2][k] + 1e-7)
+          << "bound not honest at mu " << mu << " r " << r << " eta " << etas[z];
     }
   }
   // a rough surface, eta = 2.13: the refracting half-vector reaches the horizon inside the lobe, where
@@ -93,9 +98,9 @@ TEST(Dielectric, RescaledEstimatesBoundTheConvergedRule) {
   struct Pt {
     double mu, r, eta;
   };
-  std::vector<Pt> pts = {{0.375, 0.625, 0.95},         // the TIR kink meets the reflected edge
-                         {5.0 / 12, 0.75, 0.4},        // x* meets ck
-                         {0.75, 11.0 / 12, 1 / 1.5},   // theta_h = 0 just before a break
+  std::vector<Pt> pts = {{0.375, 0.625, 0.95},             // the TIR kink meets the reflected edge
+                         {5.0 / 12, 0.75, 0.4},            // x* meets ck
+                         {0.75, 11.0 / 12, 1 / 1.5},       // theta_h = 0 just before a break
                          {1.0 / 256, 1.0 / 12, 0.44051}};  // x*'s crossing at 89.6 degrees
   for (double eta : {0.6, 1.0001, 1.5})
     for (double mu : {0.1, 0.5, 0.9})
@@ -112,7 +117,8 @@ TEST(Dielectric, RescaledEstimatesBoundTheConvergedRule) {
       EXPECT_LE(et, d.err_t) << "E_T at mu " << q.mu << " r " << q.r << " eta " << q.eta;
       EXPECT_LE(d.err_r + d.err_t, 2.5 * kDielectricTarget) << "mu " << q.mu << " r " << q.r << " eta " << q.eta;
     }
-    std::printf("%s+%s: the largest error / estimate %.2f\n", ndfNames()[pr[0]].c_str(), gafNames()[pr[1]].c_str(), worst);
+    std::printf("%s+%s: the largest error / estimate %.2f\n", ndfNames()[pr[0]].c_str(), gafNames()[pr[1]].c_str(),
+                worst);
   }
 }
 
@@ -158,8 +164,8 @@ TEST(Dielectric, EtaOneContinuity) {
           }
           for (const double* q : {qr, qt}) {
             double d45 = std::fabs(q[1] - q[0]), d56 = std::fabs(q[2] - q[1]);
-            EXPECT_LE(d56, d45 + 0.02) << ndfNames()[pr[0]] << "+" << gafNames()[pr[1]] << " mu " << mu << " r "
-                                             << r << " side " << sg << " q " << q[0] << " " << q[1] << " " << q[2];
+            EXPECT_LE(d56, d45 + 0.02) << ndfNames()[pr[0]] << "+" << gafNames()[pr[1]] << " mu " << mu << " r " << r
+                                       << " side " << sg << " q " << q[0] << " " << q[1] << " " << q[2];
             if (d45 > 0.02) worstRatio = std::max(worstRatio, d56 / d45);
             worstQ = std::max(worstQ, std::fabs(q[2]));
           }
@@ -178,7 +184,7 @@ TEST(Dielectric, SmoothLimit) {
         auto d0 = brdf64::diel_texel(pr[0], pr[1], mu, 0.0, eta, 2e-6);  // r = 0: exact
         EXPECT_EQ(d0.er, f);
         EXPECT_EQ(d0.et, 1 - f);
-        auto d = brdf64::diel_texel(pr[0], pr[1], mu, 0.01, eta, 2e-6);  // alpha = 1e-4
+        auto d = brdf64::diel_texel(pr[0], pr[1], mu, 0.01, eta, 2e-6);        // alpha = 1e-4
         if (std::fabs(mu - std::sqrt(std::max(0.0, 1 - eta * eta))) > 0.05) {  // away from the critical angle
           EXPECT_NEAR(d.er, f, 1e-4) << "eta " << eta << " mu " << mu;
           EXPECT_NEAR(d.et, 1 - f, 1e-4) << "eta " << eta << " mu " << mu;
@@ -242,20 +248,22 @@ TEST(Dielectric, AveragesMatchTightRuleWithHonestBounds) {
       double err = 0;
       for (int c = 0; c < 3; ++c) {
         err = std::max(err, std::fabs(d[c]));
-        EXPECT_LE(std::fabs(d[c]), ba[c] + bb[c] + 1e-9) << "bound not honest (channel " << c << ") at r " << rs[j] << " eta " << es[j];
+        EXPECT_LE(std::fabs(d[c]), ba[c] + bb[c] + 1e-9)
+            << "bound not honest (channel " << c << ") at r " << rs[j] << " eta " << es[j];
       }
       EXPECT_NEAR(a.bound[j], a.br[j] + a.bt[j], 1e-15);
-      std::printf("%s+%s r %.2f eta %.4f: E_R,avg %.7f E_T,avg %.7f, %d nodes, bound %.2e, error %.2e (tight bound %.2e)\n",
-                  ndfNames()[pr[0]].c_str(), gafNames()[pr[1]].c_str(), rs[j], es[j], a.er[j], a.et[j], a.nodes[j],
-                  a.bound[j], err, b.bound[j]);
+      std::printf(
+          "%s+%s r %.2f eta %.4f: E_R,avg %.7f E_T,avg %.7f, %d nodes, bound %.2e, error %.2e (tight bound %.2e)\n",
+          ndfNames()[pr[0]].c_str(), gafNames()[pr[1]].c_str(), rs[j], es[j], a.er[j], a.et[j], a.nodes[j], a.bound[j],
+          err, b.bound[j]);
       EXPECT_LT(a.bound[j], 2 * kDielectricAvgTarget);
       EXPECT_LE(a.er[j] + a.et[j], 1 + 1e-6);
     }
   }
 }
 
-using testing_cli::CmdResult;
 using testing_cli::bytes;
+using testing_cli::CmdResult;
 using testing_cli::run;
 fs::path freshDir(const std::string& name) { return testing_cli::freshDir("diel", name, false); }
 
@@ -299,20 +307,20 @@ TEST(DielectricCli, SizePerAxisGivesTheSlicesAsked) {
   EXPECT_EQ(t.strings["brdf.atlas"], "2x1");
   ASSERT_EQ(t.width, 10);
   ASSERT_EQ(t.height, 4);
-  const double f0 = 0.04;  // ((1.5 - 1)/(1.5 + 1))^2
-  EXPECT_NEAR(t.planes[0][4], f0, 1e-6);      // slice 0, mu = 1 (x = 4), r = 0
+  const double f0 = 0.04;                 // ((1.5 - 1)/(1.5 + 1))^2
+  EXPECT_NEAR(t.planes[0][4], f0, 1e-6);  // slice 0, mu = 1 (x = 4), r = 0
   EXPECT_NEAR(t.planes[1][4], 1 - f0, 1e-6);
   fs::remove_all(d);
 }
 
 TEST(DielectricCli, BadInputExits64AndWritesNothing) {
   fs::path d = freshDir("bad");
-  const char* bad[] = {"--table dielectric --eta-range 0,2", "--table dielectric --eta-range -1,2",
-                       "--table dielectric --eta-range 2,1", "--table dielectric --eta-range 1.5",
-                       "--table dielectric --ndf blinn-phong", "--table dielectric-avg --gaf schlick-ggx",
+  const char* bad[] = {"--table dielectric --eta-range 0,2",      "--table dielectric --eta-range -1,2",
+                       "--table dielectric --eta-range 2,1",      "--table dielectric --eta-range 1.5",
+                       "--table dielectric --ndf blinn-phong",    "--table dielectric-avg --gaf schlick-ggx",
                        "--table dielectric --fresnel dielectric", "--table albedo --eta-range 1,2",
-                       "--table dielectric-avg --size 4,4,4", "--table dielectric --size 4,4,4 --param angles",
-                       "--table dielectric --size 4,4,0", "--table dielectric --size 4,1,4 --grid node"};
+                       "--table dielectric-avg --size 4,4,4",     "--table dielectric --size 4,4,4 --param angles",
+                       "--table dielectric --size 4,4,0",         "--table dielectric --size 4,1,4 --grid node"};
   for (const char* a : bad) {
     auto r = run(std::string(a) + " -o '" + d.string() + "'");
     EXPECT_EQ(r.code, 64) << a << ": " << r.out;

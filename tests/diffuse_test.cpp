@@ -22,7 +22,7 @@ using reference::diffuseName;
 constexpr double kPi = 3.14159265358979323846;
 // float arithmetic, as the bake claims it (tables/error_model.h diffuseFloatModel)
 double allowance(int model, double value) { return floatArithmeticError(std::fabs(value), diffuseFloatModel(model)); }
-constexpr double kClaim = 1e-5;      // the largest bound the estimator may claim where E is finite
+constexpr double kClaim = 1e-5;  // the largest bound the estimator may claim where E is finite
 
 KernelRunner& runner() {
   static std::unique_ptr<KernelRunner> r;
@@ -37,7 +37,8 @@ double paramHi(int model) {
 }
 // Where the true albedo is +inf: oren-nayar-as-printed at mu = 0 (sigma > 0), shirley-as-printed at F0 = 1.
 bool infiniteAt(int model, double p, double mu) {
-  return (model == DIFFUSE_OREN_NAYAR_AS_PRINTED && mu == 0 && p > 0) || (model == DIFFUSE_SHIRLEY_AS_PRINTED && p >= 1);
+  return (model == DIFFUSE_OREN_NAYAR_AS_PRINTED && mu == 0 && p > 0) ||
+         (model == DIFFUSE_SHIRLEY_AS_PRINTED && p >= 1);
 }
 // The kernel's grid coordinate (kernels/bake.cl grid_coord) in float, lo = 0.
 float gridCoord(int i, int n, float hi, bool node) {
@@ -59,10 +60,12 @@ TEST(Diffuse, PointwiseMatchesVectorFormulasAndIsReciprocal) {
             double i[3] = {std::sin(ti) * std::cos(ph), std::sin(ti) * std::sin(ph), std::cos(ti)};
             double o[3] = {std::sin(to), 0.0, std::cos(to)};
             double want = reference::diffuseBrdf(model, p, i, o);
-            double got = brdf64::diffuse_f(model, p, std::cos(ti), std::sin(ti), std::cos(to), std::sin(to), std::cos(ph));
-            double back = brdf64::diffuse_f(model, p, std::cos(to), std::sin(to), std::cos(ti), std::sin(ti), std::cos(ph));
-            EXPECT_LE(rel(got, want), 1e-12) << diffuseName(model) << " p " << p << " theta_i " << ti << " theta_o " << to
-                                             << " phi " << ph;
+            double got =
+                brdf64::diffuse_f(model, p, std::cos(ti), std::sin(ti), std::cos(to), std::sin(to), std::cos(ph));
+            double back =
+                brdf64::diffuse_f(model, p, std::cos(to), std::sin(to), std::cos(ti), std::sin(ti), std::cos(ph));
+            EXPECT_LE(rel(got, want), 1e-12)
+                << diffuseName(model) << " p " << p << " theta_i " << ti << " theta_o " << to << " phi " << ph;
             EXPECT_LE(rel(back, got), 1e-12) << diffuseName(model) << " reciprocity p " << p << " theta_i " << ti
                                              << " theta_o " << to << " phi " << ph;
           }
@@ -80,7 +83,8 @@ TEST(Diffuse, HostEstimatorMatchesClosedForms) {
         double err = -1;
         double got = brdf64::diffuse_albedo(model, p, mu, &err);
         EXPECT_LE(rel(got, exact), 1e-9) << diffuseName(model) << " p " << p << " mu " << mu;
-        EXPECT_LE(std::fabs(got - exact), err + 1e-12 * std::max(1.0, exact)) << diffuseName(model) << " p " << p << " mu " << mu;
+        EXPECT_LE(std::fabs(got - exact), err + 1e-12 * std::max(1.0, exact))
+            << diffuseName(model) << " p " << p << " mu " << mu;
         EXPECT_LE(err, 1e-6 * std::max(1.0, exact)) << diffuseName(model) << " p " << p << " mu " << mu;
         float errf = -1;
         float gotf = brdf32::diffuse_albedo(model, float(p), float(mu), &errf);
@@ -177,8 +181,8 @@ Stats checkGrid(int model, int nx, int ny, bool node, double pHi) {
       size_t x = size_t(j) * nx + i;
       double mu = gridCoord(i, nx, 1.0f, node), p = gridCoord(j, ny, float(pHi), node);
       double e = t.planes[0][x], b = t.err[x];
-      std::string at = diffuseName(model) + (node ? " node" : " centre") + " mu " + std::to_string(mu) + " p " +
-                       std::to_string(p);
+      std::string at =
+          diffuseName(model) + (node ? " node" : " centre") + " mu " + std::to_string(mu) + " p " + std::to_string(p);
       EXPECT_TRUE(std::isfinite(e) && std::isfinite(b)) << at;
       EXPECT_GE(b, 0.0) << at;
       if (!std::isfinite(e) || !std::isfinite(b)) continue;
@@ -246,8 +250,9 @@ TEST(DiffuseKernel, OrenNayarErratumIsCaught) {
   int j = ny - 1;  // sigma = pi/2
   double sigma = gridCoord(j, ny, float(kPi / 2), true);
   double p1 = printed.planes[0][j * nx + 1], p8 = printed.planes[0][j * nx + 8], p64 = printed.planes[0][j * nx + 64];
-  std::printf("oren-nayar-as-printed sigma pi/2: E(1) %.6f E(1/8) %.6f E(1/64) %.6f; oren-nayar E(1/64) %.6f E(0) %.6f\n",
-              p64, p8, p1, fixed.planes[0][j * nx + 1], fixed.planes[0][j * nx]);
+  std::printf(
+      "oren-nayar-as-printed sigma pi/2: E(1) %.6f E(1/8) %.6f E(1/64) %.6f; oren-nayar E(1/64) %.6f E(0) %.6f\n", p64,
+      p8, p1, fixed.planes[0][j * nx + 1], fixed.planes[0][j * nx]);
   EXPECT_GT(p1, 5.0) << "oren-nayar-as-printed at mu = 1/64";
   EXPECT_GT(p1, 4 * p8);
   EXPECT_NEAR(p1, reference::diffuseAlbedoClosedForm(DIFFUSE_OREN_NAYAR_AS_PRINTED, sigma, 1.0 / 64), 1e-5 * p1);

@@ -60,8 +60,7 @@ class ExrTest : public ::testing::Test {
     img.width = 3;
     img.height = 2;
     img.channels = {"R", "G"};
-    img.planes = {{0.0f, 0.125f, 1.0f / 3.0f, -2.5f, 1000.25f, 1e-3f},
-                  {1.0f, 0.5f, 0.25f, 3.0f, -0.0625f, 42.0f}};
+    img.planes = {{0.0f, 0.125f, 1.0f / 3.0f, -2.5f, 1000.25f, 1e-3f}, {1.0f, 0.5f, 0.25f, 3.0f, -0.0625f, 42.0f}};
     img.strings = {{"brdfbake:model", "ggx"}, {"brdfbake:table", "dfg"}};
     img.v2f = {{"brdfbake:xRange", {0.0f, 1.0f}}, {"brdfbake:yRange", {0.03125f, 0.96875f}}};
     img.floats = {{"brdfbake:ior", 1.5f}, {"brdfbake:eps", 1e-7f}};
@@ -100,8 +99,7 @@ TEST_F(ExrTest, FloatRoundTrip) {
   ASSERT_EQ(back.planes.size(), 2u);
   for (size_t c = 0; c < 2; ++c) {
     ASSERT_EQ(back.planes[c].size(), 6u);
-    for (size_t i = 0; i < 6; ++i)
-      EXPECT_EQ(back.planes[c][i], img.planes[c][i]) << "channel " << c << " texel " << i;
+    for (size_t i = 0; i < 6; ++i) EXPECT_EQ(back.planes[c][i], img.planes[c][i]) << "channel " << c << " texel " << i;
   }
   expectSameAttributes(back, img);
   EXPECT_FALSE(tableExrIsHalf(p));
@@ -163,8 +161,7 @@ TEST_F(ExrTest, WritingTwiceIsByteIdentical) {
 }
 
 TEST_F(ExrTest, NaNAndInfAreRefused) {
-  const float bad[] = {std::numeric_limits<float>::quiet_NaN(),
-                       std::numeric_limits<float>::infinity(),
+  const float bad[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
                        -std::numeric_limits<float>::infinity()};
   for (float v : bad) {
     for (bool half : {false, true}) {
@@ -206,9 +203,7 @@ TEST_F(ExrTest, HalfOverflowIsRefused) {
 }
 
 TEST_F(ExrTest, InvalidShapesAreRefused) {
-  auto code = [&](TableImage img) {
-    return codeOf([&] { writeTableExr(path("shape.exr"), img, false); });
-  };
+  auto code = [&](TableImage img) { return codeOf([&] { writeTableExr(path("shape.exr"), img, false); }); };
   TableImage img = sample();
   img.width = 0;
   EXPECT_EQ(code(img), kExitDataErr);

@@ -24,9 +24,11 @@ namespace {
 const std::string kNoPrepared = "BRDFBAKE_PREPARED_PROGRAMS=off ";
 
 // A bake of the default pair's albedo with a fresh PoCL cache and the program cache `programs`.
-CmdResult bakeWith(const fs::path& d, const std::string& programs, const std::string& out, const std::string& more = "") {
+CmdResult bakeWith(const fs::path& d, const std::string& programs, const std::string& out,
+                   const std::string& more = "") {
   return run("bake --table albedo --size 8 -o '" + (d / out).string() + "' " + more, d.string(),
-             kNoPrepared + "POCL_CACHE_DIR='" + (d / ("pocl-" + out)).string() + "' BRDFBAKE_PROGRAM_CACHE='" + programs + "'");
+             kNoPrepared + "POCL_CACHE_DIR='" + (d / ("pocl-" + out)).string() + "' BRDFBAKE_PROGRAM_CACHE='" +
+                 programs + "'");
 }
 
 std::vector<fs::path> entries(const fs::path& dir) {
@@ -103,7 +105,7 @@ TEST(FirstRun, StaleForeignOrTornEntriesAreNeverLoaded) {
   stale[src + 1] = 'X';  // other sources, same length: a stale entry
   size_t dev = foreign.find("device: ");
   ASSERT_NE(dev, std::string::npos);
-  foreign[dev + 8] ^= 0x20;  // another device's name
+  foreign[dev + 8] ^= 0x20;        // another device's name
   torn[torn.size() - 20] ^= 0x01;  // a flipped bit in the binary: the checksum fails
   for (const Case& c : {Case{"stale", stale}, Case{"foreign", foreign}, Case{"torn", torn},
                         Case{"truncated", good.substr(0, good.size() / 2)}}) {
@@ -119,8 +121,8 @@ TEST(FirstRun, StaleForeignOrTornEntriesAreNeverLoaded) {
   fs::remove(entry);
   ASSERT_EQ(::mkfifo(entry.c_str(), 0600), 0);
   CmdResult r = run("bake --table albedo --size 8 -o fifo", d.string(),
-                    "timeout 60 env " + kNoPrepared + "POCL_CACHE_DIR='" + (d / "pocl-fifo").string() + "' BRDFBAKE_PROGRAM_CACHE='" +
-                        programs + "'");
+                    "timeout 60 env " + kNoPrepared + "POCL_CACHE_DIR='" + (d / "pocl-fifo").string() +
+                        "' BRDFBAKE_PROGRAM_CACHE='" + programs + "'");
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("1 program compiled"), std::string::npos) << r.out;
 }
@@ -133,8 +135,9 @@ TEST(FirstRun, AnUnwritableCacheIsNotAFailure) {
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("binary not stored: "), std::string::npos) << r.out;
   // and the summary says so, instead of promising that the next bake loads it
-  EXPECT_NE(r.out.find("1 program compiled (its binary was not kept: --timings says why; the next bake compiles again)"),
-            std::string::npos)
+  EXPECT_NE(
+      r.out.find("1 program compiled (its binary was not kept: --timings says why; the next bake compiles again)"),
+      std::string::npos)
       << r.out;
   EXPECT_EQ(r.out.find("the next bake loads"), std::string::npos) << r.out;
   EXPECT_TRUE(fs::exists(d / "a" / "albedo_ggx_smith-correlated.exr"));
@@ -151,7 +154,8 @@ TEST(FirstRun, InterruptedStoresAreSwept) {
   ::waitpid(c, nullptr, 0);
   const std::string gone = ".program.brdfbake-tmp-" + std::to_string(c) + "-AbC123";
   const std::string live = ".program.brdfbake-tmp-" + std::to_string(::getpid()) + "-AbC123";
-  for (const std::string& n : {gone, live, std::string(".program.brdfbake-tmp-XyZ789")}) std::ofstream(programs / n) << "torn";
+  for (const std::string& n : {gone, live, std::string(".program.brdfbake-tmp-XyZ789")})
+    std::ofstream(programs / n) << "torn";
   CmdResult r = bakeWith(d, programs.string(), "a");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_FALSE(fs::exists(programs / gone));
@@ -164,7 +168,8 @@ TEST(FirstRun, InterruptedStoresAreSwept) {
 // names the programs ready for each device and where they are.
 TEST(FirstRun, DevicesPreparesAndListsPrograms) {
   const fs::path d = freshDir("firstrun", "devices");
-  const std::string env = kNoPrepared + "POCL_CACHE_DIR='" + (d / "pocl").string() + "' BRDFBAKE_PROGRAM_CACHE='" + (d / "mine").string() + "'";
+  const std::string env = kNoPrepared + "POCL_CACHE_DIR='" + (d / "pocl").string() + "' BRDFBAKE_PROGRAM_CACHE='" +
+                          (d / "mine").string() + "'";
   CmdResult r = run("devices --prepare '" + (d / "prepared").string() + "'", "", env);
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("ggx + smith-correlated: "), std::string::npos) << r.out;
@@ -175,7 +180,8 @@ TEST(FirstRun, DevicesPreparesAndListsPrograms) {
   ASSERT_EQ(bakeWith(d, (d / "mine").string(), "a").code, 0);
   r = run("devices", "", env);
   ASSERT_EQ(r.code, 0) << r.out;
-  EXPECT_NE(r.out.find("programs ready in " + (d / "mine").string() + ": 1 (ggx + smith-correlated)\n"), std::string::npos)
+  EXPECT_NE(r.out.find("programs ready in " + (d / "mine").string() + ": 1 (ggx + smith-correlated)\n"),
+            std::string::npos)
       << r.out;
   // an entry of other sources (one byte near the end of the program's source) is listed as stale
   ASSERT_EQ(entries(d / "mine").size(), 1u);
@@ -187,7 +193,8 @@ TEST(FirstRun, DevicesPreparesAndListsPrograms) {
   std::ofstream(entry, std::ios::binary | std::ios::trunc) << stale;
   r = run("devices", "", env);
   ASSERT_EQ(r.code, 0) << r.out;
-  EXPECT_NE(r.out.find("programs in " + (d / "mine").string() + ": none ready, 1 stale (other sources or options: never loaded)"),
+  EXPECT_NE(r.out.find("programs in " + (d / "mine").string() +
+                       ": none ready, 1 stale (other sources or options: never loaded)"),
             std::string::npos)
       << r.out;
   r = run("devices --prepare", "", env);
@@ -202,14 +209,19 @@ TEST(FirstRun, DevicesPreparesAndListsPrograms) {
 // on stdout is the same as without it.
 TEST(FirstRun, TimingsNameEveryStage) {
   const fs::path d = freshDir("firstrun", "timings");
-  const std::string cmd = "cd '" + d.string() + "' && '" BRDFBAKE_EXE "' bake --timings -o out >report.txt 2>timings.txt";
+  const std::string cmd =
+      "cd '" + d.string() + "' && '" BRDFBAKE_EXE "' bake --timings -o out >report.txt 2>timings.txt";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << bytes(d / "timings.txt");
   const std::string t = bytes(d / "timings.txt");
   CmdResult r{0, bytes(d / "report.txt")};
-  const std::vector<std::string> stages = {"timings (wall seconds):", "device   ", " (platforms listed in ",
+  const std::vector<std::string> stages = {"timings (wall seconds):",
+                                           "device   ",
+                                           " (platforms listed in ",
                                            "program  ggx + smith-correlated: ",
-                                           "table    out/splitsum_ggx_smith-correlated.exr", "table    out/kp_ggx.exr",
-                                           "write    4 file(s) into out/", "total    since the command started"};
+                                           "table    out/splitsum_ggx_smith-correlated.exr",
+                                           "table    out/kp_ggx.exr",
+                                           "write    4 file(s) into out/",
+                                           "total    since the command started"};
   size_t at = 0;
   for (const std::string& s : stages) {
     size_t k = t.find(s, at);
@@ -230,7 +242,10 @@ TEST(FirstRun, ProgressLineOnATerminalOnly) {
   std::vector<std::string> args = big;
   args.insert(args.end(), {"-o", "tty"});
   std::string out = runOnTerminal(args, d, cache);
-  EXPECT_TRUE(std::regex_search(out, std::regex(R"(\r\x1b\[Ktty/splitsum_ggx_smith-correlated\.exr: +[0-9]+% \([0-9]+ of 589824 texels\), [0-9.]+ s, about [0-9]+ s left)")))
+  EXPECT_TRUE(std::regex_search(
+      out,
+      std::regex(
+          R"(\r\x1b\[Ktty/splitsum_ggx_smith-correlated\.exr: +[0-9]+% \([0-9]+ of 589824 texels\), [0-9.]+ s, about [0-9]+ s left)")))
       << out;
   EXPECT_NE(out.find("\r\x1b[Kfile "), std::string::npos) << "the line is erased before the report:\n" << out;
   args = big;
@@ -248,7 +263,10 @@ TEST(FirstRun, ProgressLineOnATerminalOnly) {
   r = run("bake --table splitsum --size 1536 --progress -o forced", d.string(), "POCL_CACHE_DIR='" + cache + "'");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(r.out.find("\x1b["), std::string::npos) << r.out;
-  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"((^|\n)brdfbake: forced/splitsum_ggx_smith-correlated\.exr: +[0-9]+% \([0-9]+ of 2359296 texels\))")))
+  EXPECT_TRUE(std::regex_search(
+      r.out,
+      std::regex(
+          R"((^|\n)brdfbake: forced/splitsum_ggx_smith-correlated\.exr: +[0-9]+% \([0-9]+ of 2359296 texels\))")))
       << r.out;
   // a measured material's tables report through the same observer: nothing into a pipe (its rules
   // had printed a line a second whatever stderr was)

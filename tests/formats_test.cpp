@@ -57,7 +57,8 @@ CmdResult bake(const std::string& args, const fs::path& dir) {
 }
 
 const char* kTables = "--table splitsum,albedo,albedo-avg --size 16";
-const char* kStems[] = {"splitsum_ggx_smith-correlated", "albedo_ggx_smith-correlated", "albedo-avg_ggx_smith-correlated"};
+const char* kStems[] = {"splitsum_ggx_smith-correlated", "albedo_ggx_smith-correlated",
+                        "albedo-avg_ggx_smith-correlated"};
 
 // The reference: the same tables as float32 EXR.
 const fs::path& reference() {
@@ -71,17 +72,21 @@ const fs::path& reference() {
 
 double allowed(Precision p, double v) {
   switch (p) {
-    case Precision::Float32: return 0;
-    case Precision::Float16: return std::ldexp(1.0, -11) * std::max(std::fabs(v), std::ldexp(1.0, -14));
-    case Precision::Unorm16: return 0.5 / 65535 + 1e-12;
-    case Precision::Unorm8: return 0.5 / 255 + 1e-12;
+    case Precision::Float32:
+      return 0;
+    case Precision::Float16:
+      return std::ldexp(1.0, -11) * std::max(std::fabs(v), std::ldexp(1.0, -14));
+    case Precision::Unorm16:
+      return 0.5 / 65535 + 1e-12;
+    case Precision::Unorm8:
+      return 0.5 / 255 + 1e-12;
   }
   return 0;
 }
 
 // Texel i's channel c of an interleaved reader's values (stride `n`) against the reference.
-void compareTexels(const std::string& what, const TableImage& ref, const std::vector<double>& texels, int n, Precision p,
-                   double* worstRel) {
+void compareTexels(const std::string& what, const TableImage& ref, const std::vector<double>& texels, int n,
+                   Precision p, double* worstRel) {
   ASSERT_EQ(texels.size(), static_cast<size_t>(ref.width) * ref.height * n) << what;
   for (size_t i = 0; i < static_cast<size_t>(ref.width) * ref.height; ++i)
     for (int c = 0; c < n; ++c) {
@@ -136,8 +141,9 @@ TEST(Formats, PillowReadsTheUnorm8Dds) {
   fs::path d = tempDir("pillow_dds");
   ASSERT_EQ(bake(std::string(kTables) + " --format dds --precision unorm8", d).code, 0);
   const std::string f = (d / "splitsum_ggx_smith-correlated.dds").string();
-  CmdResult r = sh(std::string("'") + BRDFBAKE_PYTHON + "' -c \"from PIL import Image\nim = Image.open('" + f +
-                   "')\nprint(im.mode, im.size[0], im.size[1])\nprint(' '.join(str(v) for px in im.getdata() for v in px))\"");
+  CmdResult r =
+      sh(std::string("'") + BRDFBAKE_PYTHON + "' -c \"from PIL import Image\nim = Image.open('" + f +
+         "')\nprint(im.mode, im.size[0], im.size[1])\nprint(' '.join(str(v) for px in im.getdata() for v in px))\"");
   ASSERT_EQ(r.code, 0) << r.out;
   std::istringstream in(r.out);
   std::string mode;
@@ -207,8 +213,10 @@ TEST(Formats, Png16ReadsBackInOpenImageIOFreeImageAndPillowWithItsMapping) {
     EXPECT_EQ(spec.format, OIIO::TypeDesc::UINT16);
     Mapping m{std::stod(spec.get_string_attribute("brdf.mapping.scale")),
               std::stod(spec.get_string_attribute("brdf.mapping.offset"))};
-    if (std::string(stem) == "albedo_ggx_none") EXPECT_GT(m.scale, 1.5) << "E exceeds 1: a scaled mapping";
-    else EXPECT_EQ(m.scale, 1.0);
+    if (std::string(stem) == "albedo_ggx_none")
+      EXPECT_GT(m.scale, 1.5) << "E exceeds 1: a scaled mapping";
+    else
+      EXPECT_EQ(m.scale, 1.0);
     const double stated = std::stod(spec.get_string_attribute("brdf.error"));
     std::vector<uint16_t> px(static_cast<size_t>(spec.width) * spec.height * 3);
     ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT16, px.data()));
@@ -275,8 +283,10 @@ TEST(Formats, HeaderCompilesAndHoldsTheStoredValues) {
     const std::string id = "brdf_splitsum_ggx_smith_correlated", M = "BRDF_SPLITSUM_GGX_SMITH_CORRELATED";
     std::string out = compileAndRun(d, "splitsum_ggx_smith-correlated.h",
                                     "std::printf(\"%d %d %d %d %s %d\\n\", " + M + "_WIDTH, " + M + "_HEIGHT, " + M +
-                                        "_DEPTH, " + M + "_CHANNELS, " + M + "_PRECISION, " + M + "_ATTRIBUTE_COUNT);\n"
-                                        "for (unsigned i = 0; i < sizeof " + id + "_data / sizeof " + id +
+                                        "_DEPTH, " + M + "_CHANNELS, " + M + "_PRECISION, " + M +
+                                        "_ATTRIBUTE_COUNT);\n"
+                                        "for (unsigned i = 0; i < sizeof " +
+                                        id + "_data / sizeof " + id +
                                         "_data[0]; ++i) std::printf(\"%.9g\\n\", (double)" + id + "_data[i]);");
     std::istringstream in(out);
     int w = 0, h = 0, depth = 0, ch = 0, attrs = 0;

@@ -121,17 +121,19 @@ Worst checkTable(int ndf, int gaf, const Edge& e, int n, bool strictReference = 
     for (int p = 0; p < 3; ++p) scale = std::max(scale, std::fabs(static_cast<double>(t.planes[p][k])));
     // the bake's claim (host/tables/microfacet.cpp): the estimate, the Fresnel-weighted float model
     // and the float term next to a kink
-    double claim = t.err[k] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf, true)) +
-                   fresnelKinkFloat(e.model, e.x, mu, r);
+    double claim =
+        t.err[k] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf, true)) + fresnelKinkFloat(e.model, e.x, mu, r);
     double err = rel(got, want);
     EXPECT_TRUE(std::isfinite(got)) << e.name << " n=" << n << " mu=" << mu << " r=" << r;
     // Where the rule in double is itself uncertain by more than a twentieth of the claim (its
     // estimate: blinn-phong, the gaussian and their -exact GAFs at grazing texels), the device is
     // held to claim + that estimate, and the claim's tightness is not judged against it.
     const bool sharp = est < 0.05 * claim;
-    if (strictReference) EXPECT_TRUE(sharp) << e.name << ": the double rule's own estimate " << est << " must be far below the claim " << claim;
-    EXPECT_LE(err, claim + (sharp ? 0.0 : est)) << e.name << " n=" << n << " mu=" << mu << " r=" << r << " device " << got
-                                                 << " double " << want;
+    if (strictReference)
+      EXPECT_TRUE(sharp) << e.name << ": the double rule's own estimate " << est << " must be far below the claim "
+                         << claim;
+    EXPECT_LE(err, claim + (sharp ? 0.0 : est))
+        << e.name << " n=" << n << " mu=" << mu << " r=" << r << " device " << got << " double " << want;
     if (sharp) EXPECT_LE(claim, tight * std::max(err, floor)) << e.name << " n=" << n << " mu=" << mu << " r=" << r;
     w.ratio = std::max(w.ratio, err / claim);
     w.claimOver = std::max(w.claimOver, claim / std::max(err, floor));
@@ -165,8 +167,10 @@ TEST(FresnelEdge, TheSweepsEdgesHoldAt128) {
   };
   Worst tir = checkTable(NDF_GGX, GAF_SMITH_CORRELATED, named("dielectric eta=0.2"), 128, true, 8);
   Worst f82 = checkTable(NDF_BECKMANN, GAF_NONE, named("f82-tint F0=0.04 tint=0"), 128, false);
-  std::printf("128^2: eta 0.2 largest error/claim %.2f (claim/max(error, floor) %.2f); f82-tint tint 0 on beckmann + none "
-              "%.2f (%.2f)\n", tir.ratio, tir.claimOver, f82.ratio, f82.claimOver);
+  std::printf(
+      "128^2: eta 0.2 largest error/claim %.2f (claim/max(error, floor) %.2f); f82-tint tint 0 on beckmann + none "
+      "%.2f (%.2f)\n",
+      tir.ratio, tir.claimOver, f82.ratio, f82.claimOver);
 }
 
 // The corner texels where the independent reference is quick (see the top of this file), against
@@ -182,10 +186,10 @@ TEST(FresnelEdge, StiffCornerMatchesReference) {
     reference::Weight w{reference::Weight::Fresnel, {e.model, e.x, e.y}};
     for (auto [i, j] : texels) {
       double mu = static_cast<float>((i + 0.5) / n), r = static_cast<float>((j + 0.5) / n);
-      double want = testing_ref::cached1(
-          testing_ref::keyOf("albedo " + ndfNames()[ndf] + " " + gafNames()[gaf] + " fresnel-edge",
-                             {r, mu, double(e.model), e.x, e.y}),
-          [&] { return reference::albedo(ndf, gaf, r, mu, w).b; });
+      double want =
+          testing_ref::cached1(testing_ref::keyOf("albedo " + ndfNames()[ndf] + " " + gafNames()[gaf] + " fresnel-edge",
+                                                  {r, mu, double(e.model), e.x, e.y}),
+                               [&] { return reference::albedo(ndf, gaf, r, mu, w).b; });
       size_t k = static_cast<size_t>(j) * n + i;
       double scale = 0;
       for (int p = 0; p < 3; ++p) scale = std::max(scale, std::fabs(static_cast<double>(t.planes[p][k])));

@@ -59,8 +59,8 @@ TEST(Fresnel, ClosedForms) {
   }
   // conductor at normal incidence: ((eta-1)^2 + k^2)/((eta+1)^2 + k^2)
   for (auto [eta, k] : {std::pair{0.18, 3.4}, {1.5, 10.0}, {0.05, 0.5}})
-    EXPECT_NEAR(brdf64::fresnel_conductor(eta, k, 1.0), ((eta - 1) * (eta - 1) + k * k) / ((eta + 1) * (eta + 1) + k * k),
-                1e-14);
+    EXPECT_NEAR(brdf64::fresnel_conductor(eta, k, 1.0),
+                ((eta - 1) * (eta - 1) + k * k) / ((eta + 1) * (eta + 1) + k * k), 1e-14);
   // eta < 1: F = 1 from the critical angle on, continuous there
   double eta = 1 / 1.5, crit = std::sqrt(1 - eta * eta);
   EXPECT_EQ(brdf64::fresnel_dielectric(eta, crit * (1 - 1e-9)), 1.0);
@@ -83,8 +83,10 @@ TEST(Fresnel, AverageFresnelClosedFormsAndQuadrature) {
   std::uniform_real_distribution<double> u(0, 1);
   for (int t = 0; t < 25; ++t) {
     double f0 = u(rng), tint = u(rng), eta = 0.1 + 3 * u(rng), k = 10 * u(rng);
-    const Case cs[] = {{"schlick", FRESNEL_SCHLICK, f0, 0},     {"f82-tint", FRESNEL_F82_TINT, f0, tint},
-                       {"dielectric", FRESNEL_DIELECTRIC, eta, 0}, {"schlick-tir", FRESNEL_SCHLICK_TIR, eta, 0},
+    const Case cs[] = {{"schlick", FRESNEL_SCHLICK, f0, 0},
+                       {"f82-tint", FRESNEL_F82_TINT, f0, tint},
+                       {"dielectric", FRESNEL_DIELECTRIC, eta, 0},
+                       {"schlick-tir", FRESNEL_SCHLICK_TIR, eta, 0},
                        {"conductor", FRESNEL_CONDUCTOR, eta, k}};
     for (const Case& c : cs) {
       FresnelChoice f;
@@ -126,7 +128,7 @@ TEST(Fresnel, AlbedoMatchesReference) {
     bool node;
     int i, j;
   };
-  const Texel texels[] = {{true, 0, 0}, {true, 0, 2}, {true, 0, 4}, {true, 1, 1}, {true, 1, 4}, {true, 2, 0},
+  const Texel texels[] = {{true, 0, 0}, {true, 0, 2}, {true, 0, 4}, {true, 1, 1},  {true, 1, 4},  {true, 2, 0},
                           {true, 2, 2}, {true, 3, 3}, {true, 4, 4}, {false, 0, 3}, {false, 2, 1}, {false, 3, 2}};
   for (const Case& c : kCases) {
     KernelTable tn = runner().hemisphere(ndf, gaf, 5, 5, true, weightOf(c));
@@ -139,11 +141,13 @@ TEST(Fresnel, AlbedoMatchesReference) {
       double r = static_cast<float>(t.node ? t.j / (n - 1.0) : (t.j + 0.5) / n);
       refs.push_back(std::async(std::launch::async, [=] {
         const reference::Weight wt = mu == 0 && r == 0 ? reference::Weight{} : w;
-        std::vector<double> v = testing_ref::cached(
-            testing_ref::keyOf("albedo " + ndfNames()[ndf] + " " + gafNames()[gaf], {r, mu, double(wt.kind), double(wt.f.model), wt.f.x, wt.f.y}), [&] {
-              reference::Moments m = reference::albedo(ndf, gaf, r, mu, wt);
-              return std::vector<double>{m.a, m.b};
-            });
+        std::vector<double> v =
+            testing_ref::cached(testing_ref::keyOf("albedo " + ndfNames()[ndf] + " " + gafNames()[gaf],
+                                                   {r, mu, double(wt.kind), double(wt.f.model), wt.f.x, wt.f.y}),
+                                [&] {
+                                  reference::Moments m = reference::albedo(ndf, gaf, r, mu, wt);
+                                  return std::vector<double>{m.a, m.b};
+                                });
         reference::Moments m;
         m.a = v[0], m.b = v[1];
         return m;
@@ -175,7 +179,6 @@ TEST(Fresnel, AlbedoMatchesReference) {
     std::printf("%-24s worst error %.2e, worst bound %.2e\n", c.name, worst, worstBound);
   }
 }
-
 
 // Total internal reflection (eta = 1/1.5), in double on the host: every texel's claim (the chosen
 // budget's estimate with its floor, hemi_rel_error) against the same rule at level 3, on a 16x16
@@ -241,9 +244,10 @@ TEST(Fresnel, AverageAlbedoMatchesReference) {
     reference::Weight w{reference::Weight::Fresnel, {c.model, c.x, c.y}};
     for (int j = 0; j < n; ++j) {
       double r = static_cast<float>((j + 0.5) / n);
-      double want = testing_ref::cached1(
-          testing_ref::keyOf("albedoAvg " + ndfNames()[ndf] + " " + gafNames()[gaf] + " fresnel", {r, double(c.model), c.x, c.y}),
-          [&] { return reference::albedoAvg(ndf, gaf, r, w); });
+      double want =
+          testing_ref::cached1(testing_ref::keyOf("albedoAvg " + ndfNames()[ndf] + " " + gafNames()[gaf] + " fresnel",
+                                                  {r, double(c.model), c.x, c.y}),
+                               [&] { return reference::albedoAvg(ndf, gaf, r, w); });
       double e = rel(t.planes[0][j], want);
       EXPECT_LE(e, t.err[j] + avgFloatArithmeticError(t.planes[0][j], ndf, gaf, true))
           << c.name << " r=" << r << " device " << t.planes[0][j] << " ref " << want;

@@ -42,11 +42,15 @@ fs::path bakeDir() {
     fs::path dir = fs::path(testing::TempDir()) / ("brdfbake_glfmt_" + std::to_string(getpid()));
     fs::remove_all(dir);
     const std::string exe = std::string("'") + BRDFBAKE_EXE + "' --size 32 --table ";
-    for (std::string args : {"splitsum,albedo --grid node --format exr,ktx2,dds --precision float32 -o '" + (dir / "float32").string() + "'",
-                             "splitsum,albedo --grid node --format exr,ktx2,dds --precision float16 -o '" + (dir / "float16").string() + "'",
-                             "splitsum,albedo --grid node --format ktx2,dds,png16 --precision unorm16 -o '" + (dir / "unorm16").string() + "'",
-                             "splitsum,albedo --grid node --format ktx2,dds --precision unorm8 -o '" + (dir / "unorm8").string() + "'",
-                             "kp --format exr,png16 -o '" + (dir / "scaled").string() + "'"})
+    for (std::string args :
+         {"splitsum,albedo --grid node --format exr,ktx2,dds --precision float32 -o '" + (dir / "float32").string() +
+              "'",
+          "splitsum,albedo --grid node --format exr,ktx2,dds --precision float16 -o '" + (dir / "float16").string() +
+              "'",
+          "splitsum,albedo --grid node --format ktx2,dds,png16 --precision unorm16 -o '" + (dir / "unorm16").string() +
+              "'",
+          "splitsum,albedo --grid node --format ktx2,dds --precision unorm8 -o '" + (dir / "unorm8").string() + "'",
+          "kp --format exr,png16 -o '" + (dir / "scaled").string() + "'"})
       EXPECT_EQ(std::system((exe + args + " > /dev/null").c_str()), 0) << args;
     return dir;
   }();
@@ -74,7 +78,8 @@ void fromDecoded(Loaded& l, const std::vector<double>& texels, int components, c
       const double v = c < components ? texels[i * components + c] : 1.0;
       if (c < 3) l.planes[c][i] = static_cast<float>(v);
       f32[i * 4 + c] = static_cast<float>(v);
-      u16[i * 4 + c] = p == "float16" ? Imath::half(static_cast<float>(v)).bits() : static_cast<uint16_t>(std::lround(v * 65535));
+      u16[i * 4 + c] =
+          p == "float16" ? Imath::half(static_cast<float>(v)).bits() : static_cast<uint16_t>(std::lround(v * 65535));
       u8[i * 4 + c] = static_cast<uint8_t>(std::lround(v * 255));
     }
   if (p == "float32") l.tex.internalFormat = GL_RGBA32F, l.tex.type = GL_FLOAT, l.tex.assign(f32);
@@ -102,7 +107,8 @@ Loaded loadDds(const std::string& path, const std::string& precision) {
   Loaded l;
   l.tex.width = static_cast<int>(t.width);
   l.tex.height = static_cast<int>(t.height);
-  l.header = tableHeaderFromText(l.tex.width, l.tex.height, ktx2check::read(path.substr(0, path.size() - 4) + ".ktx2").kv);
+  l.header =
+      tableHeaderFromText(l.tex.width, l.tex.height, ktx2check::read(path.substr(0, path.size() - 4) + ".ktx2").kv);
   fromDecoded(l, t.texels, t.components, precision);
   return l;
 }
@@ -167,12 +173,13 @@ Figures check(const std::string& name, const Loaded& l, const TableImage& f32) {
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   std::vector<float> pts;
   const int n = 4000, refPoints = 60;
-  for (int i = 0; i < n; ++i) pts.insert(pts.end(), {i < 4 ? float(i & 1) : u(rng), i < 4 ? float(i >> 1) : u(rng), 0, 0});
+  for (int i = 0; i < n; ++i)
+    pts.insert(pts.end(), {i < 4 ? float(i & 1) : u(rng), i < 4 ? float(i >> 1) : u(rng), 0, 0});
   const std::string call = l.tex.height == 1 ? "p.x" : "p.x, p.y";  // 1D tables: one argument
-  std::vector<float> gpu = glharness::runOnGpu(
-      shaderForTable(name, l.header, ShaderLang::Glsl),
-      "  res[2 * i] = " + P + "_lookup(tab, " + call + ");\n  res[2 * i + 1] = " + P + "_lookupExact(tab, " + call + ");\n",
-      l.tex, pts, 2);
+  std::vector<float> gpu = glharness::runOnGpu(shaderForTable(name, l.header, ShaderLang::Glsl),
+                                               "  res[2 * i] = " + P + "_lookup(tab, " + call +
+                                                   ");\n  res[2 * i + 1] = " + P + "_lookupExact(tab, " + call + ");\n",
+                                               l.tex, pts, 2);
   Figures f;
   if (gpu.empty()) return f;
   const int w = l.tex.width, h = l.tex.height;
@@ -225,15 +232,16 @@ TEST(GlPipeline, EveryFormatAndPrecisionSamplesWithinItsPredictedError) {
       Figures f = check(path, l, f32);
       const double predicted = l.header.floats.at("brdf.error") + l.header.floats.at("brdf.interp-error");
       // EXR states no storage part (its brdf.error includes it): the a priori bound of its precision
-      const double stated = k.format == "exr" ? storageErrorBound(precision == "float16" ? Precision::Float16 : Precision::Float32)
-                                              : leadingNumber(l.header, "brdf.error.storage");
+      const double stated = k.format == "exr"
+                                ? storageErrorBound(precision == "float16" ? Precision::Float16 : Precision::Float32)
+                                : leadingNumber(l.header, "brdf.error.storage");
       // llvmpipe's filter: float weights on float and 16-bit textures, within twice the 8-bit
       // weights NVIDIA documents (emulated on the same texels: rounding either way)
       // llvmpipe filters RGBA8 in 8-bit fixed point: its result is a whole code (1/255) off at worst
       const double filter = precision == "unorm8" ? 1.0 / 255 + f.weights8 : std::max(2e-5, 2.0 * f.weights8);
       std::printf("%-44s %-7s %.1e  %.1e  %.1e  %.1e (%.1e)  %.2e (%.2e)  %.2e (%.2e)\n",
-                  (k.dir + "/" + stem + "." + k.format).c_str(), precision.c_str(), f.exact, f.hardware, f.weights8, f.storage,
-                  stated, f.refExact, predicted, f.refHardware, predicted + filter);
+                  (k.dir + "/" + stem + "." + k.format).c_str(), precision.c_str(), f.exact, f.hardware, f.weights8,
+                  f.storage, stated, f.refExact, predicted, f.refHardware, predicted + filter);
       ++checked;
       if (k.format != "exr") {
         EXPECT_EQ(l.header.strings["brdf.precision"], precision) << path;
@@ -241,7 +249,8 @@ TEST(GlPipeline, EveryFormatAndPrecisionSamplesWithinItsPredictedError) {
       EXPECT_LT(f.exact, 4e-6) << path;  // the same texels and weights, float arithmetic
       EXPECT_LT(f.hardware, filter) << path;
       // float32 holds the computed floats exactly: its stated rounding is 0, but it is stated
-      EXPECT_TRUE(k.format == "exr" || l.header.strings.count("brdf.error.storage")) << path << ": no brdf.error.storage";
+      EXPECT_TRUE(k.format == "exr" || l.header.strings.count("brdf.error.storage"))
+          << path << ": no brdf.error.storage";
       if (precision != "float32") {
         EXPECT_GT(stated, 0) << path << ": brdf.error.storage states no rounding";
       }
@@ -261,7 +270,8 @@ TEST(GlPipeline, Png16MappingIsBuiltIntoTheGeneratedCode) {
   Loaded l = loadOiio(path);
   EXPECT_GT(l.scale, 1.5);
   const std::string code = shaderForTable(path, l.header, ShaderLang::Glsl);
-  EXPECT_NE(code.find("* vec4(" + std::string(l.header.strings.at("brdf.mapping.scale")).substr(0, 5)), std::string::npos)
+  EXPECT_NE(code.find("* vec4(" + std::string(l.header.strings.at("brdf.mapping.scale")).substr(0, 5)),
+            std::string::npos)
       << code;
   TableImage plain = l.header;
   plain.strings.erase("brdf.mapping.scale");

@@ -24,7 +24,10 @@ struct Gl {
   bool norm16 = false;  // GL_EXT_texture_norm16: RGBA16 (unorm) textures, filterable
   Gl() {
     auto getDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    if (!getDisplay) { problem = "no eglGetPlatformDisplayEXT"; return; }
+    if (!getDisplay) {
+      problem = "no eglGetPlatformDisplayEXT";
+      return;
+    }
     display = getDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     EGLint major = 0, minor = 0;
     if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor)) {
@@ -100,13 +103,14 @@ struct Texels {
 // test failure naming the log) when the shader does not compile.
 inline std::vector<float> runOnGpu(const std::string& decls, const std::string& body, const Texels& tex,
                                    const std::vector<float>& points, int outPerPoint) {
-  std::string src = "#version 310 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n" + decls +
-                    "layout(local_size_x = 64) in;\n"
-                    "layout(std430, binding = 0) readonly buffer In { vec4 pts[]; };\n"
-                    "layout(std430, binding = 1) writeonly buffer Out { vec4 res[]; };\n"
-                    "uniform sampler2D tab;\nuniform int count;\n"
-                    "void main() {\n  int i = int(gl_GlobalInvocationID.x);\n  if (i >= count) return;\n  vec4 p = pts[i];\n" +
-                    body + "}\n";
+  std::string src =
+      "#version 310 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n" + decls +
+      "layout(local_size_x = 64) in;\n"
+      "layout(std430, binding = 0) readonly buffer In { vec4 pts[]; };\n"
+      "layout(std430, binding = 1) writeonly buffer Out { vec4 res[]; };\n"
+      "uniform sampler2D tab;\nuniform int count;\n"
+      "void main() {\n  int i = int(gl_GlobalInvocationID.x);\n  if (i >= count) return;\n  vec4 p = pts[i];\n" +
+      body + "}\n";
   std::string log;
   GLuint prog = program(src, &log);
   EXPECT_NE(prog, 0u) << "GLSL does not compile:\n" << log << "\n" << src;
@@ -121,7 +125,8 @@ inline std::vector<float> runOnGpu(const std::string& decls, const std::string& 
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << "upload, internal format 0x" << std::hex << tex.internalFormat;
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR))
+      << "upload, internal format 0x" << std::hex << tex.internalFormat;
   int n = static_cast<int>(points.size() / 4);
   GLuint buf[2];
   glGenBuffers(2, buf);
@@ -152,11 +157,12 @@ inline std::vector<float> runOnGpu(const std::string& decls, const std::string& 
 // Texels as planes (planes[c][y * width + x]) -> the host's bilinear lookup of channel c at
 // fractional texel (px, py) (texel i's centre at i), clamped; with `bits` > 0 the weights are
 // rounded to that many fractional bits (8: NVIDIA's filter).
-inline double bilinear(const std::vector<std::vector<float>>& planes, int width, int height, int c, double px, double py,
-                       int bits = 0) {
+inline double bilinear(const std::vector<std::vector<float>>& planes, int width, int height, int c, double px,
+                       double py, int bits = 0) {
   px = std::clamp(px, 0.0, width - 1.0);
   py = std::clamp(py, 0.0, height - 1.0);
-  int x0 = std::min(static_cast<int>(px), std::max(width - 2, 0)), y0 = std::min(static_cast<int>(py), std::max(height - 2, 0));
+  int x0 = std::min(static_cast<int>(px), std::max(width - 2, 0)),
+      y0 = std::min(static_cast<int>(py), std::max(height - 2, 0));
   double fx = width > 1 ? px - x0 : 0, fy = height > 1 ? py - y0 : 0;
   if (bits > 0) {
     fx = std::round(std::ldexp(fx, bits)) / std::ldexp(1.0, bits);

@@ -66,7 +66,8 @@ File load(const std::string& path) {
     f.header = tableHeaderFromText(static_cast<int>(t.width), static_cast<int>(t.height), t.kv);
     px.assign(static_cast<size_t>(t.width) * t.height * 4, 0.0f);
     for (size_t i = 0; i < px.size() / 4; ++i)
-      for (int c = 0; c < t.components && c < 4; ++c) px[i * 4 + c] = static_cast<float>(t.texels[i * t.components + c]);
+      for (int c = 0; c < t.components && c < 4; ++c)
+        px[i * 4 + c] = static_cast<float>(t.texels[i * t.components + c]);
   } else if (ext == ".dds") {
     ddscheck::Texture t = ddscheck::read(f.path);
     EXPECT_TRUE(t.problems.empty()) << f.path;
@@ -127,11 +128,11 @@ Figures run(const File& f, const std::string& expr) {
   std::vector<float> pts;
   const int n = 2000, refPoints = 60;
   for (int i = 0; i < n; ++i) pts.insert(pts.end(), {u(rng), u(rng), i % 2 ? 1.0f : 0.04f, 0});
-  std::vector<float> gpu = glharness::runOnGpu(
-      shaderForTable(f.path, f.header, ShaderLang::Glsl),
-      "  vec3 spec = vec3(0.0);\n" + (expr.empty() ? "" : "  " + expr + "\n") + "  res[2 * i] = vec4(spec, 0.0);\n" +
-          "  res[2 * i + 1] = vec4(" + P + "_Schlick(tab, vec3(p.z), p.x, p.y), 0.0);\n",
-      f.tex, pts, 2);
+  std::vector<float> gpu = glharness::runOnGpu(shaderForTable(f.path, f.header, ShaderLang::Glsl),
+                                               "  vec3 spec = vec3(0.0);\n" + (expr.empty() ? "" : "  " + expr + "\n") +
+                                                   "  res[2 * i] = vec4(spec, 0.0);\n" + "  res[2 * i + 1] = vec4(" +
+                                                   P + "_Schlick(tab, vec3(p.z), p.x, p.y), 0.0);\n",
+                                               f.tex, pts, 2);
   Figures fig;
   fig.predicted = f.header.floats.at("brdf.error") + f.header.floats.at("brdf.interp-error") +
                   (f.tex.type == GL_UNSIGNED_BYTE ? 2.0 / 255 : 0.0);  // 8 bits: rounding, and llvmpipe's 8-bit filter
@@ -152,37 +153,44 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
   ASSERT_TRUE(gl().problem.empty()) << "no usable OpenGL ES through EGL: " << gl().problem;
   // the engines' expressions (host/formats/layout.cpp cites the code each follows)
   const std::vector<std::pair<std::string, std::string>> engines = {
-      // Filament light_indirect.fs: dfg = textureLod(light_iblDFG, vec2(NoV, roughness), 0.0).rg; mix(dfg.xxx, dfg.yyy, f0)
+      // Filament light_indirect.fs: dfg = textureLod(light_iblDFG, vec2(NoV, roughness), 0.0).rg; mix(dfg.xxx, dfg.yyy,
+      // f0)
       {"filament", "vec2 dfg = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = mix(dfg.xxx, dfg.yyy, vec3(p.z));"},
-      // Bevy environment_map.wgsl: f_ab = textureSample(lut, s, vec2(NdotV, perceptual_roughness)).rg; kS * f_ab.x + f_ab.y
+      // Bevy environment_map.wgsl: f_ab = textureSample(lut, s, vec2(NdotV, perceptual_roughness)).rg; kS * f_ab.x +
+      // f_ab.y
       {"bevy", "vec2 f_ab = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * f_ab.x + f_ab.y;"},
-      // HDRP PreIntegratedFGD.hlsl: preFGD = SAMPLE(float2(NdotV, perceptualRoughness)).xyz; lerp(preFGD.xxx, preFGD.yyy, f0)
+      // HDRP PreIntegratedFGD.hlsl: preFGD = SAMPLE(float2(NdotV, perceptualRoughness)).xyz; lerp(preFGD.xxx,
+      // preFGD.yyy, f0)
       {"unity-hdrp", "vec3 pre = textureLod(tab, vec2(p.x, p.y), 0.0).xyz; spec = mix(pre.xxx, pre.yyy, vec3(p.z));"},
       // HDRP's current GetPreIntegratedFGDGGXAndDisneyDiffuse: coordLUT = Remap01ToHalfTexelCoord(float2(sqrt(NdotV),
       // perceptualRoughness), FGDTEXTURE_RESOLUTION), Remap01ToHalfTexelCoord (core Common.hlsl) = coord * (1 - 1/size)
       // + 0.5/size, FGDTEXTURE_RESOLUTION 64 (PreIntegratedFGD.cs.hlsl); lerp(preFGD.xxx, preFGD.yyy, fresnel0)
       {"unity-hdrp-sqrt",
-       "vec2 coordLUT = vec2(sqrt(p.x), p.y) * (1.0 - 1.0 / 64.0) + 0.5 / 64.0; vec3 pre = textureLod(tab, coordLUT, 0.0).xyz; "
+       "vec2 coordLUT = vec2(sqrt(p.x), p.y) * (1.0 - 1.0 / 64.0) + 0.5 / 64.0; vec3 pre = textureLod(tab, coordLUT, "
+       "0.0).xyz; "
        "spec = mix(pre.xxx, pre.yyy, vec3(p.z));"},
       // Unreal BRDF.ush EnvBRDF: AB = Texture2DSampleLevel(PreIntegratedGF, s, float2(NoV, Roughness), 0).rg;
       // SpecularColor * AB.x + saturate(50.0 * SpecularColor.g) * AB.y
-      {"unreal", "vec2 AB = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * AB.x + clamp(50.0 * p.z, 0.0, 1.0) * AB.y;"},
+      {"unreal",
+       "vec2 AB = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * AB.x + clamp(50.0 * p.z, 0.0, 1.0) * "
+       "AB.y;"},
       // glTF Sample Viewer ibl.glsl: brdf = texture(u_GGXLUT, clamp(vec2(NdotV, perceptualRoughness), 0, 1)).rg;
       // specularColor * brdf.x + brdf.y (textureLod at 0: a compute shader has no implicit level; the LUT has one)
       {"gltf-sample-viewer",
-       "vec2 brdf = textureLod(tab, clamp(vec2(p.x, p.y), vec2(0.0), vec2(1.0)), 0.0).rg; spec = vec3(p.z) * brdf.x + brdf.y;"}};
+       "vec2 brdf = textureLod(tab, clamp(vec2(p.x, p.y), vec2(0.0), vec2(1.0)), 0.0).rg; spec = vec3(p.z) * brdf.x + "
+       "brdf.y;"}};
   std::printf("%-19s %-6s %-9s %-11s %-11s %-10s %s\n", "preset", "size", "file", "engine", "generated", "predicted",
               "engine vs generated");
   for (const auto& [name, expr] : engines) {
     // the preset's own format; the DDS (no metadata) with its KTX2 twin beside it for the header
-    const std::string ext = name == "unreal" ? ".dds" : name == "gltf-sample-viewer" ? ".png" : name.rfind("unity-hdrp", 0) == 0 ? ".exr" : ".ktx2";
+    const std::string ext = name == "unreal"                   ? ".dds"
+                            : name == "gltf-sample-viewer"     ? ".png"
+                            : name.rfind("unity-hdrp", 0) == 0 ? ".exr"
+                                                               : ".ktx2";
     // 32^2, but HDRP's sqrt lookup at its own FGDTEXTURE_RESOLUTION (the preset's 64), built into its expression
     const std::string size = name == "unity-hdrp-sqrt" ? "" : " --size 32";
     // the DDS preset writes its KTX2 twin itself
-    ASSERT_EQ(bake("--layout " + name + size + " -o '" +
-                   (dir() / name).string() + "'"),
-              0)
-        << name;
+    ASSERT_EQ(bake("--layout " + name + size + " -o '" + (dir() / name).string() + "'"), 0) << name;
     File f = load((dir() / name / ("splitsum_ggx_smith-correlated_" + name)).string() + ext);
     EXPECT_EQ(f.header.strings["brdf.layout"], name) << "info names the preset";
     EXPECT_NE(f.header.strings["brdf.layout.sampling"].find(name == "unreal" ? "EnvBRDF" : ""), std::string::npos);
@@ -202,13 +210,14 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
     EXPECT_GT(fig.engine, 0.05) << "a linear-NdotV reader must not match the sqrt(NdotV) file";
   }
   // without a preset: transposed, flipped, (B, A+B); the engines' plain expression must then fail
-  ASSERT_EQ(bake("--axes r,mu --flip-y --channels B,A+B --size 32 --format exr -o '" + (dir() / "flags").string() + "'"), 0);
+  ASSERT_EQ(
+      bake("--axes r,mu --flip-y --channels B,A+B --size 32 --format exr -o '" + (dir() / "flags").string() + "'"), 0);
   File f = load((dir() / "flags" / "splitsum_ggx_smith-correlated_r-mu_flip-y_B-AB.exr").string());
   EXPECT_EQ(f.header.strings["brdf.axes"], "r,mu");
   EXPECT_EQ(f.header.strings["brdf.layout.flip"], "y");
   Figures fig = run(f, "vec2 ab = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * ab.x + ab.y;");
-  std::printf("%-19s %-6d %-9s %.2e    %.2e    %.2e   (an A,B reader of it: off by %.2f)\n", "flags", f.tex.width, "exr",
-              fig.engine, fig.generated, fig.predicted, fig.agree);
+  std::printf("%-19s %-6d %-9s %.2e    %.2e    %.2e   (an A,B reader of it: off by %.2f)\n", "flags", f.tex.width,
+              "exr", fig.engine, fig.generated, fig.predicted, fig.agree);
   EXPECT_LE(fig.generated, fig.predicted);
   EXPECT_GT(fig.engine, 0.1) << "a reader assuming mu,r and (A, B) must not match a transposed, flipped (B, A+B) file";
 }

@@ -36,17 +36,18 @@ fs::path bakeDir() {
     fs::path dir = fs::path(testing::TempDir()) / ("brdfbake_gl_" + std::to_string(getpid()));
     fs::remove_all(dir);
     const std::string exe = std::string("'") + BRDFBAKE_EXE + "' ";
-    for (std::string args : {"--size 24 --table splitsum,albedo,albedo-avg,kp -o '" + (dir / "tc").string() + "'",
-                             "--size 17 --grid node --table splitsum,albedo -o '" + (dir / "node").string() + "'",
-                             "--size 20 --half --table splitsum -o '" + (dir / "half").string() + "'",
-                             "--size 24 --mu-axis sqrt --table splitsum -o '" + (dir / "sqrt").string() + "'",
-                             "--size 17 --grid node --mu-axis sqrt -o '" + (dir / "sqrtnode").string() + "'",
-                             "--table brdf3d --size 20,18,9 --roughness 0.5 --value f-cos -o '" + (dir / "vol").string() + "'",
-                             "--table brdf3d --param rusinkiewicz --theta-h sqrt --grid node --size 16,14,10 --roughness 0.6 -o '" +
-                                 (dir / "rus").string() + "'",
-                             "--table dielectric --size 6,5,4 --grid node --eta-range 0.6,1.8 -o '" + (dir / "glass").string() + "'",
-                             "--table dielectric --size 5 --eta-range 0.7,2 -o '" + (dir / "glasstc").string() + "'",
-                             "--table dielectric-avg --size 2 -o '" + (dir / "glassavg").string() + "'"})
+    for (std::string args :
+         {"--size 24 --table splitsum,albedo,albedo-avg,kp -o '" + (dir / "tc").string() + "'",
+          "--size 17 --grid node --table splitsum,albedo -o '" + (dir / "node").string() + "'",
+          "--size 20 --half --table splitsum -o '" + (dir / "half").string() + "'",
+          "--size 24 --mu-axis sqrt --table splitsum -o '" + (dir / "sqrt").string() + "'",
+          "--size 17 --grid node --mu-axis sqrt -o '" + (dir / "sqrtnode").string() + "'",
+          "--table brdf3d --size 20,18,9 --roughness 0.5 --value f-cos -o '" + (dir / "vol").string() + "'",
+          "--table brdf3d --param rusinkiewicz --theta-h sqrt --grid node --size 16,14,10 --roughness 0.6 -o '" +
+              (dir / "rus").string() + "'",
+          "--table dielectric --size 6,5,4 --grid node --eta-range 0.6,1.8 -o '" + (dir / "glass").string() + "'",
+          "--table dielectric --size 5 --eta-range 0.7,2 -o '" + (dir / "glasstc").string() + "'",
+          "--table dielectric-avg --size 2 -o '" + (dir / "glassavg").string() + "'"})
       EXPECT_EQ(std::system((exe + args + " > /dev/null").c_str()), 0) << args;
     return dir;
   }();
@@ -90,12 +91,14 @@ struct Figures {
 Figures check2d(const std::string& file, int n, int refPoints) {
   TableImage t = readTableExr(file);
   bool half = tableExrIsHalf(file), node = t.strings["brdf.grid"] == "node";
-  const bool sq = t.strings.count("brdf.mu.index") && t.strings.at("brdf.mu.index").rfind("sqrt", 0) == 0;  // --mu-axis sqrt
+  const bool sq =
+      t.strings.count("brdf.mu.index") && t.strings.at("brdf.mu.index").rfind("sqrt", 0) == 0;  // --mu-axis sqrt
   int dims = t.height == 1 ? 1 : 2;
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   std::vector<float> pts;
-  for (int i = 0; i < n; ++i) pts.insert(pts.end(), {i < 4 ? float(i & 1) : u(rng), i < 4 ? float(i >> 1) : u(rng), 0, 0});
+  for (int i = 0; i < n; ++i)
+    pts.insert(pts.end(), {i < 4 ? float(i & 1) : u(rng), i < 4 ? float(i >> 1) : u(rng), 0, 0});
   std::vector<float> gpu = sampleOnGpu(file, t, half, pts, dims);
   Figures f;
   if (gpu.empty()) return f;
@@ -103,7 +106,9 @@ Figures check2d(const std::string& file, int n, int refPoints) {
   int ndf = ndfId(t.strings["brdf.ndf"]), gaf = gafId(t.strings["brdf.gaf"]);
   for (int i = 0; i < n; ++i) {
     double x = pts[4 * i], y = pts[4 * i + 1], tx = sq ? std::sqrt(x) : x;
-    double px = node ? tx * (t.width - 1) : tx * t.width - 0.5, py = dims == 1 ? 0 : node ? y * (t.height - 1) : y * t.height - 0.5;
+    double px = node ? tx * (t.width - 1) : tx * t.width - 0.5, py = dims == 1 ? 0
+                                                                     : node    ? y * (t.height - 1)
+                                                                               : y * t.height - 0.5;
     for (int c = 0; c < 3; ++c) {
       double host = bilinear(t, c, px, py), scale = std::max(1.0, std::fabs(host));
       f.gpuExact = std::max(f.gpuExact, std::fabs(gpu[8 * i + 4 + c] - host) / scale);
@@ -133,9 +138,9 @@ TEST(GlPipeline, GeneratedGlslSamples2dTablesWithinTheirPredictedError) {
   ASSERT_TRUE(gl().problem.empty()) << "no usable OpenGL ES through EGL: " << gl().problem;
   fs::path d = bakeDir();
   for (std::string file : {"tc/splitsum_ggx_smith-correlated.exr", "tc/albedo_ggx_smith-correlated.exr",
-                           "tc/albedo-avg_ggx_smith-correlated.exr", "tc/kp_ggx.exr", "node/splitsum_ggx_smith-correlated.exr",
-                           "node/albedo_ggx_smith-correlated.exr", "half/splitsum_ggx_smith-correlated.exr",
-                           "sqrt/splitsum_ggx_smith-correlated.exr",
+                           "tc/albedo-avg_ggx_smith-correlated.exr", "tc/kp_ggx.exr",
+                           "node/splitsum_ggx_smith-correlated.exr", "node/albedo_ggx_smith-correlated.exr",
+                           "half/splitsum_ggx_smith-correlated.exr", "sqrt/splitsum_ggx_smith-correlated.exr",
                            "sqrtnode/splitsum_ggx_smith-correlated.exr", "sqrtnode/albedo_ggx_smith-correlated.exr"}) {
     std::string path = (d / file).string();
     TableImage h = readTableExrHeader(path);
@@ -158,7 +163,8 @@ TEST(GlPipeline, GeneratedGlslSamples2dTablesWithinTheirPredictedError) {
 TEST(GlPipeline, GeneratedGlslSamples3dAtlases) {
   ASSERT_TRUE(gl().problem.empty()) << "no usable OpenGL ES through EGL: " << gl().problem;
   fs::path d = bakeDir();
-  for (std::string file : {"vol/brdf3d_ggx_smith-correlated_angles.exr", "rus/brdf3d_ggx_smith-correlated_rusinkiewicz.exr"}) {
+  for (std::string file :
+       {"vol/brdf3d_ggx_smith-correlated_angles.exr", "rus/brdf3d_ggx_smith-correlated_rusinkiewicz.exr"}) {
     std::string path = (d / file).string();
     TableImage t = readTableExr(path);
     int cols = 0, rows = 0;
@@ -184,9 +190,11 @@ TEST(GlPipeline, GeneratedGlslSamples3dAtlases) {
       // change across the cell; spread = the largest difference between the cell's eight texels
       double lo = 1e300, hi = -1e300;
       for (int k = 0; k < 8; ++k) {
-        glm::dvec3 corner(std::min(std::floor(idx.x) + (k & 1), s.nx - 1.0), std::min(std::floor(idx.y) + ((k >> 1) & 1), s.ny - 1.0),
+        glm::dvec3 corner(std::min(std::floor(idx.x) + (k & 1), s.nx - 1.0),
+                          std::min(std::floor(idx.y) + ((k >> 1) & 1), s.ny - 1.0),
                           std::min(std::floor(idx.z) + ((k >> 2) & 1), s.nz - 1.0));
-        double v = trilinear(s, planes[0], glm::clamp(corner, glm::dvec3(0.0), glm::dvec3(s.nx - 1.0, s.ny - 1.0, s.nz - 1.0)));
+        double v = trilinear(s, planes[0],
+                             glm::clamp(corner, glm::dvec3(0.0), glm::dvec3(s.nx - 1.0, s.ny - 1.0, s.nz - 1.0)));
         lo = std::min(lo, v);
         hi = std::max(hi, v);
       }
@@ -220,7 +228,8 @@ TEST(GlPipeline, GeneratedGlslSamples3dAtlases) {
 TEST(GlPipeline, GeneratedGlslSamplesTheDielectricTablesByEta) {
   ASSERT_TRUE(gl().problem.empty()) << "no usable OpenGL ES through EGL: " << gl().problem;
   fs::path d = bakeDir();
-  for (std::string file : {"glass/dielectric_ggx_smith-correlated.exr", "glasstc/dielectric_ggx_smith-correlated.exr"}) {
+  for (std::string file :
+       {"glass/dielectric_ggx_smith-correlated.exr", "glasstc/dielectric_ggx_smith-correlated.exr"}) {
     const std::string path = (d / file).string();
     TableImage t = readTableExr(path);
     int nx = 0, ny = 0, nz = 0, cols = 0, rows = 0;
@@ -263,8 +272,10 @@ TEST(GlPipeline, GeneratedGlslSamplesTheDielectricTablesByEta) {
     }
     const std::string P = shaderPrefix(path);
     std::vector<float> gpu = glharness::runOnGpu(shaderForTable(path, t, ShaderLang::Glsl),
-                                                 "  res[2 * i] = vec4(" + P + "_albedos(tab, p.x, p.y, p.z), 0.0);\n"
-                                                 "  res[2 * i + 1] = vec4(" + P + "_albedosExact(tab, p.x, p.y, p.z), 0.0);\n",
+                                                 "  res[2 * i] = vec4(" + P +
+                                                     "_albedos(tab, p.x, p.y, p.z), 0.0);\n"
+                                                     "  res[2 * i + 1] = vec4(" +
+                                                     P + "_albedosExact(tab, p.x, p.y, p.z), 0.0);\n",
                                                  texels(t, false), pts, 2);
     ASSERT_FALSE(gpu.empty());
     double exact = 0, hardware = 0;

@@ -34,7 +34,6 @@ using brdfbake::testing_cli::run;
 
 namespace {
 
-
 std::string normalised(std::string b) {
   const std::string rev = BRDFBAKE_GIT_REV;
   const std::string token(rev.size(), '#');
@@ -73,8 +72,10 @@ std::string deviceName() {
   while (std::getline(in, line)) {
     size_t at = line.find_first_not_of(' ');
     if (at == std::string::npos) continue;
-    if (name.empty() && line.rfind("[0]", 0) == 0) name = line;
-    else if (!name.empty() && line.compare(at, 8, "version:") == 0) return name + " | " + line.substr(at + 9);
+    if (name.empty() && line.rfind("[0]", 0) == 0)
+      name = line;
+    else if (!name.empty() && line.compare(at, 8, "version:") == 0)
+      return name + " | " + line.substr(at + 9);
   }
   return name.empty() ? "unknown device" : name;
 }
@@ -84,7 +85,9 @@ struct Entry {
   size_t size;
 };
 
-fs::path goldenFile(const std::string& name) { return fs::path(BRDFBAKE_SOURCE_DIR) / "tests/data/golden" / (name + ".txt"); }
+fs::path goldenFile(const std::string& name) {
+  return fs::path(BRDFBAKE_SOURCE_DIR) / "tests/data/golden" / (name + ".txt");
+}
 
 std::vector<Entry> readGolden(const std::string& name) {
   std::vector<Entry> out;
@@ -169,48 +172,51 @@ void checkCase(const std::string& name, const std::vector<std::string>& commands
 
 // The microfacet family: every table of the default set, two more pairs in half precision.
 TEST(Golden, MicrofacetTables) {
-  checkCase("microfacet", {"bake --table splitsum,albedo,albedo-avg,kp --size 16 -o out/a",
-                           "bake --ndf beckmann,blinn-phong --gaf smith,schlick-ggx --table splitsum,albedo,albedo-avg,kp "
-                           "--size 8 --half -o out/b",
-                           "bake --ndf charlie --gaf neubelt,charlie-smith --table splitsum,albedo --size 8 -o out/c",
-                           "bake --table splitsum,albedo --size 8 --mu-axis sqrt -o out/d",
-                           "bake --table albedo --size 5 --grid node -o out/e"});
+  checkCase("microfacet",
+            {"bake --table splitsum,albedo,albedo-avg,kp --size 16 -o out/a",
+             "bake --ndf beckmann,blinn-phong --gaf smith,schlick-ggx --table splitsum,albedo,albedo-avg,kp "
+             "--size 8 --half -o out/b",
+             "bake --ndf charlie --gaf neubelt,charlie-smith --table splitsum,albedo --size 8 -o out/c",
+             "bake --table splitsum,albedo --size 8 --mu-axis sqrt -o out/d",
+             "bake --table albedo --size 5 --grid node -o out/e"});
 }
 
 TEST(Golden, FresnelAndDiffuseChannels) {
-  checkCase("fresnel", {"bake --table albedo,albedo-avg --fresnel conductor --eta 0.2,0.9,1.1 --k 3,2.5,2 --size 8 -o out/a",
-                        "bake --table splitsum --fresnel f82-tint --f82 0.8 --size 8 -o out/b",
-                        "bake --table albedo,albedo-avg --fresnel dielectric --eta 1.5 --size 8 -o out/c",
-                        "bake --table albedo --diffuse oren-nayar --size 8 -o out/d",
-                        "bake --table splitsum --diffuse burley --size 8 -o out/e",
-                        "bake --table fresnel-avg --fresnel dielectric --size 16 -o out/f",
-                        "bake --table fresnel-avg --fresnel schlick-tir --size 16 -o out/g"});
+  checkCase("fresnel",
+            {"bake --table albedo,albedo-avg --fresnel conductor --eta 0.2,0.9,1.1 --k 3,2.5,2 --size 8 -o out/a",
+             "bake --table splitsum --fresnel f82-tint --f82 0.8 --size 8 -o out/b",
+             "bake --table albedo,albedo-avg --fresnel dielectric --eta 1.5 --size 8 -o out/c",
+             "bake --table albedo --diffuse oren-nayar --size 8 -o out/d",
+             "bake --table splitsum --diffuse burley --size 8 -o out/e",
+             "bake --table fresnel-avg --fresnel dielectric --size 16 -o out/f",
+             "bake --table fresnel-avg --fresnel schlick-tir --size 16 -o out/g"});
 }
 
 TEST(Golden, FormatsAndPrecisions) {
-  checkCase("formats", {"bake --table splitsum,albedo --size 8 --format ktx2,dds,png16,header --precision unorm16 -o out/a",
-                        "bake --table splitsum,albedo-avg --size 8 --format exr,ktx2,dds,header --precision float16 -o out/b",
-                        "bake --table splitsum --size 8 --format ktx2,dds --precision unorm8 -o out/c",
-                        "bake --table albedo --size 8 --format ktx2,dds,header -o out/d"});
+  checkCase("formats",
+            {"bake --table splitsum,albedo --size 8 --format ktx2,dds,png16,header --precision unorm16 -o out/a",
+             "bake --table splitsum,albedo-avg --size 8 --format exr,ktx2,dds,header --precision float16 -o out/b",
+             "bake --table splitsum --size 8 --format ktx2,dds --precision unorm8 -o out/c",
+             "bake --table albedo --size 8 --format ktx2,dds,header -o out/d"});
 }
 
 TEST(Golden, LayoutsAndPresets) {
-  checkCase("layouts", {"bake --layout filament --size 8 -o out/filament", "bake --layout bevy --size 8 -o out/bevy",
-                        "bake --layout unity-hdrp --size 8 -o out/hdrp",
-                        "bake --layout unity-hdrp-sqrt --size 8 -o out/hdrp-sqrt",
-                        "bake --layout unreal --size 8 -o out/unreal",
-                        "bake --layout gltf-sample-viewer --size 8 -o out/gsv",
-                        "bake --table splitsum --axes r,mu --flip-y --channels B,A --size 8 -o out/custom",
-                        "bake --preset gltf --size 8 -o out/gltf"});
+  checkCase("layouts",
+            {"bake --layout filament --size 8 -o out/filament", "bake --layout bevy --size 8 -o out/bevy",
+             "bake --layout unity-hdrp --size 8 -o out/hdrp", "bake --layout unity-hdrp-sqrt --size 8 -o out/hdrp-sqrt",
+             "bake --layout unreal --size 8 -o out/unreal", "bake --layout gltf-sample-viewer --size 8 -o out/gsv",
+             "bake --table splitsum --axes r,mu --flip-y --channels B,A --size 8 -o out/custom",
+             "bake --preset gltf --size 8 -o out/gltf"});
 }
 
 TEST(Golden, AshikhminAnd3dTables) {
-  checkCase("volumes", {"bake --table ashikhmin-shirley --size 8 -o out/as",
-                        "bake --table brdf3d --size 6 --format exr,ktx2,dds,header -o out/angles",
-                        "bake --table brdf3d --param rusinkiewicz --theta-h sqrt --size 4,5,6 --diffuse lambert --rho 0.5 "
-                        "--fresnel schlick --f0 0.9 --half -o out/rus",
-                        "bake --table brdf3d --format merl --roughness 0.3 -o out/merl",
-                        "bake --brdf merl:out/merl/brdf3d_ggx_smith-correlated.binary --table albedo --size 2 -o out/measured"});
+  checkCase("volumes",
+            {"bake --table ashikhmin-shirley --size 8 -o out/as",
+             "bake --table brdf3d --size 6 --format exr,ktx2,dds,header -o out/angles",
+             "bake --table brdf3d --param rusinkiewicz --theta-h sqrt --size 4,5,6 --diffuse lambert --rho 0.5 "
+             "--fresnel schlick --f0 0.9 --half -o out/rus",
+             "bake --table brdf3d --format merl --roughness 0.3 -o out/merl",
+             "bake --brdf merl:out/merl/brdf3d_ggx_smith-correlated.binary --table albedo --size 2 -o out/measured"});
 }
 
 TEST(Golden, DielectricTables) {

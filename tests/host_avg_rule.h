@@ -12,17 +12,18 @@ namespace brdfbake::testing_avg {
 
 inline std::vector<AvgSum> hostRule(int ndf, int gaf, const std::vector<float>& rs,
                                     double goal = KernelRunner::kAvgGoal) {
-  return averageRule(rs, true, goal,
-                     [&](const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound) {
-                       for (size_t k = 0; k < nodes.size(); ++k) {
-                         double mu = nodes[k].mu;
-                         brdf64::BrdfParams p = brdf64::hemisphere_texel_params(ndf, gaf, mu, nodes[k].r);
-                         brdf64::HemiResult h = brdf64::hemisphere_moments_chosen(ndf, gaf, p, mu, -1, nodes[k].target, 1);
-                         (*value)[k] = h.a + h.b;
-                         (*bound)[k] = h.err_a + h.err_b;
-                       }
-                     },
-                     avgViewBreaks(gaf));
+  return averageRule(
+      rs, true, goal,
+      [&](const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound) {
+        for (size_t k = 0; k < nodes.size(); ++k) {
+          double mu = nodes[k].mu;
+          brdf64::BrdfParams p = brdf64::hemisphere_texel_params(ndf, gaf, mu, nodes[k].r);
+          brdf64::HemiResult h = brdf64::hemisphere_moments_chosen(ndf, gaf, p, mu, -1, nodes[k].target, 1);
+          (*value)[k] = h.a + h.b;
+          (*bound)[k] = h.err_a + h.err_b;
+        }
+      },
+      avgViewBreaks(gaf));
 }
 
 }  // namespace brdfbake::testing_avg

@@ -44,8 +44,8 @@ TEST(Hostile, NonRegularInputsAreRefusedBeforeTheyAreRead) {
                 "plan /dev/zero");
   expectRefused(runBounded("bake zero.gltf", d.string()), 66, "zero.gltf: a character device", "bake glTF /dev/zero");
   expectRefused(runBounded("plan dir.toml", d.string()), 66, "dir.toml: a directory, not a regular file", "plan dir");
-  expectRefused(runBounded("bake --brdf merl:f.binary -o out", d.string()), 66, "cannot read MERL file f.binary: " + fifo,
-                "MERL FIFO");
+  expectRefused(runBounded("bake --brdf merl:f.binary -o out", d.string()), 66,
+                "cannot read MERL file f.binary: " + fifo, "MERL FIFO");
   EXPECT_FALSE(fs::exists(d / "out"));
 }
 
@@ -92,12 +92,14 @@ TEST(Hostile, PlanningIsLinearInTheMaterials) {
     std::ofstream f(p);
     f << R"({"asset":{"version":"2.0"},"materials":[)";
     for (int i = 0; i < n; ++i)
-      f << (i ? "," : "") << R"({"name":"m)" << i << R"(","pbrMetallicRoughness":{"roughnessFactor":)" << (i % 97) / 97.0 << "}}";
+      f << (i ? "," : "") << R"({"name":"m)" << i << R"(","pbrMetallicRoughness":{"roughnessFactor":)"
+        << (i % 97) / 97.0 << "}}";
     f << "]}";
     return p.filename().string();
   };
   auto cpu = [&](const std::string& file) {
-    struct rusage before {}, after {};
+    struct rusage before {
+    }, after{};
     ::getrusage(RUSAGE_CHILDREN, &before);
     CmdResult r = run("plan " + file + " -o out", d.string());
     ::getrusage(RUSAGE_CHILDREN, &after);
@@ -116,12 +118,14 @@ TEST(Hostile, TooManyFilesAreRefusedAtPlanning) {
   const fs::path d = freshDir("hostile", "files");
   std::ofstream f(d / "many.toml");
   f << "[scene]\nname = \"many\"\n[output.size]\nalbedo = 4\n";
-  for (int i = 0; i < 600; ++i) f << "[[material]]\nname = \"w" << i << "\"\nfresnel = \"dielectric\"\neta = " << 1.1 + i * 0.001 << "\n";
+  for (int i = 0; i < 600; ++i)
+    f << "[[material]]\nname = \"w" << i << "\"\nfresnel = \"dielectric\"\neta = " << 1.1 + i * 0.001 << "\n";
   f.close();
-  expectRefused(runBounded("bake many.toml -o out", d.string()), 64,
-                "too many files for one set: 600 tables write at least as many files, and at most 511 land together; bake "
-                "the scene in 2 parts: --shard 1/2 ... --shard 2/2",
-                "600 tables");
+  expectRefused(
+      runBounded("bake many.toml -o out", d.string()), 64,
+      "too many files for one set: 600 tables write at least as many files, and at most 511 land together; bake "
+      "the scene in 2 parts: --shard 1/2 ... --shard 2/2",
+      "600 tables");
   EXPECT_FALSE(fs::exists(d / "out"));
   CmdResult r = runBounded("plan many.toml -o out", d.string());
   EXPECT_NE(r.out.find("note: 600 tables to bake write more files than one set holds (511): bake them in 2 parts"),
@@ -148,7 +152,8 @@ TEST(Hostile, StampThatIsNotAFileIsRefusedBeforeBaking) {
 
 // `brdfbake ARGS` run in `cwd` with its standard output sent to `out` (a shell redirection target);
 // returns the exit status and standard error.
-CmdResult runStdoutTo(const std::string& args, const std::string& cwd, const std::string& out, const std::string& pre = "") {
+CmdResult runStdoutTo(const std::string& args, const std::string& cwd, const std::string& out,
+                      const std::string& pre = "") {
   const std::string cmd = "cd '" + cwd + "' && " + pre + "'" BRDFBAKE_EXE "' " + args + " 2>&1 >" + out;
   FILE* p = popen(cmd.c_str(), "r");
   std::string text;
@@ -170,7 +175,8 @@ TEST(Hostile, OutputThatDoesNotLandIs74) {
     CmdResult r = runStdoutTo(args, d.string(), "/dev/full");
     EXPECT_EQ(r.code, 74) << args << "\n" << r.out;
     EXPECT_NE(r.out.find("brdfbake: cannot write standard output: No space left on device"), std::string::npos)
-        << args << "\n" << r.out;
+        << args << "\n"
+        << r.out;
   }
   CmdResult r = runStdoutTo("bake --table splitsum --size 128 -o big", d.string(), "/dev/null", "ulimit -f 50; ");
   EXPECT_EQ(r.code, 74) << r.out;
@@ -203,14 +209,16 @@ TEST(Hostile, CodesAndWordsAreTrue) {
   for (int k = 0; k < 4; ++k) ktx2[level + k] = static_cast<char>(nan >> (8 * k));
   std::ofstream(d / "nan.ktx2", std::ios::binary) << ktx2;
   r = runBounded("info nan.ktx2", d.string());
-  EXPECT_NE(r.out.find("warning: 1 texel value(s) are not finite (NaN or Inf): brdfbake never writes one"), std::string::npos)
+  EXPECT_NE(r.out.find("warning: 1 texel value(s) are not finite (NaN or Inf): brdfbake never writes one"),
+            std::string::npos)
       << r.out;
   EXPECT_EQ(r.out.find("borrowed"), std::string::npos) << r.out;
   fs::create_directory(d / "icd");
   r = run("bake --table kp -o v", d.string(), "OCL_ICD_VENDORS='" + (d / "icd").string() + "'");
   EXPECT_EQ(r.code, 69) << r.out;
-  EXPECT_NE(r.out.find("no OpenCL platform found: OCL_ICD_VENDORS=" + (d / "icd").string() + " names no loadable driver"),
-            std::string::npos)
+  EXPECT_NE(
+      r.out.find("no OpenCL platform found: OCL_ICD_VENDORS=" + (d / "icd").string() + " names no loadable driver"),
+      std::string::npos)
       << r.out;
 }
 
@@ -223,7 +231,8 @@ TEST(Hostile, AnOutputThatIsAnInputIsRefused) {
   expectRefused(runBounded("bake s.toml -o out --stamp s.toml", d.string()), 73,
                 "--stamp s.toml: is an input of this command; it would be replaced by its output", "stamp = scene");
   expectRefused(runBounded("bake s.toml -o out --stamp ./s.toml", d.string()), 73,
-                "--stamp ./s.toml: is the same file as s.toml, an input of this command", "stamp = scene, spelt otherwise");
+                "--stamp ./s.toml: is the same file as s.toml, an input of this command",
+                "stamp = scene, spelt otherwise");
   EXPECT_EQ(bytes(d / "s.toml"), manifest);
   EXPECT_FALSE(fs::exists(d / "out")) << "baked before the stamp was checked";
   ASSERT_EQ(runBounded("bake --table kp -o t", d.string()).code, 0);
@@ -250,7 +259,8 @@ TEST(Hostile, CacheDirIsCheckedAndNamed) {
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_TRUE(fs::is_directory(d / "-1")) << "the cache is where it was asked to be";
   std::ofstream(d / "file") << "x";
-  expectRefused(runBounded("--table kp --cache-dir file -o out2", d.string()), 73, "--cache-dir file: '" + (d / "file").string() + "' is not a directory", "cache dir is a file");
+  expectRefused(runBounded("--table kp --cache-dir file -o out2", d.string()), 73,
+                "--cache-dir file: '" + (d / "file").string() + "' is not a directory", "cache dir is a file");
   expectRefused(runBounded("--table kp --cache-dir /proc/brdfbake -o out2", d.string()), 73,
                 "--cache-dir /proc/brdfbake: '/proc/brdfbake' is in /proc, a kernel file system", "cache in /proc");
   EXPECT_FALSE(fs::exists(d / "out2"));
@@ -314,9 +324,14 @@ TEST(Hostile, NoInodesLeftIsAWriteError) {
   fs::create_directories(d / "disk");
   const std::string disk = (d / "disk").string();
   std::ofstream(d / "t.sh") << "set -u\n"
-                               "mount -t tmpfs -o size=10m,nr_inodes=5 tmpfs '" << disk << "' || { echo 'cannot mount a tmpfs (root needed)'; exit 99; }\n"
-                               "'" BRDFBAKE_EXE "' --table kp,albedo,albedo-avg,splitsum --size 4 -o '" << disk << "/out'; echo \"rc=$?\"\n"
-                               "ls -A '" << disk << "/out' 2>/dev/null | wc -l\n";
+                               "mount -t tmpfs -o size=10m,nr_inodes=5 tmpfs '"
+                            << disk
+                            << "' || { echo 'cannot mount a tmpfs (root needed)'; exit 99; }\n"
+                               "'" BRDFBAKE_EXE "' --table kp,albedo,albedo-avg,splitsum --size 4 -o '"
+                            << disk
+                            << "/out'; echo \"rc=$?\"\n"
+                               "ls -A '"
+                            << disk << "/out' 2>/dev/null | wc -l\n";
   CmdResult r{0, ""};
   FILE* p = popen(("unshare -m sh '" + (d / "t.sh").string() + "' 2>&1").c_str(), "r");
   char buf[4096];
@@ -343,16 +358,30 @@ TEST(Hostile, TheDriversOwnFailuresAreSaid) {
   const std::string disk = (d / "disk").string(), dir = d.string();
   std::ofstream(d / "t.sh")
       << "set -u\nexport BRDFBAKE_PROGRAM_CACHE=off BRDFBAKE_PREPARED_PROGRAMS=off\n"
-         "mount -t tmpfs -o size=1200k tmpfs '" << disk << "' || { echo 'cannot mount a tmpfs (root needed)'; exit 99; }\n"
-         "POCL_CACHE_DIR='" << disk << "' '" BRDFBAKE_EXE "' --table kp --size 4 -o '" << dir << "/o1'; echo \"rc1=$?\"\n"
-         "POCL_CACHE_DIR='" << disk << "' BRDFBAKE_TEST_DRIVER_MIN_FREE=0 '" BRDFBAKE_EXE "' --table kp --size 4 -o '"
-      << dir << "/o2'; echo \"rc2=$?\"\n"
-         "rm -rf '" << dir << "/cache'\n"
-         "POCL_CACHE_DIR='" << dir << "/cache' '" BRDFBAKE_EXE "' --table albedo --size 4 -o '" << dir << "/o3' & pid=$!\n"
-         "i=0; until ls '" << dir << "'/cache/*/*/program.bc >/dev/null 2>&1 || [ $i -ge 1000 ]; do sleep 0.02; i=$((i+1)); done\n"
-         "while kill -0 $pid 2>/dev/null; do rm -rf '" << dir << "/cache'; sleep 0.01; done\n"
+         "mount -t tmpfs -o size=1200k tmpfs '"
+      << disk
+      << "' || { echo 'cannot mount a tmpfs (root needed)'; exit 99; }\n"
+         "POCL_CACHE_DIR='"
+      << disk << "' '" BRDFBAKE_EXE "' --table kp --size 4 -o '" << dir
+      << "/o1'; echo \"rc1=$?\"\n"
+         "POCL_CACHE_DIR='"
+      << disk << "' BRDFBAKE_TEST_DRIVER_MIN_FREE=0 '" BRDFBAKE_EXE "' --table kp --size 4 -o '" << dir
+      << "/o2'; echo \"rc2=$?\"\n"
+         "rm -rf '"
+      << dir
+      << "/cache'\n"
+         "POCL_CACHE_DIR='"
+      << dir << "/cache' '" BRDFBAKE_EXE "' --table albedo --size 4 -o '" << dir
+      << "/o3' & pid=$!\n"
+         "i=0; until ls '"
+      << dir
+      << "'/cache/*/*/program.bc >/dev/null 2>&1 || [ $i -ge 1000 ]; do sleep 0.02; i=$((i+1)); done\n"
+         "while kill -0 $pid 2>/dev/null; do rm -rf '"
+      << dir
+      << "/cache'; sleep 0.01; done\n"
          "wait $pid; echo \"rc3=$?\"\n"
-         "ls -A '" << dir << "' | grep -c '^o[123]$'\n";
+         "ls -A '"
+      << dir << "' | grep -c '^o[123]$'\n";
   CmdResult r{0, ""};
   FILE* p = popen(("unshare -m sh '" + (d / "t.sh").string() + "' 2>&1").c_str(), "r");
   char buf[4096];
@@ -363,12 +392,16 @@ TEST(Hostile, TheDriversOwnFailuresAreSaid) {
   EXPECT_NE(r.out.find("kernel cache '" + disk + "' has "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("building the kernels needs up to 16 MiB there"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("rc2=74"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("the OpenCL driver ended the process while it built or ran kernels from its cache '" + disk +
-                       "'"), std::string::npos) << r.out;
+  EXPECT_NE(
+      r.out.find("the OpenCL driver ended the process while it built or ran kernels from its cache '" + disk + "'"),
+      std::string::npos)
+      << r.out;
   EXPECT_TRUE(r.out.find("rc3=73") != std::string::npos || r.out.find("rc3=70") != std::string::npos) << r.out;
-  const bool crashSaid = r.out.find("the OpenCL driver crashed (SIGABRT) while it built or ran kernels from its cache '" +
-                                   dir + "/cache'") != std::string::npos;
-  const bool buildSaid = r.out.find("on PoCL this is its kernel cache '" + dir + "/cache' removed") != std::string::npos;
+  const bool crashSaid =
+      r.out.find("the OpenCL driver crashed (SIGABRT) while it built or ran kernels from its cache '" + dir +
+                 "/cache'") != std::string::npos;
+  const bool buildSaid =
+      r.out.find("on PoCL this is its kernel cache '" + dir + "/cache' removed") != std::string::npos;
   EXPECT_TRUE(crashSaid || buildSaid) << r.out;
   if (crashSaid) EXPECT_NE(r.out.find("rc3=73"), std::string::npos) << r.out;
   // nothing landed: the failures came before any table was written
@@ -382,15 +415,27 @@ TEST(Hostile, PruneOnAReadOnlyFileSystemListsOnlyWhatItRemoved) {
   const fs::path d = freshDir("hostile", "prune_ro");
   fs::create_directories(d / "disk");
   const std::string disk = (d / "disk").string();
-  std::ofstream(d / "t.sh")
-      << "set -u\n"
-         "mount -t tmpfs -o size=20m tmpfs '" << disk << "' || { echo 'cannot mount a tmpfs (root needed)'; exit 99; }\n"
-         "cp '" BRDFBAKE_SOURCE_DIR "/examples/scenes/pbr-desktop.toml' '" << disk << "/s.toml'\n"
-         "'" BRDFBAKE_EXE "' bake '" << disk << "/s.toml' -o '" << disk << "/out' > /dev/null || exit 98\n"
-         "sed -i 's/fresnel = \"dielectric\"/fresnel = \"schlick\"/; s/eta = 1.33/f0 = 0.02/' '" << disk << "/s.toml'\n"
-         "mount -o remount,ro '" << disk << "' || exit 97\n"
-         "'" BRDFBAKE_EXE "' bake '" << disk << "/s.toml' -o '" << disk << "/out' --prune; echo \"rc=$?\"\n"
-         "ls '" << disk << "/out'\n";
+  std::ofstream(d / "t.sh") << "set -u\n"
+                               "mount -t tmpfs -o size=20m tmpfs '"
+                            << disk
+                            << "' || { echo 'cannot mount a tmpfs (root needed)'; exit 99; }\n"
+                               "cp '" BRDFBAKE_SOURCE_DIR "/examples/scenes/pbr-desktop.toml' '"
+                            << disk
+                            << "/s.toml'\n"
+                               "'" BRDFBAKE_EXE "' bake '"
+                            << disk << "/s.toml' -o '" << disk
+                            << "/out' > /dev/null || exit 98\n"
+                               "sed -i 's/fresnel = \"dielectric\"/fresnel = \"schlick\"/; s/eta = 1.33/f0 = 0.02/' '"
+                            << disk
+                            << "/s.toml'\n"
+                               "mount -o remount,ro '"
+                            << disk
+                            << "' || exit 97\n"
+                               "'" BRDFBAKE_EXE "' bake '"
+                            << disk << "/s.toml' -o '" << disk
+                            << "/out' --prune; echo \"rc=$?\"\n"
+                               "ls '"
+                            << disk << "/out'\n";
   CmdResult r{0, ""};
   FILE* p = popen(("unshare -m sh '" + (d / "t.sh").string() + "' 2>&1").c_str(), "r");
   char buf[4096];
@@ -399,8 +444,11 @@ TEST(Hostile, PruneOnAReadOnlyFileSystemListsOnlyWhatItRemoved) {
   ASSERT_EQ(r.out.find("cannot mount"), std::string::npos) << r.out;
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("rc=73"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("--prune: cannot remove " + disk + "/out/albedo_ggx_smith-correlated_dielectric-eta1.33.exr (0 of 1 "
-                       "removed before it): Read-only file system"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--prune: cannot remove " + disk +
+                       "/out/albedo_ggx_smith-correlated_dielectric-eta1.33.exr (0 of 1 "
+                       "removed before it): Read-only file system"),
+            std::string::npos)
+      << r.out;
   EXPECT_EQ(r.out.find("removed, no longer needed"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\nalbedo_ggx_smith-correlated_dielectric-eta1.33.exr\n"), std::string::npos) << r.out;
 }

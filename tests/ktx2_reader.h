@@ -38,10 +38,10 @@ struct FormatInfo {
 // The Vulkan formats this project may write (VkFormat enumerant values from the Vulkan registry).
 inline bool formatInfo(uint32_t vk, FormatInfo* out) {
   static const std::map<uint32_t, FormatInfo> kFormats = {
-      {9, {1, 8, false}},    {16, {2, 8, false}},   {23, {3, 8, false}},   {37, {4, 8, false}},   // R8.._UNORM
-      {70, {1, 16, false}},  {77, {2, 16, false}},  {84, {3, 16, false}},  {91, {4, 16, false}},  // R16.._UNORM
-      {76, {1, 16, true}},   {83, {2, 16, true}},   {90, {3, 16, true}},   {97, {4, 16, true}},   // R16.._SFLOAT
-      {100, {1, 32, true}},  {103, {2, 32, true}},  {106, {3, 32, true}},  {109, {4, 32, true}}}; // R32.._SFLOAT
+      {9, {1, 8, false}},   {16, {2, 8, false}},  {23, {3, 8, false}},  {37, {4, 8, false}},    // R8.._UNORM
+      {70, {1, 16, false}}, {77, {2, 16, false}}, {84, {3, 16, false}}, {91, {4, 16, false}},   // R16.._UNORM
+      {76, {1, 16, true}},  {83, {2, 16, true}},  {90, {3, 16, true}},  {97, {4, 16, true}},    // R16.._SFLOAT
+      {100, {1, 32, true}}, {103, {2, 32, true}}, {106, {3, 32, true}}, {109, {4, 32, true}}};  // R32.._SFLOAT
   auto it = kFormats.find(vk);
   if (it == kFormats.end()) return false;
   *out = it->second;
@@ -124,7 +124,8 @@ inline Texture read(const std::string& path) {
     const unsigned type = word >> 24;
     if ((type & 0xF) != kIds[s]) bad(name + " channel id is not " + "RGBA"[s]);
     const unsigned q = type & 0xF0;  // linear 0x10, exponent 0x20, signed 0x40, float 0x80
-    if (q != (fi.isFloat ? 0xC0u : 0u)) bad(name + " qualifiers do not say " + (fi.isFloat ? "float, signed" : "unsigned integer"));
+    if (q != (fi.isFloat ? 0xC0u : 0u))
+      bad(name + " qualifiers do not say " + (fi.isFloat ? "float, signed" : "unsigned integer"));
     if (u32(o + 4) != 0) bad(name + " samplePosition is not 0");
     const uint32_t lower = u32(o + 8), upper = u32(o + 12);
     if (fi.isFloat ? (lower != 0xBF800000u || upper != 0x3F800000u)
@@ -163,7 +164,8 @@ inline Texture read(const std::string& path) {
     bad("KTXorientation does not name each dimension");
   // level 0
   const uint64_t texelBytes = static_cast<uint64_t>(n) * bytes;
-  const uint64_t count = static_cast<uint64_t>(t.width) * std::max<uint32_t>(1, t.height) * std::max<uint32_t>(1, t.depth);
+  const uint64_t count =
+      static_cast<uint64_t>(t.width) * std::max<uint32_t>(1, t.height) * std::max<uint32_t>(1, t.depth);
   if (lvOff % std::lcm<uint64_t>(texelBytes, 4) != 0) bad("level 0 byteOffset is not aligned to lcm(texel size, 4)");
   if (lvOff < kvdOff + static_cast<uint64_t>(kvdLen) || lvOff < dfdOff + static_cast<uint64_t>(dfdLen))
     bad("level 0 overlaps the descriptors");
@@ -174,8 +176,10 @@ inline Texture read(const std::string& path) {
   t.texels.resize(count * n);
   for (uint64_t i = 0; i < count * n; ++i) {
     const uint64_t raw = le(b, lvOff + i * bytes, bytes);
-    if (!fi.isFloat) t.texels[i] = raw / (fi.bits == 16 ? 65535.0 : 255.0);
-    else if (fi.bits == 16) t.texels[i] = static_cast<float>(Imath::half(Imath::half::FromBits, static_cast<uint16_t>(raw)));
+    if (!fi.isFloat)
+      t.texels[i] = raw / (fi.bits == 16 ? 65535.0 : 255.0);
+    else if (fi.bits == 16)
+      t.texels[i] = static_cast<float>(Imath::half(Imath::half::FromBits, static_cast<uint16_t>(raw)));
     else {
       const uint32_t r32 = static_cast<uint32_t>(raw);
       float f;

@@ -53,7 +53,9 @@ TEST(Library, ErrorBoundIsWhatTheFileClaims) {
     brdfbake::write(t);
     const brdfbake::Table back = brdfbake::readTable(t[0].path);
     EXPECT_FLOAT_EQ(static_cast<float>(t[0].errorBound), std::stof(back.metadata.at("brdf.error")));
-    if (p == brdfbake::Precision::Float16) EXPECT_GT(t[0].errorBound, 1e-4);
-    else EXPECT_LT(t[0].errorBound, 1e-5);
+    if (p == brdfbake::Precision::Float16)
+      EXPECT_GT(t[0].errorBound, 1e-4);
+    else
+      EXPECT_LT(t[0].errorBound, 1e-5);
   }
 }

@@ -34,8 +34,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-using testing_cli::CmdResult;
 using testing_cli::bytes;
+using testing_cli::CmdResult;
 using testing_cli::run;
 fs::path freshDir(const std::string& name) { return testing_cli::freshDir("merl", name); }
 
@@ -122,7 +122,8 @@ TEST(MerlFile, SizeHeaderAndBinOrderReadBackRaw) {
     for (int c = 0; c < 3; ++c) {
       double expected = hostBrdf(s, d, c);
       double stored = doubleAt(b, 12 + (size_t(c) * 90 * 90 * 180 + index) * 8) * scale[c];
-      EXPECT_NEAR(stored, expected, 1e-7 * std::max(1.0, expected)) << "bin " << th << "," << td << "," << pd << " c " << c;
+      EXPECT_NEAR(stored, expected, 1e-7 * std::max(1.0, expected))
+          << "bin " << th << "," << td << "," << pd << " c " << c;
     }
   }
   // the writer's temporary is gone
@@ -178,9 +179,10 @@ TEST(MerlCli, BadFilesAreDataErrorsAndMissingOnesNoInputWithNothingWritten) {
     int code;
     std::string says;
   };
-  for (const Case& c : {Case{shortFile, 65, "wrong size"}, Case{writeBytes("tiny.binary", "Z"), 65, "found 1"}, Case{longFile, 65, "wrong size"},
-                        Case{badHeader, 65, "found 90 90 360"}, Case{nanFile, 65, "not finite"},
-                        Case{(dir / "absent.binary").string(), 66, "cannot read"}, Case{dir.string(), 66, "cannot read"}}) {
+  for (const Case& c :
+       {Case{shortFile, 65, "wrong size"}, Case{writeBytes("tiny.binary", "Z"), 65, "found 1"},
+        Case{longFile, 65, "wrong size"}, Case{badHeader, 65, "found 90 90 360"}, Case{nanFile, 65, "not finite"},
+        Case{(dir / "absent.binary").string(), 66, "cannot read"}, Case{dir.string(), 66, "cannot read"}}) {
     fs::path out = dir / "out";
     CmdResult r = run("bake --brdf merl:" + c.file + " --table albedo --size 4 -o " + out.string());
     EXPECT_EQ(r.code, c.code) << c.file << ": " << r.out;
@@ -198,7 +200,7 @@ TEST(MerlCli, BadFilesAreDataErrorsAndMissingOnesNoInputWithNothingWritten) {
 TEST(MerlCli, MeasuredMaterialTakesNoModelsAndOnlyTheTwoDTables) {
   std::string f = " --brdf merl:" + merlFileOf(0.5).string() + " -o " + (freshDir("usage") / "out").string();
   for (const char* extra : {"--table kp", "--table brdf3d", "--table fresnel-avg", "--ndf ggx", "--gaf smith",
-                                   "--fresnel schlick", "--diffuse lambert", "--f0 0.5"}) {
+                            "--fresnel schlick", "--diffuse lambert", "--f0 0.5"}) {
     CmdResult r = run("bake" + f + " " + std::string(extra));
     EXPECT_EQ(r.code, 64) << extra << ": " << r.out;
   }
@@ -352,7 +354,8 @@ TEST(MerlAlbedo, DirectAverageMatchesAConstantAndTheReference) {
 // the sampling's), on the node grid so that mu = 0, 0.1, ..., 1 and r = 0.3, 0.5, 0.8 are texels.
 TEST(MerlRoundTrip, AlbedoOfTheWrittenFileMatchesTheAnalyticAlbedo) {
   fs::path dir = freshDir("roundtrip");
-  CmdResult k = run("bake --table albedo --fresnel schlick --f0 0.04 --grid node --size 11 -o " + (dir / "analytic").string());
+  CmdResult k =
+      run("bake --table albedo --fresnel schlick --f0 0.04 --grid node --size 11 -o " + (dir / "analytic").string());
   ASSERT_EQ(k.code, 0) << k.out;
   TableImage analytic = readTableExr((dir / "analytic" / "albedo_ggx_smith-correlated_schlick-f00.04.exr").string());
   struct Bound {
@@ -377,8 +380,10 @@ TEST(MerlRoundTrip, AlbedoOfTheWrittenFileMatchesTheAnalyticAlbedo) {
       double e = analytic.planes[0][row * 11 + i], got = m.planes[0][i];
       EXPECT_FLOAT_EQ(m.planes[1][i], got);  // R = G = B for a grey material
       double diff = std::fabs(got - e);
-      if (i == 0) EXPECT_LT(diff, b.grazing) << "r " << b.r << " mu 0: " << got << " vs " << e;
-      else EXPECT_LT(diff, b.inside) << "r " << b.r << " mu " << i / 10.0 << ": " << got << " vs " << e;
+      if (i == 0)
+        EXPECT_LT(diff, b.grazing) << "r " << b.r << " mu 0: " << got << " vs " << e;
+      else
+        EXPECT_LT(diff, b.inside) << "r " << b.r << " mu " << i / 10.0 << ": " << got << " vs " << e;
       if (i > 0) worstInside = std::max(worstInside, diff);
       std::printf("r %.1f mu %.1f analytic %.7f merl %.7f diff %+.2e\n", b.r, i / 10.0, e, got, got - e);
     }
@@ -404,7 +409,8 @@ TEST(MerlRoundTrip, NearestBinLookupIsFarWorseThanTrilinear) {
 // material: the albedo's numbers under the split sum's name.
 TEST(MerlRoundTrip, AverageAlbedoAndSplitSum) {
   fs::path dir = freshDir("avg");
-  CmdResult k = run("bake --table albedo-avg --fresnel schlick --f0 0.04 --grid node --size 11 -o " + (dir / "a").string());
+  CmdResult k =
+      run("bake --table albedo-avg --fresnel schlick --f0 0.04 --grid node --size 11 -o " + (dir / "a").string());
   ASSERT_EQ(k.code, 0) << k.out;
   double eavg = readTableExr((dir / "a" / "albedo-avg_ggx_smith-correlated_schlick-f00.04.exr").string()).planes[0][5];
   fs::path file = merlFileOf(0.5);
@@ -439,7 +445,8 @@ TEST(MerlAlbedo, ConstantDataIntegratesToPiTimesItAndInfoFlagsEnergyGain) {
   }
   fs::path dir = freshDir("constant");
   writeMerl((dir / "bright.binary").string(), {std::vector<float>(kMerlBins, 1.0f)});
-  CmdResult r = run("bake --brdf merl:" + (dir / "bright.binary").string() + " --table albedo --size 2 -o " + (dir / "o").string());
+  CmdResult r = run("bake --brdf merl:" + (dir / "bright.binary").string() + " --table albedo --size 2 -o " +
+                    (dir / "o").string());
   ASSERT_EQ(r.code, 0) << r.out;
   CmdResult info = run("info " + (dir / "o" / "albedo_merl-bright.exr").string());
   EXPECT_EQ(info.code, 0);

@@ -71,7 +71,8 @@ TEST(Ndf, WeakWhiteFurnaceIsMuForGgxAndBeckmann) {
   for (int ndf : {NDF_GGX, NDF_BECKMANN})
     for (double r : {0.1, 0.5, 1.0})
       for (double mu : {0.05, 0.5, 0.95})
-        EXPECT_NEAR(brdfbake::reference::weakFurnace(ndf, r, mu), mu, 1e-8) << ndfName(ndf) << " r " << r << " mu " << mu;
+        EXPECT_NEAR(brdfbake::reference::weakFurnace(ndf, r, mu), mu, 1e-8)
+            << ndfName(ndf) << " r " << r << " mu " << mu;
 }
 
 TEST(Ndf, WeakWhiteFurnaceDeviationOfApproximateLambdas) {
@@ -84,7 +85,8 @@ TEST(Ndf, WeakWhiteFurnaceDeviationOfApproximateLambdas) {
     for (double r : {0.1, 0.5, 1.0})
       for (double mu : {0.05, 0.5, 0.95})
         worst = std::max(worst, std::fabs(brdfbake::reference::weakFurnace(ndf, r, mu) - mu) / mu);
-    std::cout << "[ report   ] weak white furnace, " << ndfName(ndf) << ": largest relative deviation " << worst << "\n";
+    std::cout << "[ report   ] weak white furnace, " << ndfName(ndf) << ": largest relative deviation " << worst
+              << "\n";
     EXPECT_NEAR(worst, pinned[ndf - NDF_BLINN_PHONG], 1e-4 * pinned[ndf - NDF_BLINN_PHONG]) << ndfName(ndf);
   }
 }
@@ -159,7 +161,8 @@ TEST(Gaf, CanonicalGivesTheSameBits) {
                 brdf32::BrdfParams vc = brdf32::hemi_view(ndf, c, pc, no, std::sqrt(s2o), colc);
                 const float av = brdf32::gaf_G_over_no(gaf, ndf, vg, ni, no, nh, oh, s2i, s2o);
                 const float bv = brdf32::gaf_G_over_no(c, ndf, vc, ni, no, nh, oh, s2i, s2o);
-                EXPECT_EQ(0, std::memcmp(&av, &bv, sizeof av)) << ndfName(ndf) << " + " << gafName(gaf) << " (view set)";
+                EXPECT_EQ(0, std::memcmp(&av, &bv, sizeof av))
+                    << ndfName(ndf) << " + " << gafName(gaf) << " (view set)";
               }
     }
   EXPECT_EQ(mapped, 4);  // ggx and beckmann with smith-exact and smith-correlated-exact
@@ -182,9 +185,9 @@ TEST(Gaf, KinkLocationsAreWhereTheBranchesMeet) {
       int n = gaf_kinks(GAF_COOK_TORRANCE, mu, s, c, sn, k);
       ASSERT_GE(n, 2);
       Geo g0 = geo(mu, th, k[0]);
-      EXPECT_NEAR(g0.ni, mu, 1e-12);                  // n.i = n.o
+      EXPECT_NEAR(g0.ni, mu, 1e-12);  // n.i = n.o
       Geo g1 = geo(mu, th, k[1]);
-      EXPECT_NEAR(2 * c * mu / g1.oh, 1.0, 1e-12);    // masking term = 1
+      EXPECT_NEAR(2 * c * mu / g1.oh, 1.0, 1e-12);  // masking term = 1
       if (n == 3) {
         Geo g2 = geo(mu, th, k[2]);
         EXPECT_NEAR(2 * c * g2.ni / g2.oh, 1.0, 1e-12);  // shadowing term = 1
@@ -235,7 +238,8 @@ TEST(Gaf, ThetaBreaksAreWhereKinksMeetTheArcEndsOrEachOther) {
       bool hit = false;
       for (double cphi : {1.0, -1.0}) {
         Geo g = geo(mu, th, cphi);
-        hit |= std::fabs(g.ni - mu) < 1e-9 || std::fabs(2 * c * mu - g.oh) < 1e-9 || std::fabs(2 * c * g.ni - g.oh) < 1e-9;
+        hit |=
+            std::fabs(g.ni - mu) < 1e-9 || std::fabs(2 * c * mu - g.oh) < 1e-9 || std::fabs(2 * c * g.ni - g.oh) < 1e-9;
       }
       double k[3] = {0, 0, 0};
       if (!hit && gaf_kinks(GAF_COOK_TORRANCE, mu, s, c, std::sin(th), k) == 3 && std::fabs(k[0] - k[1]) < 1e-9 &&
@@ -337,11 +341,13 @@ TEST(Albedo, PerTexelBoundsArePinned) {
     BrdfParams pr = hemisphere_texel_params(p.ndf, p.gaf, p.mu, p.r);
     double b0 = hemi_rel_error(hemi_rule(p.ndf, p.gaf, pr, p.mu, 0));
     double b1 = hemi_rel_error(hemi_rule(p.ndf, p.gaf, pr, p.mu, 1));
-    EXPECT_NEAR(b0, p.bound0, 1e-3 * p.bound0) << ndfName(p.ndf) << "+" << gafName(p.gaf) << " mu " << p.mu << " r " << p.r;
+    EXPECT_NEAR(b0, p.bound0, 1e-3 * p.bound0)
+        << ndfName(p.ndf) << "+" << gafName(p.gaf) << " mu " << p.mu << " r " << p.r;
     if (p.bound1 == 0)
       EXPECT_LT(b1, 1e-13) << ndfName(p.ndf) << "+" << gafName(p.gaf) << " mu " << p.mu << " r " << p.r;
     else
-      EXPECT_NEAR(b1, p.bound1, 1e-3 * p.bound1) << ndfName(p.ndf) << "+" << gafName(p.gaf) << " mu " << p.mu << " r " << p.r;
+      EXPECT_NEAR(b1, p.bound1, 1e-3 * p.bound1)
+          << ndfName(p.ndf) << "+" << gafName(p.gaf) << " mu " << p.mu << " r " << p.r;
   }
 }
 }  // namespace

@@ -172,7 +172,7 @@ TEST(MuAxis, EstimateTakesTheTablesOwnSpacing) {
   }
   for (int y = 0; y < 2; ++y)
     for (int i = 0; i < n; ++i) {
-      const double c = (i + 0.5) / n;  // texel centre of the axis
+      const double c = (i + 0.5) / n;                               // texel centre of the axis
       lin.planes[0][y * n + i] = static_cast<float>(std::sqrt(c));  // sqrt(mu) at mu = c
       sq.planes[0][y * n + i] = static_cast<float>(c);              // sqrt(mu) at mu = c^2
     }
@@ -197,7 +197,8 @@ TEST(MuAxis, InterpolationEstimateHoldsOnBothAxes) {
   KernelTable truth = k.hemisphere(NDF_GGX, GAF_SMITH_CORRELATED, dense, dense, true, {}, true);
   // the dip is the BRDF's, not the kernel's: the independent reference at mu = alpha, r = 0.0313
   EXPECT_NEAR(reference::albedo(NDF_GGX, GAF_SMITH_CORRELATED, 0.0313, 0.0313 * 0.0313).e(), 0.892, 0.001);
-  std::printf("64^2 ggx + smith-correlated split sums: lookup vs the kernel at %d^2 points, max over A, B, A+B\n", dense);
+  std::printf("64^2 ggx + smith-correlated split sums: lookup vs the kernel at %d^2 points, max over A, B, A+B\n",
+              dense);
   std::printf("%-6s %-13s %-11s %-11s %-11s %-11s %-10s %s\n", "axis", "grid", "r<0.05", "0.05<=r<0.2", "r>=0.2",
               "mu>=0.1", "estimate", "(interior)");
   double band[2][2][4] = {};  // [node][sqrt][region]
@@ -215,7 +216,8 @@ TEST(MuAxis, InterpolationEstimateHoldsOnBothAxes) {
         const int x0 = std::min(static_cast<int>(px), n - 2), y0 = std::min(static_cast<int>(py), n - 2);
         const double fx = px - x0, fy = py - y0;
         auto at = [&](int x, int y) { return static_cast<double>(t.planes[c][static_cast<size_t>(y) * n + x]); };
-        return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+        return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
+               fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
       };
       double* worst = band[node][sq];
       for (int j = 0; j < dense; ++j)

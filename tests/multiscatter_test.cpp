@@ -112,10 +112,11 @@ TEST_P(MsPair, KullaContyWhiteFurnace) {
   Worst fine = kullaContyFurnace(b, b.fine256, kMinMu, kMinR);
   Worst def = kullaContyFurnace(b, b.tables, kMinMu, kMinR);
   Worst all = kullaContyFurnace(b, b.fine256, 0, 0);
-  std::printf("%s Kulla-Conty F=1, max |albedo - 1| for r >= 0.05, mu >= 0.02: 256 node %.2e (mu=%.2f r=%.2f), "
-              "32 texel-centre %.2e (mu=%.2f r=%.2f); 256 node down to mu = 0, r = 0: %.2e (mu=%.2f r=%.2f)\n",
-              pairName(p.ndf, p.gaf).c_str(), std::fabs(fine.value), fine.mu, fine.r, std::fabs(def.value), def.mu,
-              def.r, std::fabs(all.value), all.mu, all.r);
+  std::printf(
+      "%s Kulla-Conty F=1, max |albedo - 1| for r >= 0.05, mu >= 0.02: 256 node %.2e (mu=%.2f r=%.2f), "
+      "32 texel-centre %.2e (mu=%.2f r=%.2f); 256 node down to mu = 0, r = 0: %.2e (mu=%.2f r=%.2f)\n",
+      pairName(p.ndf, p.gaf).c_str(), std::fabs(fine.value), fine.mu, fine.r, std::fabs(def.value), def.mu, def.r,
+      std::fabs(all.value), all.mu, all.r);
   EXPECT_LE(std::fabs(fine.value), 1e-3) << "at mu=" << fine.mu << " r=" << fine.r;
   EXPECT_NEAR(std::fabs(def.value), p.default32, 0.1 * p.default32) << "at mu=" << def.mu << " r=" << def.r;
 }
@@ -130,8 +131,8 @@ TEST_P(MsPair, CompensationAddsTheMissingEnergy) {
   EXPECT_NEAR(ess, eRef, 1e-5);
   EXPECT_LT(ess, 0.95) << "uncompensated albedo should lose > 5% at r = 1";
   const double added = materials::evaluate(b.fine256, 0.5, 1.0, 1.0).kullaConty;
-  std::printf("%s at mu=0.5 r=1: E = %.6f, 1 - E = %.6f, Kulla-Conty adds %.6f\n", pairName(p.ndf, p.gaf).c_str(),
-              eRef, 1 - eRef, added);
+  std::printf("%s at mu=0.5 r=1: E = %.6f, 1 - E = %.6f, Kulla-Conty adds %.6f\n", pairName(p.ndf, p.gaf).c_str(), eRef,
+              1 - eRef, added);
   EXPECT_NEAR(added, 1 - eRef, 1e-3);
 }
 
@@ -161,11 +162,12 @@ TEST_P(MsPair, FresnelCompensationsCompared) {
     const size_t at = 100 * kFine + 50;  // mu = 0.5, r = 1
     const double ss = f0 * b.fine.planes[0][at] + b.fine.planes[1][at];
     MsEnergy m = materials::evaluate(b.fine256, 0.5, 1.0, f0);
-    std::printf("%s F0=%.2f: Kulla-Conty adds up to %.4f (mu=%.2f r=%.2f); Fdez-Aguera - Kulla-Conty %+.2e "
-                "(mu=%.2f r=%.2f); Filament - Kulla-Conty %+.2e (mu=%.2f r=%.2f); albedo at mu=0.5 r=1: single %.4f, "
-                "Kulla-Conty %.4f, Fdez-Aguera %.4f, Filament %.4f\n",
-                pairName(p.ndf, p.gaf).c_str(), f0, kcMax.value, kcMax.mu, kcMax.r, fdez.value, fdez.mu, fdez.r,
-                fil.value, fil.mu, fil.r, ss, ss + m.kullaConty, ss + m.fdezMultiple, ss * m.filament);
+    std::printf(
+        "%s F0=%.2f: Kulla-Conty adds up to %.4f (mu=%.2f r=%.2f); Fdez-Aguera - Kulla-Conty %+.2e "
+        "(mu=%.2f r=%.2f); Filament - Kulla-Conty %+.2e (mu=%.2f r=%.2f); albedo at mu=0.5 r=1: single %.4f, "
+        "Kulla-Conty %.4f, Fdez-Aguera %.4f, Filament %.4f\n",
+        pairName(p.ndf, p.gaf).c_str(), f0, kcMax.value, kcMax.mu, kcMax.r, fdez.value, fdez.mu, fdez.r, fil.value,
+        fil.mu, fil.r, ss, ss + m.kullaConty, ss + m.fdezMultiple, ss * m.filament);
     if (f0 == 1.0) {
       EXPECT_LE(fdezFurnace, 1e-6);
       EXPECT_LE(filFurnace, 1e-6);
@@ -191,8 +193,8 @@ TEST_P(MsPair, DISABLED_TableSizeSweep) {
       MsTables t = bakeTables(p.ndf, p.gaf, n, node);
       Worst all = kullaContyFurnace(b, t, kMinMu, kMinR), rough = kullaContyFurnace(b, t, kMinMu, 25);
       std::printf("%s %3d x %3d %s: max |albedo - 1| r >= 0.05: %.2e (mu=%.2f r=%.2f), r >= 0.25: %.2e\n",
-                  pairName(p.ndf, p.gaf).c_str(), n, n, node ? "node " : "texel", std::fabs(all.value), all.mu,
-                  all.r, std::fabs(rough.value));
+                  pairName(p.ndf, p.gaf).c_str(), n, n, node ? "node " : "texel", std::fabs(all.value), all.mu, all.r,
+                  std::fabs(rough.value));
     }
 }
 

@@ -21,7 +21,8 @@ const char* kFiles[] = {"splitsum_ggx_smith-correlated.exr", "albedo_ggx_smith-c
                         "brdf3d_ggx_smith-correlated_angles.exr"};  // the 3D table's atlas
 
 fs::path bake(bool half) {
-  fs::path d = fs::path(testing::TempDir()) / ("brdfbake_readers_" + std::to_string(half) + "_" + std::to_string(getpid()));
+  fs::path d =
+      fs::path(testing::TempDir()) / ("brdfbake_readers_" + std::to_string(half) + "_" + std::to_string(getpid()));
   fs::remove_all(d);
   std::string cmd = std::string("'") + BRDFBAKE_EXE + "' --size 16 " + (half ? "--half " : "") + "-o '" + d.string() +
                     "' > /dev/null";
@@ -34,7 +35,9 @@ fs::path bake(bool half) {
 }
 
 // Our reader's value of channel c (0 R, 1 G, 2 B) at (x, y).
-float ours(const brdfbake::TableImage& t, int c, int x, int y) { return t.planes[c][static_cast<size_t>(y) * t.width + x]; }
+float ours(const brdfbake::TableImage& t, int c, int x, int y) {
+  return t.planes[c][static_cast<size_t>(y) * t.width + x];
+}
 
 TEST(OtherReaders, FreeImageReadsEveryTableKind) {
   FreeImage_Initialise();

@@ -19,9 +19,9 @@ using namespace brdfbake::testing_cli;
 namespace {
 
 struct ReadmeCommand {
-  std::string args;      // after ./build/brdfbake
-  std::string comment;   // after '#' on its line
-  std::string shown;     // the first output line shown under a `$ ` command, or ""
+  std::string args;     // after ./build/brdfbake
+  std::string comment;  // after '#' on its line
+  std::string shown;    // the first output line shown under a `$ ` command, or ""
 };
 
 std::vector<ReadmeCommand> readmeCommands() {
@@ -83,9 +83,11 @@ TEST(Readme, CommandsRunAsShown) {
       merlSeen = true;
       ASSERT_EQ(run("bake --table brdf3d --format merl -o merl-src", d.string()).code, 0);
       const std::string name = std::regex_replace(args, std::regex(".*--brdf merl:(\\S+).*"), "$1");
-      fs::copy_file(d / "merl-src" / "brdf3d_ggx_smith-correlated.binary", d / name, fs::copy_options::overwrite_existing);
+      fs::copy_file(d / "merl-src" / "brdf3d_ggx_smith-correlated.binary", d / name,
+                    fs::copy_options::overwrite_existing);
     }
-    if (args.find("dielectric") != std::string::npos || args.find("--brdf merl:") != std::string::npos) args += " --size 4";
+    if (args.find("dielectric") != std::string::npos || args.find("--brdf merl:") != std::string::npos)
+      args += " --size 4";
     CmdResult r = run(args, d.string());
     const int expected = c.shown.rfind("VIOLATES", 0) == 0 ? 1 : 0;
     EXPECT_EQ(r.code, expected) << "README: brdfbake " << c.args << "\n" << r.out;
@@ -116,7 +118,8 @@ TEST(Docs, CommandsReferenceIsTheHelp) {
   CmdResult r = run("help --markdown");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(bytes(fs::path(BRDFBAKE_SOURCE_DIR) / "docs/commands-reference.md"), r.out)
-      << "docs/commands-reference.md differs from the help: ./build/brdfbake help --markdown > docs/commands-reference.md";
+      << "docs/commands-reference.md differs from the help: ./build/brdfbake help --markdown > "
+         "docs/commands-reference.md";
 }
 
 // Every relative link and image in README.md and docs/*.md resolves from the page that holds it.
@@ -134,7 +137,8 @@ TEST(Docs, RelativeLinksResolve) {
       if (target.find("://") != std::string::npos || target.rfind("mailto:", 0) == 0 || target[0] == '#') continue;
       target = target.substr(0, target.find('#'));
       ++checked;
-      EXPECT_TRUE(fs::exists(page.parent_path() / target)) << page.filename() << ": " << (*it)[1] << " does not resolve";
+      EXPECT_TRUE(fs::exists(page.parent_path() / target))
+          << page.filename() << ": " << (*it)[1] << " does not resolve";
     }
   }
   EXPECT_GT(checked, 10);
@@ -203,7 +207,8 @@ TEST(Docs, ShownCommandsPrintWhatThePagesShow) {
       pclose(p);
       const std::string got = firstLine(out.empty() ? bytes(d / "stderr.txt") : out);
       if (want.size() > 3 && want.compare(want.size() - 3, 3, "...") == 0)
-        EXPECT_EQ(got.substr(0, want.size() - 3), want.substr(0, want.size() - 3)) << e.path().filename() << ": " << lines[i];
+        EXPECT_EQ(got.substr(0, want.size() - 3), want.substr(0, want.size() - 3))
+            << e.path().filename() << ": " << lines[i];
       else
         EXPECT_EQ(got, want) << e.path().filename() << ": " << lines[i];
     }

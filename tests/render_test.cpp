@@ -22,7 +22,9 @@ const char* const kSmall = "render --cell 24 --columns 6";
 // [4] the bound at that pixel, [5] the largest bound, [6] pixels over.
 std::smatch rowLine(const std::string& out, const std::string& row) {
   std::smatch m;
-  std::regex re("\\n" + row + " +(yes|no) +(the tables|algebra only) +([-0-9.e+]+) \\([^)]*\\) +([-0-9.e+]+) +([-0-9.e+]+) +([0-9]+)\\n");
+  std::regex re(
+      "\\n" + row +
+      " +(yes|no) +(the tables|algebra only) +([-0-9.e+]+) \\([^)]*\\) +([-0-9.e+]+) +([-0-9.e+]+) +([0-9]+)\\n");
   EXPECT_TRUE(std::regex_search(out, m, re)) << row << "\n" << out;
   return m;
 }
@@ -94,7 +96,8 @@ TEST(Render, FurnaceRowsVanishAndTheSingleRowLosesEnergy) {
   EXPECT_GT(added[2], 0.1) << "r = 1";
   EXPECT_LT(added[0], 0.05) << "r = 0.4";
   EXPECT_LT(added[0], added[1]);
-  EXPECT_NE(r.out.find("lobe picture (directional light): the Kulla-Conty lobe adds at most"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("lobe picture (directional light): the Kulla-Conty lobe adds at most"), std::string::npos)
+      << r.out;
   EXPECT_TRUE(fs::exists(d / "out/lobe.png"));
   // the PNG: 8-bit RGB (IHDR at byte 16: width, height, bit depth, colour type) with an sRGB chunk
   const std::string png = bytes(d / "out/furnace.png");
@@ -124,15 +127,19 @@ TEST(Render, DefaultBoundsAreLocalAndTight) {
     std::smatch m = rowLine(r.out, row);
     ASSERT_FALSE(m.empty()) << row << "\n" << r.out;
     EXPECT_EQ(m[6].str(), "0") << row << "\n" << r.out;
-    EXPECT_EQ(m[2].str(), std::string(row) == "single-table" || std::string(row) == "dielectric-lambert" ? "algebra only" : "the tables")
-        << row << "\n" << r.out;
+    EXPECT_EQ(m[2].str(), std::string(row) == "single-table" || std::string(row) == "dielectric-lambert"
+                              ? "algebra only"
+                              : "the tables")
+        << row << "\n"
+        << r.out;
   }
   EXPECT_LE(std::stod(rowLine(r.out, "kulla-conty")[5].str()), 0.01) << r.out;
   EXPECT_LE(std::stod(rowLine(r.out, "single")[5].str()), 0.02) << r.out;
   // the glass row against the reference: the 16 r rows' clamp at r = 1 is up to 0.04 off, and seen
   EXPECT_GT(std::stod(rowLine(r.out, "glass")[3].str()), 0.01) << r.out;
   EXPECT_NE(r.out.find("\ngold                no        nothing (looks)"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("\"algebra only\": the row is 1 by construction whatever the tables hold"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"algebra only\": the row is 1 by construction whatever the tables hold"), std::string::npos)
+      << r.out;
 }
 
 // A compensation lobe at 90% of its strength does not conserve: the measurement says so, exit 1.
@@ -150,7 +157,8 @@ TEST(Render, ABrokenCompensationFailsTheMeasurement) {
 // reference's E of beckmann + smith).
 TEST(Render, AnyMicrofacetPair) {
   const fs::path d = freshDir("render", "pair");
-  CmdResult r = run(std::string(kSmall) + " --ndf beckmann --gaf smith --rows single,kulla-conty,glass -o out", d.string());
+  CmdResult r =
+      run(std::string(kSmall) + " --ndf beckmann --gaf smith --rows single,kulla-conty,glass -o out", d.string());
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("beckmann + smith"), std::string::npos) << r.out;
   for (const char* row : {"single", "kulla-conty", "glass"}) {

@@ -26,8 +26,8 @@ namespace fs = std::filesystem;
 namespace {
 using namespace brdfbake;
 
-using testing_cli::CmdResult;
 using testing_cli::bytes;
+using testing_cli::CmdResult;
 using testing_cli::run;
 fs::path freshDir(const std::string& name) { return testing_cli::freshDir("scene", name); }
 void write(const fs::path& p, const std::string& text) {
@@ -71,8 +71,9 @@ TEST(Scene, ExampleScenesPlanTheirTables) {
   for (const auto& l : lines(r.out)) EXPECT_TRUE(fs::path(l).is_absolute()) << l;
   r = run("plan '" + kExamples + "glass.toml' -o '" + d.string() + "' --list");
   ASSERT_EQ(r.code, 0) << r.out;
-  EXPECT_EQ(names(lines(r.out)), (std::set<std::string>{"splitsum_ggx_smith-correlated.exr", "dielectric_ggx_smith-correlated.exr",
-                                                         "dielectric-avg_ggx_smith-correlated.exr"}));
+  EXPECT_EQ(names(lines(r.out)),
+            (std::set<std::string>{"splitsum_ggx_smith-correlated.exr", "dielectric_ggx_smith-correlated.exr",
+                                   "dielectric-avg_ggx_smith-correlated.exr"}));
   r = run("plan '" + kExamples + "forward-mobile.toml' -o '" + d.string() + "' --list");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(names(lines(r.out)),
@@ -147,8 +148,9 @@ TEST(Scene, DamagedTablesAreBakedAgain) {
   write(cut, goodCut.substr(0, goodCut.size() - 100));
   r = run("bake '" + scene + "' -o '" + out.string() + "'");
   ASSERT_EQ(r.code, 0) << r.out;
-  EXPECT_NE(r.out.find(flipped.string() + " is damaged (its texels are not those it was written with): baking it again"),
-            std::string::npos)
+  EXPECT_NE(
+      r.out.find(flipped.string() + " is damaged (its texels are not those it was written with): baking it again"),
+      std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find(cut.string() + " is damaged (cannot read " + cut.string()), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("baked 2 table(s), 4 up to date"), std::string::npos) << r.out;
@@ -184,8 +186,8 @@ TEST(Registry, EveryKindIsDescribedOnceByAFamilyThatBakesIt) {
 TEST(Scene, OutputSizeKeysAreTheKindsScenesPlan) {
   for (const KindInfo& k : allKinds()) {
     const std::string name = tableName(k.kind);
-    const std::string text = "[output.size]\n\"" + name + "\" = " + (k.volume ? "[4, 4, 4]" : "16") +
-                             "\n[[material]]\nname = \"a\"\n";
+    const std::string text =
+        "[output.size]\n\"" + name + "\" = " + (k.volume ? "[4, 4, 4]" : "16") + "\n[[material]]\nname = \"a\"\n";
     bool parsed = true;
     std::string why;
     try {
@@ -212,13 +214,16 @@ TEST(Scene, BadManifestsNameFileLineColumnAndWriteNothing) {
       {"[[material]\nname = \"a\"\n", "bad.toml:1:12: TOML syntax:"},
       {"[output]\ngrid = \"node\"\n[[material]]\nname = \"a\"\ngaf = \"none\"\n",
        "material 'a': image-based lighting (split-sum DFG) needs a table that cannot be built"},
-      {"[output.size]\nsplitsum = 0\n[[material]]\nname = \"a\"\n", "output.size.splitsum must be an integer in 1..8192"},
+      {"[output.size]\nsplitsum = 0\n[[material]]\nname = \"a\"\n",
+       "output.size.splitsum must be an integer in 1..8192"},
       {"[lighting]\nibl = 1\n[[material]]\nname = \"a\"\n", "bad.toml:2:7: lighting.ibl must be true or false"},
       {"[[material]]\nndf = \"ggx\"\n", "material 1 has no name"},
       {"[scene]\nname = \"x\"\n", "the scene has no materials"},
       {"[[material]]\nname = \"a\"\nbrdf3d = true\nroughness = [0.1, 0.5]\n", "brdf3d = true needs one roughness"},
-      {"[[material]]\nname = \"a\"\ndiffuse = \"lambert\"\nsigma = 0.3\n", "material.sigma: only diffuse = \"oren-nayar\""},
-      {"[[material]]\nname = \"a\"\ngaf = \"schlick-ggx\"\ntransmission = true\n", "transmission = true needs ndf ggx or beckmann"},
+      {"[[material]]\nname = \"a\"\ndiffuse = \"lambert\"\nsigma = 0.3\n",
+       "material.sigma: only diffuse = \"oren-nayar\""},
+      {"[[material]]\nname = \"a\"\ngaf = \"schlick-ggx\"\ntransmission = true\n",
+       "transmission = true needs ndf ggx or beckmann"},
   };
   fs::path out = d / "out";
   for (const Case& c : cases) {
@@ -290,11 +295,10 @@ TEST(Scene, GltfFilesPlanGltfTables) {
   for (const char* file : {"model.gltf", "model.glb"}) {
     CmdResult r = run("plan '" + (d / file).string() + "' -o '" + (d / "out").string() + "' --list");
     ASSERT_EQ(r.code, 0) << file << "\n" << r.out;
-    EXPECT_EQ(names(lines(r.out)), (std::set<std::string>{"splitsum_ggx_smith-correlated.exr",
-                                                           "albedo_charlie_charlie-smith.exr",
-                                                           "splitsum_charlie_neubelt.exr",
-                                                           "dielectric_ggx_smith-correlated.exr",
-                                                           "dielectric-avg_ggx_smith-correlated.exr"}))
+    EXPECT_EQ(names(lines(r.out)),
+              (std::set<std::string>{"splitsum_ggx_smith-correlated.exr", "albedo_charlie_charlie-smith.exr",
+                                     "splitsum_charlie_neubelt.exr", "dielectric_ggx_smith-correlated.exr",
+                                     "dielectric-avg_ggx_smith-correlated.exr"}))
         << file;
     r = run("plan '" + (d / file).string() + "' -o '" + (d / "out").string() + "'");
     EXPECT_NE(r.out.find("for paint: image-based lighting"), std::string::npos) << r.out;
@@ -336,7 +340,8 @@ TEST(Scene, GltfReadsMaterialsOnlyAndChecksEveryField) {
       {R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1]}})", "materials[0].pbrMetallicRoughness.baseColorFactor"},
       {R"({"name":7})", "materials[0].name: expected a string, got 7"},
       {R"({"extensions":{"KHR_materials_ior":{"ior":0.5}}})", "KHR_materials_ior.ior: expected 0 or a number >= 1"},
-      {R"({"extensions":{"KHR_materials_sheen":{"sheenRoughnessFactor":-1}}})", "sheenRoughnessFactor: expected a number in [0, 1]"},
+      {R"({"extensions":{"KHR_materials_sheen":{"sheenRoughnessFactor":-1}}})",
+       "sheenRoughnessFactor: expected a number in [0, 1]"},
       {R"({"extensions":{"KHR_materials_transmission":[]}})", "KHR_materials_transmission: expected an object"},
       {R"(3)", "materials[0]: expected an object, got 3"},
   };
@@ -348,7 +353,8 @@ TEST(Scene, GltfReadsMaterialsOnlyAndChecksEveryField) {
     EXPECT_NE(r.out.find(c.says), std::string::npos) << c.material << "\n" << r.out;
   }
   // a number beyond a double's range is a JSON error with a message, not an abort
-  write(d / "huge.gltf", R"({"asset":{"version":"2.0"},"materials":[{"pbrMetallicRoughness":{"roughnessFactor":1e999}}]})");
+  write(d / "huge.gltf",
+        R"({"asset":{"version":"2.0"},"materials":[{"pbrMetallicRoughness":{"roughnessFactor":1e999}}]})");
   r = run("plan huge.gltf", d.string(), "timeout 20");
   EXPECT_EQ(r.code, 65) << r.out;
   EXPECT_NE(r.out.find("huge.gltf: $: not valid JSON"), std::string::npos) << r.out;

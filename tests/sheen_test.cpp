@@ -295,7 +295,8 @@ TEST(Sheen, KernelAlbedoAvgAndKp) {
         return sum;
       });
       double err = rel(t.planes[0][j], want);
-      EXPECT_LE(err, t.err[j] + avgFloatArithmeticError(t.planes[0][j], NDF_CHARLIE, gaf)) << gafNames()[gaf] << " r " << r;
+      EXPECT_LE(err, t.err[j] + avgFloatArithmeticError(t.planes[0][j], NDF_CHARLIE, gaf))
+          << gafNames()[gaf] << " r " << r;
       worst = std::max(worst, err);
     }
   }
@@ -319,15 +320,16 @@ TEST(Sheen, AlbedoAvgMeetsTheGoalAtTheSmallestRoughness) {
     KernelTable t = runner().albedoAvg(NDF_CHARLIE, gaf, n, false);
     for (int j = 0; j < n; ++j) EXPECT_LE(t.err[j], KernelRunner::kAvgGoalSheen) << gafNames()[gaf] << " entry " << j;
     double r = static_cast<float>(0.5 / n);
-    std::vector<double> want = testing_ref::cached(testing_ref::keyOf("sheenAlbedoAvg gl20,gl30x9 " + gafNames()[gaf], {r}), [&] {
-      std::vector<double> w = {0, 0};
-      for (int k = 0; k + 1 < 10; ++k) {
-        auto f = [&](double mu) { return 2 * mu * reference::sheenAlbedo(gaf, r, mu); };
-        w[0] += boost::math::quadrature::gauss<double, 20>::integrate(f, edges[k], edges[k + 1]);
-        w[1] += boost::math::quadrature::gauss<double, 30>::integrate(f, edges[k], edges[k + 1]);
-      }
-      return w;
-    });
+    std::vector<double> want =
+        testing_ref::cached(testing_ref::keyOf("sheenAlbedoAvg gl20,gl30x9 " + gafNames()[gaf], {r}), [&] {
+          std::vector<double> w = {0, 0};
+          for (int k = 0; k + 1 < 10; ++k) {
+            auto f = [&](double mu) { return 2 * mu * reference::sheenAlbedo(gaf, r, mu); };
+            w[0] += boost::math::quadrature::gauss<double, 20>::integrate(f, edges[k], edges[k + 1]);
+            w[1] += boost::math::quadrature::gauss<double, 30>::integrate(f, edges[k], edges[k + 1]);
+          }
+          return w;
+        });
     ASSERT_LE(rel(want[0], want[1]), 1e-8) << "the reference's two rules disagree";
     double err = rel(t.planes[0][0], want[1]);
     std::printf("%s, r = 1/64: E_avg %.9f, reference %.9f, error %.2e, bound %.2e\n", gafNames()[gaf].c_str(),
@@ -338,8 +340,8 @@ TEST(Sheen, AlbedoAvgMeetsTheGoalAtTheSmallestRoughness) {
 
 // ---- the command line ------------------------------------------------------------------------
 
-using testing_cli::CmdResult;
 using testing_cli::bytes;
+using testing_cli::CmdResult;
 using testing_cli::run;
 fs::path freshDir(const std::string& name) { return testing_cli::freshDir("sheen", name, false); }
 
@@ -396,7 +398,8 @@ TEST(SheenCli, GltfPresetWritesItsThreeTables) {
     for (int k : {0, 5 * 16 + 3, 255}) {
       double mu = (k % 16 + 0.5) / 16, rr = (k / 16 + 0.5) / 16;
       if (w.ndf == "ggx") {
-        reference::Moments m = reference::albedo(NDF_GGX, GAF_SMITH_CORRELATED, static_cast<float>(rr), static_cast<float>(mu));
+        reference::Moments m =
+            reference::albedo(NDF_GGX, GAF_SMITH_CORRELATED, static_cast<float>(rr), static_cast<float>(mu));
         EXPECT_NEAR(t.planes[0][k], m.a, kGoal);  // R = A, G = B (glTF's lut_ggx)
         EXPECT_NEAR(t.planes[1][k], m.b, kGoal);
       } else {

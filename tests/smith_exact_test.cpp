@@ -65,19 +65,19 @@ TEST(SmithExact, KernelLambdaMatchesReference) {
 TEST(SmithExact, FiniteAtTheEdges) {
   for (int ndf = 0; ndf < NDF_COUNT; ++ndf)
     if (brdfbake::pairSupported(ndf, GAF_SMITH_EXACT))
-    for (double r : {0.0, 1e-4, 0.01, 1.0})
-      for (double mu : {0.0, 1e-7, 1.0}) {
-        // ggx's closed form is 0/0 at the corner itself, which no integrator evaluates
-        // (hemisphere_texel_params moves it inside, HEMI_CORNER_R)
-        if (ndf == NDF_GGX && r == 0 && mu == 0) continue;
-        double s2 = (1 - mu) * (1 + mu);
-        brdf64::BrdfParams p = brdf64::brdf_params(ndf, GAF_SMITH_EXACT, r);
-        brdf32::BrdfParams pf = brdf32::brdf_params(ndf, GAF_SMITH_EXACT, float(r));
-        double v = brdf64::ndf_cLambda_exact(ndf, p, mu, s2);
-        float vf = brdf32::ndf_cLambda_exact(ndf, pf, float(mu), float(s2));
-        EXPECT_TRUE(std::isfinite(v) && v >= 0) << ndfName(ndf) << " r " << r << " mu " << mu << ": " << v;
-        EXPECT_TRUE(std::isfinite(vf) && vf >= 0) << ndfName(ndf) << " r " << r << " mu " << mu << ": " << vf;
-      }
+      for (double r : {0.0, 1e-4, 0.01, 1.0})
+        for (double mu : {0.0, 1e-7, 1.0}) {
+          // ggx's closed form is 0/0 at the corner itself, which no integrator evaluates
+          // (hemisphere_texel_params moves it inside, HEMI_CORNER_R)
+          if (ndf == NDF_GGX && r == 0 && mu == 0) continue;
+          double s2 = (1 - mu) * (1 + mu);
+          brdf64::BrdfParams p = brdf64::brdf_params(ndf, GAF_SMITH_EXACT, r);
+          brdf32::BrdfParams pf = brdf32::brdf_params(ndf, GAF_SMITH_EXACT, float(r));
+          double v = brdf64::ndf_cLambda_exact(ndf, p, mu, s2);
+          float vf = brdf32::ndf_cLambda_exact(ndf, pf, float(mu), float(s2));
+          EXPECT_TRUE(std::isfinite(v) && v >= 0) << ndfName(ndf) << " r " << r << " mu " << mu << ": " << v;
+          EXPECT_TRUE(std::isfinite(vf) && vf >= 0) << ndfName(ndf) << " r " << r << " mu " << mu << ": " << vf;
+        }
 }
 
 // GGX and Beckmann: the exact GAFs are smith / smith-correlated.

@@ -60,7 +60,8 @@ int compareWithExr(const std::string& exr, const std::string& other, const std::
       EXPECT_EQ(ext, ".dds") << l;  // the DDS's note: which file its metadata came from
     }
   EXPECT_EQ(a.size(), b.size()) << ext;
-  const std::regex mapping(" \\* (vec4|float4)\\([0-9.e+-]+, [0-9.e+-]+, [0-9.e+-]+, 1\\.0\\) \\+ (vec4|float4)\\([^)]*\\)");
+  const std::regex mapping(
+      " \\* (vec4|float4)\\([0-9.e+-]+, [0-9.e+-]+, [0-9.e+-]+, 1\\.0\\) \\+ (vec4|float4)\\([^)]*\\)");
   int mapped = 0;
   for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
     if (a[i] == b[i]) continue;
@@ -109,7 +110,8 @@ TEST(FormatsRead, DdsTakesItsMetadataFromTheFileBesideIt) {
   fs::copy_file(stem + ".exr", alone / "splitsum_ggx_smith-correlated.exr");
   CmdResult r = run("shader --lang hlsl '" + (alone / "splitsum_ggx_smith-correlated.dds").string() + "'");
   EXPECT_EQ(r.code, 0) << r.out;
-  EXPECT_NE(r.out.find("read from " + (alone / "splitsum_ggx_smith-correlated.exr").string()), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("read from " + (alone / "splitsum_ggx_smith-correlated.exr").string()), std::string::npos)
+      << r.out;
   // nothing beside it that holds the table: exit 65 naming what to do, -o not written
   fs::remove(alone / "splitsum_ggx_smith-correlated.exr");
   fs::copy_file(d / "albedo_ggx_smith-correlated.ktx2", alone / "splitsum_ggx_smith-correlated.ktx2");  // other texels
@@ -252,7 +254,8 @@ TEST(FormatsRead, DamagedHeadersAreCheckedBeforeTheyAreBelieved) {
     for (const std::string& cmd : {"info '" + p.string() + "'", "shader --lang glsl '" + p.string() + "'"}) {
       CmdResult r = run(cmd, "", "prlimit --as=1500000000");
       EXPECT_EQ(r.code, 65) << cmd << "\n" << r.out;
-      EXPECT_NE(r.out.find("brdfbake: cannot read " + p.string() + ": " + message), std::string::npos) << cmd << "\n" << r.out;
+      EXPECT_NE(r.out.find("brdfbake: cannot read " + p.string() + ": " + message), std::string::npos) << cmd << "\n"
+                                                                                                       << r.out;
     }
   };
   auto put = [&](const std::string& name, const std::string& content) {
@@ -271,7 +274,8 @@ TEST(FormatsRead, DamagedHeadersAreCheckedBeforeTheyAreBelieved) {
   std::string big = png;
   be32(big, 16, 16384);
   be32(big, 20, 16384);
-  be32(big, 29, static_cast<uint32_t>(crc32(0, reinterpret_cast<const Bytef*>(big.data() + 12), 17)));  // IHDR's CRC holds
+  be32(big, 29,
+       static_cast<uint32_t>(crc32(0, reinterpret_cast<const Bytef*>(big.data() + 12), 17)));  // IHDR's CRC holds
   expect(put("big.png", big), "PNG is damaged or truncated: IHDR declares 16384 x 16384");
   std::string exr = bytes(d / "kp_ggx.exr");
   const std::string window = std::string("dataWindow") + '\0' + "box2i" + '\0';

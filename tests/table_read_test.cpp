@@ -40,10 +40,13 @@ const char* kStems[] = {"splitsum_ggx_smith-correlated", "albedo_ggx_smith-corre
 
 TEST(FormatsRead, Ktx2AndDdsReadTheTexelsTheSpecificationReadersRead) {
   for (const char* precision : {"float32", "float16", "unorm16", "unorm8"}) {
-    const fs::path d = bakeInto(std::string("spec_") + precision, std::string("--table splitsum,albedo,albedo-avg --size 12 "
-                                "--format ktx2,dds --precision ") + precision);
+    const fs::path d =
+        bakeInto(std::string("spec_") + precision, std::string("--table splitsum,albedo,albedo-avg --size 12 "
+                                                               "--format ktx2,dds --precision ") +
+                                                       precision);
     for (const char* stem : kStems) {
-      const std::string k = (d / (std::string(stem) + ".ktx2")).string(), s = (d / (std::string(stem) + ".dds")).string();
+      const std::string k = (d / (std::string(stem) + ".ktx2")).string(),
+                        s = (d / (std::string(stem) + ".dds")).string();
       const ktx2check::Texture kc = ktx2check::read(k);
       const ddscheck::Texture dc = ddscheck::read(s);
       ASSERT_TRUE(kc.problems.empty() && dc.problems.empty()) << k;
@@ -57,8 +60,10 @@ TEST(FormatsRead, Ktx2AndDdsReadTheTexelsTheSpecificationReadersRead) {
       ASSERT_EQ(static_cast<int>(kf.table.planes.size()), kc.components);
       ASSERT_EQ(static_cast<int>(df.table.planes.size()), dc.components);
       for (size_t i = 0; i < kc.texels.size(); ++i) {
-        ASSERT_EQ(kf.table.planes[i % kc.components][i / kc.components], static_cast<float>(kc.texels[i])) << k << " " << i;
-        ASSERT_EQ(df.table.planes[i % dc.components][i / dc.components], static_cast<float>(dc.texels[i])) << s << " " << i;
+        ASSERT_EQ(kf.table.planes[i % kc.components][i / kc.components], static_cast<float>(kc.texels[i]))
+            << k << " " << i;
+        ASSERT_EQ(df.table.planes[i % dc.components][i / dc.components], static_cast<float>(dc.texels[i]))
+            << s << " " << i;
       }
       std::map<std::string, std::string> kv(kf.text.begin(), kf.text.end());
       EXPECT_EQ(kv, kc.kv) << k;
@@ -102,7 +107,8 @@ TEST(FormatsRead, PngAndHeaderHoldTheExrsValues) {
     ASSERT_EQ(png.table.planes.size(), exr.planes.size());
     for (size_t c = 0; c < exr.planes.size(); ++c)
       for (size_t i = 0; i < exr.planes[c].size(); ++i)
-        ASSERT_NEAR(png.table.planes[c][i], exr.planes[c][i], 0.5 / 65535 * scale + 1e-7) << stem << " " << c << " " << i;
+        ASSERT_NEAR(png.table.planes[c][i], exr.planes[c][i], 0.5 / 65535 * scale + 1e-7)
+            << stem << " " << c << " " << i;
   }
 }
 
@@ -126,7 +132,8 @@ void damage(const std::string& path, int flips) {
   };
   // every prefix through the headers (the first 160 bytes), then 100 more across the file
   const size_t step = std::max<size_t>(1, whole.size() / 100);
-  for (size_t n = 0; n < whole.size(); n += (n < 160 ? 1 : step)) attempt(whole.substr(0, n), "prefix " + std::to_string(n));
+  for (size_t n = 0; n < whole.size(); n += (n < 160 ? 1 : step))
+    attempt(whole.substr(0, n), "prefix " + std::to_string(n));
   std::mt19937 rng(12);
   for (int k = 0; k < flips; ++k) {
     std::string c = whole;
@@ -159,7 +166,8 @@ void mutate(const std::string& path, int randomTries) {
       std::ofstream out(probe, std::ios::binary | std::ios::trunc);
       out << content;
     }
-    struct rusage before {}, after {};
+    struct rusage before {
+    }, after{};
     getrusage(RUSAGE_SELF, &before);
     try {
       readTableFile(probe);
@@ -217,7 +225,8 @@ TEST(FormatsRead, MutatedRealFilesAreReadOrRefused) {
     mutate((d / (std::string("splitsum_ggx_smith-correlated") + ext)).string(), 400);
     mutate((d / (std::string("kp_ggx") + ext)).string(), 100);
   }
-  const fs::path v = bakeInto("mutate3d", "--table brdf3d --size 6,5,4 --format exr,ktx2,dds,header --precision float16");
+  const fs::path v =
+      bakeInto("mutate3d", "--table brdf3d --size 6,5,4 --format exr,ktx2,dds,header --precision float16");
   for (const char* ext : {".exr", ".ktx2", ".dds", ".h"})
     mutate((v / (std::string("brdf3d_ggx_smith-correlated_angles") + ext)).string(), 200);
 }

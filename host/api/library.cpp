@@ -73,7 +73,8 @@ std::vector<Table> bake(const BakeRequest& req) {
     ctx.working(j.path);
     out.push_back(toTable(j, j.family->compute(ctx, j)));
     if (plan.observer)
-      plan.observer->stage("table", j.path, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      plan.observer->stage("table", j.path,
+                           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   return out;
 }

@@ -61,13 +61,16 @@ std::string buildHow(const std::vector<KernelRunner::ProgramEvent>& events) {
   for (const auto& e : events) (e.loaded ? loaded : e.stored ? stored : lost)++;
   auto programs = [](int n) { return n == 1 ? std::string("1 program") : std::to_string(n) + " programs"; };
   std::string s;
-  if (loaded) s += loaded == 1 ? "1 program loaded from its kept binary"
-                               : std::to_string(loaded) + " programs loaded from their kept binaries";
+  if (loaded)
+    s += loaded == 1 ? "1 program loaded from its kept binary"
+                     : std::to_string(loaded) + " programs loaded from their kept binaries";
   if (stored)
-    s += (s.empty() ? "" : ", ") + programs(stored) + " compiled (" + (stored == 1 ? "its binary is" : "their binaries are") +
-         " kept: the next bake loads " + (stored == 1 ? "it" : "them") + ")";
+    s += (s.empty() ? "" : ", ") + programs(stored) + " compiled (" +
+         (stored == 1 ? "its binary is" : "their binaries are") + " kept: the next bake loads " +
+         (stored == 1 ? "it" : "them") + ")";
   if (lost)
-    s += (s.empty() ? "" : ", ") + programs(lost) + " compiled (" + (lost == 1 ? "its binary was" : "their binaries were") +
+    s += (s.empty() ? "" : ", ") + programs(lost) + " compiled (" +
+         (lost == 1 ? "its binary was" : "their binaries were") +
          " not kept: --timings says why; the next bake compiles again)";
   return s;
 }
@@ -80,7 +83,8 @@ std::vector<TableReport> runPlan(const Plan& plan) {
   if (plan.jobs.size() > static_cast<size_t>(kMaxFilesPerSet))
     throw Error(kExitUsage, "too many files for one set: " + std::to_string(plan.jobs.size()) +
                                 " tables write at least as many files, and at most " + std::to_string(kMaxFilesPerSet) +
-                                " land together; " + (plan.shardHint.empty() ? "ask for fewer tables per run" : plan.shardHint));
+                                " land together; " +
+                                (plan.shardHint.empty() ? "ask for fewer tables per run" : plan.shardHint));
   checkOutputDir(plan.outDir);
   BakeContext ctx(plan.device, plan.observer);
   ctx.reuseLaunches();

@@ -19,14 +19,14 @@ std::string formatReport(const std::vector<TableReport>& reports) {
   }
   std::string s;
   char line[1024];
-  std::snprintf(line, sizeof line, "%-*s  %-*s  %9s  %9s  %7s\n", int(wf), "file", int(wt), "table", "size", "max error",
-                "seconds");
+  std::snprintf(line, sizeof line, "%-*s  %-*s  %9s  %9s  %7s\n", int(wf), "file", int(wt), "table", "size",
+                "max error", "seconds");
   s += line;
   for (const auto& r : reports) {
-    std::string size = std::to_string(r.width) + "x" + std::to_string(r.height) +
-                       (r.depth > 1 ? "x" + std::to_string(r.depth) : "");
-    std::snprintf(line, sizeof line, "%-*s  %-*s  %9s  %9.2e  %7.3f\n", int(wf), r.path.c_str(), int(wt), r.table.c_str(),
-                  size.c_str(), r.errorBound, r.seconds);
+    std::string size =
+        std::to_string(r.width) + "x" + std::to_string(r.height) + (r.depth > 1 ? "x" + std::to_string(r.depth) : "");
+    std::snprintf(line, sizeof line, "%-*s  %-*s  %9s  %9.2e  %7.3f\n", int(wf), r.path.c_str(), int(wt),
+                  r.table.c_str(), size.c_str(), r.errorBound, r.seconds);
     s += line;
   }
   // what the user also waited for: the seconds column is each table's own kernel time
@@ -50,7 +50,8 @@ std::string energyWarnings(const TableImage& t) {
   for (const auto& p : t.planes)
     for (float v : p) bad += !std::isfinite(v);
   if (bad)
-    return "warning: " + std::to_string(bad) + " texel value(s) are not finite (NaN or Inf): brdfbake never writes one; "
+    return "warning: " + std::to_string(bad) +
+           " texel value(s) are not finite (NaN or Inf): brdfbake never writes one; "
            "the file is damaged or was not written by brdfbake\n";
   // the energy quantity and its channel, as the kind's family describes them (E = A + B in the
   // split sum's B, E in the albedo's R, ...)
@@ -73,8 +74,9 @@ std::string energyWarnings(const TableImage& t) {
       if (!str("brdf.diffuse").empty() && kind->shader == ShaderLookup::Value) {  // a diffuse model's albedo
         std::string d = str("brdf.diffuse");
         std::string why = d == "burley" ? " (a known property of Burley's model: rough surfaces at grazing angles)"
-                          : d == "oren-nayar" ? " (a property of the qualitative model's A and B: E(0) = A + B/2 > 1 for small sigma)"
-                                              : " (an erratum of the source documents, kept on purpose)";
+                          : d == "oren-nayar"
+                              ? " (a property of the qualitative model's A and B: E(0) = A + B/2 > 1 for small sigma)"
+                              : " (an erratum of the source documents, kept on purpose)";
         return "warning: " + name + " exceeds 1 (max " + b + "): the " + d + " diffuse model does not conserve energy" +
                why + "; see docs/MODELS.md, \"Diffuse models\"\n";
       }
@@ -82,12 +84,13 @@ std::string energyWarnings(const TableImage& t) {
         return "warning: " + name + " exceeds 1 (max " + b + ") at grazing views of smooth sheens: charlie with " +
                str("brdf.gaf") +
                (str("brdf.gaf") == "charlie-smith" ? " (a fitted Lambda, finite at grazing: G/(n.o) grows as mu -> 0)"
-                                                    : " (no masking: E(0, r) grows like 1/r)") +
+                                                   : " (no masking: E(0, r) grows like 1/r)") +
                " does not conserve energy there; clamp 1 - E in albedo scaling; see docs/MODELS.md, \"Sheen\"\n";
       return "warning: " + name + " exceeds 1 (max " + b + "): a single-scattering albedo cannot; " + str("brdf.ndf") +
              " with " + str("brdf.gaf") +
              (str("brdf.gaf") == "none" ? " (G = 1, albedo ~ 1/mu at grazing)"
-                                        : " (a Lambda borrowed from Beckmann, not the NDF's own; " + str("brdf.gaf") + "-exact has the exact one)") +
+                                        : " (a Lambda borrowed from Beckmann, not the NDF's own; " + str("brdf.gaf") +
+                                              "-exact has the exact one)") +
              " does not conserve energy; see docs/MODELS.md, \"Tables that exceed 1\"\n";
     }
   }

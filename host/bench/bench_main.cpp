@@ -29,7 +29,8 @@ using namespace brdfbake;
 using namespace brdfbake::bench;
 
 namespace {
-const char* const kUsage = R"(usage: brdfbake-bench [--size N] [--samples S] [--stride K] [--repeat R] [--device TEXT] [--times-only]
+const char* const kUsage =
+    R"(usage: brdfbake-bench [--size N] [--samples S] [--stride K] [--repeat R] [--device TEXT] [--times-only]
                       [--pair NDF+GAF]... [--all-pairs] [--albedo-avg] [--cold-start [--skip-all]] [--materials]
                       [--dielectric [--mc-log2 K]] [--dielectric-avg [--size N] [--pair NDF+GAF]]
                       [--merl FILE [--size N]] [--commit]
@@ -85,17 +86,18 @@ const char* const kUsage = R"(usage: brdfbake-bench [--size N] [--samples S] [--
 
 namespace brdfbake {
 int materialsBench(KernelRunner& runner, int samples, int repeat, int stride);  // materials_bench.cpp
-int volumeBench(KernelRunner& runner, int repeat, int bigSize);  // volume_bench.cpp
-int dielectricBench(KernelRunner& runner, int samplesLog2);     // dielectric_bench.cpp
-int dielectricAvgBench(KernelRunner& runner, int n, int ndf, int gaf);  // dielectric_bench.cpp
-int merlBench(const std::string& file, int size);                       // merl_bench.cpp
-int commitBench(const std::string& device, int repeat);                 // commit_bench.cpp
-int allPairs(const std::string& device, int n, int stride, const std::vector<std::pair<int, int>>& only);  // pairs_bench.cpp
+int volumeBench(KernelRunner& runner, int repeat, int bigSize);                 // volume_bench.cpp
+int dielectricBench(KernelRunner& runner, int samplesLog2);                     // dielectric_bench.cpp
+int dielectricAvgBench(KernelRunner& runner, int n, int ndf, int gaf);          // dielectric_bench.cpp
+int merlBench(const std::string& file, int size);                               // merl_bench.cpp
+int commitBench(const std::string& device, int repeat);                         // commit_bench.cpp
+int allPairs(const std::string& device, int n, int stride,
+             const std::vector<std::pair<int, int>>& only);                                     // pairs_bench.cpp
 int probeSpanBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& only, int n);  // probe_bench.cpp
-int coldStart(const std::string& device, int samples, int repeat, bool skipAll);  // cold_start_bench.cpp
+int coldStart(const std::string& device, int samples, int repeat, bool skipAll);                // cold_start_bench.cpp
 int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pairs, int size, int stride,
                 const std::string& csv);  // bounds_bench.cpp
-}
+}  // namespace brdfbake
 
 namespace {
 // albedo-avg against albedo (ggx + smith-correlated, size 32), best of `repeat`, interleaved.
@@ -133,7 +135,9 @@ int albedoAvgCheck(KernelRunner& runner, int stride, int repeat) {
       };
       std::vector<Point> pts;
       // each value's claim as the bake makes it (tables/error_model.h)
-      auto claim = [&](const KernelTable& k, int j) { return k.err[j] + avgFloatArithmeticError(k.planes[0][j], ndf, gaf); };
+      auto claim = [&](const KernelTable& k, int j) {
+        return k.err[j] + avgFloatArithmeticError(k.planes[0][j], ndf, gaf);
+      };
       for (int j : rows) pts.push_back({(j + 0.5) / n, t.planes[0][j], claim(t, j)});
       for (int j = 0; j < 3; ++j) pts.push_back({j / 2.0, tn.planes[0][j], claim(tn, j)});
       std::vector<double> err(pts.size());
@@ -153,8 +157,9 @@ int albedoAvgCheck(KernelRunner& runner, int stride, int repeat) {
                   bad);
       std::fflush(stdout);
     }
-  std::printf("all pairs: largest error %.2e, largest claim %.2e (estimate + float model), %d values over their claim\n",
-              all, allBound, over);
+  std::printf(
+      "all pairs: largest error %.2e, largest claim %.2e (estimate + float model), %d values over their claim\n", all,
+      allBound, over);
   return over == 0 && allBound <= 1e-5 ? 0 : 1;
 }
 }  // namespace
@@ -178,27 +183,50 @@ int main(int argc, char** argv) {
       return 0;
     }
     auto next = [&]() -> std::string {
-      if (i + 1 >= argc) { std::fprintf(stderr, "%s: missing value\n", a.c_str()); std::exit(64); }
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "%s: missing value\n", a.c_str());
+        std::exit(64);
+      }
       return argv[++i];
     };
-    if (a == "--size") { n = std::atoi(next().c_str()); sizeSet = true; }
-    else if (a == "--samples") samples = std::atoi(next().c_str());
-    else if (a == "--stride") { stride = std::atoi(next().c_str()); strideSet = true; }
-    else if (a == "--repeat") repeat = std::atoi(next().c_str());
-    else if (a == "--device") device = next();
-    else if (a == "--times-only") timesOnly = true;
-    else if (a == "--all-pairs") everyPair = true;
-    else if (a == "--albedo-avg") avgCheck = true;
-    else if (a == "--cold-start") cold = true;
-    else if (a == "--materials") materials = true;
-    else if (a == "--volume") volume = true;
-    else if (a == "--dielectric") dielectric = true;
-    else if (a == "--dielectric-avg") dielectricAvg = true;
-    else if (a == "--bounds") bounds = true;
-    else if (a == "--probe-span") probeSpan = true;
-    else if (a == "--merl") merlFile = next();
-    else if (a == "--commit") commit = true;
-    else if (a == "--csv") csv = next();
+    if (a == "--size") {
+      n = std::atoi(next().c_str());
+      sizeSet = true;
+    } else if (a == "--samples")
+      samples = std::atoi(next().c_str());
+    else if (a == "--stride") {
+      stride = std::atoi(next().c_str());
+      strideSet = true;
+    } else if (a == "--repeat")
+      repeat = std::atoi(next().c_str());
+    else if (a == "--device")
+      device = next();
+    else if (a == "--times-only")
+      timesOnly = true;
+    else if (a == "--all-pairs")
+      everyPair = true;
+    else if (a == "--albedo-avg")
+      avgCheck = true;
+    else if (a == "--cold-start")
+      cold = true;
+    else if (a == "--materials")
+      materials = true;
+    else if (a == "--volume")
+      volume = true;
+    else if (a == "--dielectric")
+      dielectric = true;
+    else if (a == "--dielectric-avg")
+      dielectricAvg = true;
+    else if (a == "--bounds")
+      bounds = true;
+    else if (a == "--probe-span")
+      probeSpan = true;
+    else if (a == "--merl")
+      merlFile = next();
+    else if (a == "--commit")
+      commit = true;
+    else if (a == "--csv")
+      csv = next();
     else if (a == "--pair") {
       std::string v = next();
       size_t plus = v.find('+');
@@ -211,13 +239,21 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "brdfbake-bench: %s\n", e.what());
         return 64;
       }
+    } else if (a == "--mc-log2")
+      mcLog2 = std::atoi(next().c_str());
+    else if (a == "--volume-size")
+      volumeSize = std::atoi(next().c_str());
+    else if (a == "--skip-all")
+      skipAll = true;
+    else {
+      std::fprintf(stderr, "brdfbake-bench: unknown option %s (brdfbake-bench --help lists them)\n", a.c_str());
+      return 64;
     }
-    else if (a == "--mc-log2") mcLog2 = std::atoi(next().c_str());
-    else if (a == "--volume-size") volumeSize = std::atoi(next().c_str());
-    else if (a == "--skip-all") skipAll = true;
-    else { std::fprintf(stderr, "brdfbake-bench: unknown option %s (brdfbake-bench --help lists them)\n", a.c_str()); return 64; }
   }
-  if (n < 1 || samples < 1 || stride < 1 || repeat < 1) { std::fprintf(stderr, "arguments must be >= 1\n"); return 64; }
+  if (n < 1 || samples < 1 || stride < 1 || repeat < 1) {
+    std::fprintf(stderr, "arguments must be >= 1\n");
+    return 64;
+  }
   try {
     if (cold) return coldStart(device, samples, repeat, skipAll);
     if (commit) return commitBench(device, std::max(repeat, 21));
@@ -225,7 +261,8 @@ int main(int argc, char** argv) {
     if (everyPair) {
       for (const auto& pr : pairs)
         if (isSheenNdf(pr.first))
-          throw Error(kExitUsage, "--all-pairs --pair: charlie's pairs have their own reference (tests/sheen_test.cpp)");
+          throw Error(kExitUsage,
+                      "--all-pairs --pair: charlie's pairs have their own reference (tests/sheen_test.cpp)");
       return allPairs(device, n, stride, pairs);
     }
     DeviceEntry dev = selectDevice(device);
@@ -234,21 +271,28 @@ int main(int argc, char** argv) {
     if (materials) return materialsBench(runner, samples, repeat, strideSet ? stride : 4);
     if (bounds) {
       if (pairs.empty())
-        pairs = {{NDF_GGX, GAF_SMITH_CORRELATED}, {NDF_BECKMANN, GAF_SMITH}, {NDF_GGX, GAF_SCHLICK_GGX},
-                 {NDF_BLINN_PHONG, GAF_IMPLICIT}, {NDF_GAUSSIAN, GAF_SMITH_CORRELATED_EXACT}};
+        pairs = {{NDF_GGX, GAF_SMITH_CORRELATED},
+                 {NDF_BECKMANN, GAF_SMITH},
+                 {NDF_GGX, GAF_SCHLICK_GGX},
+                 {NDF_BLINN_PHONG, GAF_IMPLICIT},
+                 {NDF_GAUSSIAN, GAF_SMITH_CORRELATED_EXACT}};
       return boundsBench(runner, pairs, n, stride, csv);
     }
     if (probeSpan) return probeSpanBench(runner, pairs, n);
     if (dielectric) return dielectricBench(runner, std::max(1, std::min(mcLog2, 24)));
     if (dielectricAvg) {
-      const int nd = pairs.empty() ? NDF_GGX : pairs[0].first, gf = pairs.empty() ? GAF_SMITH_CORRELATED : pairs[0].second;
+      const int nd = pairs.empty() ? NDF_GGX : pairs[0].first,
+                gf = pairs.empty() ? GAF_SMITH_CORRELATED : pairs[0].second;
       if ((nd != NDF_GGX && nd != NDF_BECKMANN) || (gf != GAF_SMITH && gf != GAF_SMITH_CORRELATED))
-        throw Error(kExitUsage, "--dielectric-avg --pair: the rough dielectric takes ggx or beckmann with smith or smith-correlated");
+        throw Error(
+            kExitUsage,
+            "--dielectric-avg --pair: the rough dielectric takes ggx or beckmann with smith or smith-correlated");
       return dielectricAvgBench(runner, sizeSet ? n : 8, nd, gf);
     }
     if (volume) return volumeBench(runner, repeat, std::max(1, std::min(volumeSize, 1024)));
     // the split sum of the first --pair (ggx + smith-correlated by default) against Karis's MC
-    const int ndf = pairs.empty() ? NDF_GGX : pairs[0].first, gaf = pairs.empty() ? GAF_SMITH_CORRELATED : pairs[0].second;
+    const int ndf = pairs.empty() ? NDF_GGX : pairs[0].first,
+              gaf = pairs.empty() ? GAF_SMITH_CORRELATED : pairs[0].second;
     const std::string pairName = ndfNames()[ndf] + " + " + gafNames()[gaf];
     runner.hemisphere(ndf, gaf, 1, 1, false);  // builds the program: not part of the timing
 
@@ -282,9 +326,10 @@ int main(int argc, char** argv) {
     double tn = seconds(t0);
     if (timesOnly) {
       std::printf("split-sum %dx%d, %s, device: %s (errors skipped)\n", n, n, pairName.c_str(), dev.name.c_str());
-      std::printf("brdfbake quadrature (OpenCL) %.4f s, Karis MC %d spp (C++, 2 threads) %.4f s, "
-                  "native 1 thread %.4f s (%d texels refined); time ratio quadrature/MC: %.2f\n",
-                  tq, samples, tm, tn, refined, tq / tm);
+      std::printf(
+          "brdfbake quadrature (OpenCL) %.4f s, Karis MC %d spp (C++, 2 threads) %.4f s, "
+          "native 1 thread %.4f s (%d texels refined); time ratio quadrature/MC: %.2f\n",
+          tq, samples, tm, tn, refined, tq / tm);
       return 0;
     }
 
@@ -309,15 +354,18 @@ int main(int argc, char** argv) {
     double maxBound = *std::max_element(bound.begin(), bound.end());
 
     std::printf("split-sum %dx%d, %s, device: %s\n", n, n, pairName.c_str(), dev.name.c_str());
-    std::printf("errors measured on %zu texels (stride %d + edges) against adaptive GK in double\n", texels.size(), stride);
+    std::printf("errors measured on %zu texels (stride %d + edges) against adaptive GK in double\n", texels.size(),
+                stride);
     std::printf("%-34s %10s %12s %12s\n", "method", "seconds", "max error", "kernel bound");
     std::printf("%-34s %10.4f %12.2e %12.2e\n", "brdfbake quadrature (OpenCL)", tq, maxQ, maxBound);
     char name[64];
     std::snprintf(name, sizeof name, "Karis MC %d spp (C++, 2 threads)", samples);
     // Karis's estimator is ggx + smith-correlated's: for another pair it is a time baseline only
     const bool mcSamePair = ndf == NDF_GGX && gaf == GAF_SMITH_CORRELATED;
-    if (mcSamePair) std::printf("%-34s %10.4f %12.2e %12s   (rms %.2e)\n", name, tm, maxM, "-", rmsM);
-    else std::printf("%-34s %10.4f %12s %12s   (ggx + smith-correlated: a time baseline here)\n", name, tm, "-", "-");
+    if (mcSamePair)
+      std::printf("%-34s %10.4f %12.2e %12s   (rms %.2e)\n", name, tm, maxM, "-", rmsM);
+    else
+      std::printf("%-34s %10.4f %12s %12s   (ggx + smith-correlated: a time baseline here)\n", name, tm, "-", "-");
     std::printf("%-34s %10.4f   (same estimator, host C++, 1 thread; %d of %d texels refined)\n",
                 "brdfbake quadrature (native)", tn, refined, n * n);
     std::printf("time ratio quadrature/MC: %.2f", tq / tm);

@@ -19,7 +19,8 @@ inline std::vector<std::pair<int, int>> sampledTexels(int n, int stride) {
   std::vector<std::pair<int, int>> texels;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
-      if ((i % stride == 0 && j % stride == 0) || i == 0 || j == 0 || i == n - 1 || j == n - 1) texels.push_back({i, j});
+      if ((i % stride == 0 && j % stride == 0) || i == 0 || j == 0 || i == n - 1 || j == n - 1)
+        texels.push_back({i, j});
   return texels;
 }
 

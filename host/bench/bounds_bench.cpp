@@ -82,7 +82,8 @@ TableRow measure(KernelRunner& runner, TableKind kind, int ndf, int gaf, int n, 
   row.claimed = img.floats["brdf.error"];
   const bool twoD = job.height > 1;
   std::vector<std::pair<int, int>> texels;
-  if (twoD) texels = bench::sampledTexels(n, stride);
+  if (twoD)
+    texels = bench::sampledTexels(n, stride);
   else
     for (int i = 0; i < n; ++i) texels.push_back({i, 0});
   row.texels.resize(texels.size());
@@ -142,11 +143,12 @@ int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pa
                 const std::string& csv) {
   std::vector<TableRow> rows;
   std::vector<int> kpDone;
-  std::printf("claimed bounds against true errors (reference: adaptive GK in double); split-sum %dx%d on every "
-              "%d-th texel + edges, albedo 32x32 likewise, albedo-avg and k_p (32) on every entry\n",
-              size, size, stride);
-  std::printf("%-34s %-10s %9s %9s %7s | %7s %7s %5s | %9s %9s %9s\n", "pair", "table", "claimed", "true max",
-              "ratio", "tx min", "tx med", "over", "max flt", "max quad", "max qbnd");
+  std::printf(
+      "claimed bounds against true errors (reference: adaptive GK in double); split-sum %dx%d on every "
+      "%d-th texel + edges, albedo 32x32 likewise, albedo-avg and k_p (32) on every entry\n",
+      size, size, stride);
+  std::printf("%-34s %-10s %9s %9s %7s | %7s %7s %5s | %9s %9s %9s\n", "pair", "table", "claimed", "true max", "ratio",
+              "tx min", "tx med", "over", "max flt", "max quad", "max qbnd");
   int over = 0;
   for (auto [ndf, gaf] : pairs) {
     std::vector<std::pair<TableKind, int>> kinds = {
@@ -156,7 +158,8 @@ int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pa
       kpDone.push_back(ndf);
     }
     for (auto [kind, n] : kinds) {
-      TableRow row = measure(runner, kind, ndf, gaf, n, kind == TableKind::SplitSum || kind == TableKind::Albedo ? stride : 1);
+      TableRow row =
+          measure(runner, kind, ndf, gaf, n, kind == TableKind::SplitSum || kind == TableKind::Albedo ? stride : 1);
       double worst = 0, maxFlt = -1, maxQuad = -1, maxQb = -1;
       std::vector<double> ratios;
       int bad = 0;
@@ -175,8 +178,10 @@ int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pa
       over += bad;
       auto part = [](double v) {
         char b[16];
-        if (v < 0) std::snprintf(b, sizeof b, "%9s", "-");
-        else std::snprintf(b, sizeof b, "%9.2e", v);
+        if (v < 0)
+          std::snprintf(b, sizeof b, "%9s", "-");
+        else
+          std::snprintf(b, sizeof b, "%9.2e", v);
         return std::string(b);
       };
       std::printf("%-34s %-10s %9.2e %9.2e %7.1f | %7.2f %7.1f %5d | %s %s %s\n", row.pair.c_str(), row.table.c_str(),
@@ -186,9 +191,10 @@ int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pa
       rows.push_back(std::move(row));
     }
   }
-  std::printf("ratio: brdf.error / largest true error; tx min, tx med: per-texel claim / true error (smallest, "
-              "median); over: texels whose true error exceeds their claim; max flt: |device - same rule in "
-              "double|; max quad: |rule in double - reference|; max qbnd: the rule's own bound in double\n");
+  std::printf(
+      "ratio: brdf.error / largest true error; tx min, tx med: per-texel claim / true error (smallest, "
+      "median); over: texels whose true error exceeds their claim; max flt: |device - same rule in "
+      "double|; max quad: |rule in double - reference|; max qbnd: the rule's own bound in double\n");
   std::printf("%d texels over their claimed bound\n", over);
   if (!csv.empty()) {
     FILE* f = std::fopen(csv.c_str(), "w");
@@ -197,7 +203,8 @@ int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pa
     for (const TableRow& row : rows)
       for (const TexelRow& t : row.texels)
         std::fprintf(f, "%s,%s,%.9g,%d,%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", row.pair.c_str(),
-                     row.table.c_str(), row.claimed, t.i, t.j, t.mu, t.r, t.value, t.claim, t.truth, t.flt, t.quad, t.quadBound);
+                     row.table.c_str(), row.claimed, t.i, t.j, t.mu, t.r, t.value, t.claim, t.truth, t.flt, t.quad,
+                     t.quadBound);
     std::fclose(f);
     std::printf("per-texel rows: %s\n", csv.c_str());
   }

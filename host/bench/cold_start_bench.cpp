@@ -80,8 +80,10 @@ int coldStart(const std::string& device, int samples, int repeat, bool skipAll) 
   if (access(exe.c_str(), X_OK) != 0) throw Error(kExitUnavailable, exe + ": not found (build the brdfbake target)");
   // the baseline, in this process
   double tm = best(repeat, [&] { karisSplitSumMC(128, samples, 2); });
-  std::printf("%s bake, %d rounds, each with HOME a fresh empty directory: its first run (cold: empty PoCL and "
-              "program caches), then a warm run; the best of each\n", exe.c_str(), repeat);
+  std::printf(
+      "%s bake, %d rounds, each with HOME a fresh empty directory: its first run (cold: empty PoCL and "
+      "program caches), then a warm run; the best of each\n",
+      exe.c_str(), repeat);
   std::printf("baseline: Karis MC %d spp split-sum 128x128 (C++, 2 threads) %.4f s\n", samples, tm);
   std::printf("%-46s %9s %8s %8s\n", "what", "seconds", "/ MC", "/ warm");
   // every pair: the four microfacet NDFs with every GAF but the sheen ones, and charlie with its four

@@ -97,7 +97,9 @@ int dielectricBench(KernelRunner& runner, int samplesLog2) {
     for (int y : pick)
       for (int x : pick) cells.push_back({x, y, z, (x + 0.5) / n, (y + 0.5) / n, etas[z], 0, 0, 0, 0});
   t0 = std::chrono::steady_clock::now();
-  bench::onTwoThreads(cells.size(), [&](size_t k) { monteCarlo(cells[k].mu, cells[k].r, cells[k].eta, samples, &cells[k].mcR, &cells[k].mcT); });
+  bench::onTwoThreads(cells.size(), [&](size_t k) {
+    monteCarlo(cells[k].mu, cells[k].r, cells[k].eta, samples, &cells[k].mcR, &cells[k].mcT);
+  });
   double tMc = bench::seconds(t0);
   bench::onTwoThreads(cells.size(), [&](size_t k) {
     auto ref = reference::dielectricAlbedo(ndf, gaf, cells[k].mu, cells[k].r, cells[k].eta);
@@ -118,17 +120,20 @@ int dielectricBench(KernelRunner& runner, int samplesLog2) {
     mcMax = std::max(mcMax, me);
     tabSq += te * te;
     mcSq += me * me;
-    std::printf("%4d %4d %4d %7.4f %6.4f %7.4f | %11.8f %11.8f | %9.2e %9.2e | %9.2e %9.1f\n", c.x, c.y, c.z, c.mu,
-                c.r, c.eta, c.refR, c.refT, te, table[2][k], me, me / std::max(te, 1e-12));
+    std::printf("%4d %4d %4d %7.4f %6.4f %7.4f | %11.8f %11.8f | %9.2e %9.2e | %9.2e %9.1f\n", c.x, c.y, c.z, c.mu, c.r,
+                c.eta, c.refR, c.refT, te, table[2][k], me, me / std::max(te, 1e-12));
   }
   double cellsAll = static_cast<double>(n) * n * n, nc = static_cast<double>(cells.size());
-  std::printf("table (device, double, adaptive): %.2f s for %d cells (%.3f ms/cell); error against the reference max "
-              "%.2e rms %.2e on the %zu cells; largest bound of the table %.2e\n",
-              tTable, n * n * n, 1e3 * tTable / cellsAll, tabMax, std::sqrt(tabSq / nc), cells.size(), maxBound);
-  std::printf("Monte Carlo (host, 2 threads, 2^%d samples per cell): %.2f s for %zu cells -> %.0f s for the whole "
-              "table (scaled); error max %.2e rms %.2e\n",
-              samplesLog2, tMc, cells.size(), tMc * cellsAll / nc, mcMax, std::sqrt(mcSq / nc));
-  std::printf("table / MC: %.1fx faster, %.0fx smaller max error\n", tMc * cellsAll / nc / tTable, mcMax / std::max(tabMax, 1e-12));
+  std::printf(
+      "table (device, double, adaptive): %.2f s for %d cells (%.3f ms/cell); error against the reference max "
+      "%.2e rms %.2e on the %zu cells; largest bound of the table %.2e\n",
+      tTable, n * n * n, 1e3 * tTable / cellsAll, tabMax, std::sqrt(tabSq / nc), cells.size(), maxBound);
+  std::printf(
+      "Monte Carlo (host, 2 threads, 2^%d samples per cell): %.2f s for %zu cells -> %.0f s for the whole "
+      "table (scaled); error max %.2e rms %.2e\n",
+      samplesLog2, tMc, cells.size(), tMc * cellsAll / nc, mcMax, std::sqrt(mcSq / nc));
+  std::printf("table / MC: %.1fx faster, %.0fx smaller max error\n", tMc * cellsAll / nc / tTable,
+              mcMax / std::max(tabMax, 1e-12));
   return tabMax <= maxBound + 1e-6 ? 0 : 1;
 }
 
@@ -181,12 +186,15 @@ int dielectricAvgBench(KernelRunner& runner, int n, int ndf, int gaf) {
   const char* names[3] = {"E_R,avg", "E_T,avg", "E_R,avg + E_T,avg"};
   std::printf("dielectric-avg %dx%d, %s + %s, eta in [%.1f, %.1f] uniform in s\n", n, n, ndfNames()[ndf].c_str(),
               gafNames()[gaf].c_str(), job.etaLo, job.etaHi);
-  std::printf("bake (as brdfbake bakes it): %.1f s, %lld E(mu) evaluations; reference (the same rule, tight): %.1f s, "
-              "its largest bound %.2e\n", tBake, table.nodes, tRef, refBound);
-  std::printf("largest error of a stored value %.3e (%s at r %.4f, eta %.4f); brdf.error %.3e (quadrature %.3e): "
-              "claim / error %.2f; values over the claim: %d\n",
-              worst, names[channel], rs[at], es[at], claim, img.floats.at("brdf.error.quadrature"),
-              claim / std::max(worst, 1e-300), over);
+  std::printf(
+      "bake (as brdfbake bakes it): %.1f s, %lld E(mu) evaluations; reference (the same rule, tight): %.1f s, "
+      "its largest bound %.2e\n",
+      tBake, table.nodes, tRef, refBound);
+  std::printf(
+      "largest error of a stored value %.3e (%s at r %.4f, eta %.4f); brdf.error %.3e (quadrature %.3e): "
+      "claim / error %.2f; values over the claim: %d\n",
+      worst, names[channel], rs[at], es[at], claim, img.floats.at("brdf.error.quadrature"),
+      claim / std::max(worst, 1e-300), over);
   return worst <= claim + refBound ? 0 : 1;
 }
 

@@ -35,7 +35,7 @@ constexpr double kAllowance = 1e-6;  // host/bake: float arithmetic on the devic
 
 struct Case {
   std::string name;
-  std::function<KernelTable()> kernel;                   // E in planes[plane]
+  std::function<KernelTable()> kernel;  // E in planes[plane]
   int plane;
   std::function<std::vector<float>()> mc;                // n*n E
   std::function<double(double mu, double p)> reference;  // at texel centres
@@ -89,9 +89,7 @@ int materialsBench(KernelRunner& runner, int samples, int repeat, int stride) {
   const double halfPi = 1.57079632679489661923;
   auto dielectric = [&](const char* name, double eta) {
     HemiWeight w{HEMI_FRESNEL, FRESNEL_DIELECTRIC, static_cast<float>(eta), 0};
-    return Case{name,
-                [&runner, w] { return runner.hemisphere(kNdf, kGaf, kN, kN, false, w); },
-                1,
+    return Case{name, [&runner, w] { return runner.hemisphere(kNdf, kGaf, kN, kN, false, w); }, 1,
                 [eta, samples] { return dielectricAlbedoMC(kN, static_cast<float>(eta), samples, 2); },
                 // the reference at the eta the kernel was given (a float): near the critical angle
                 // E_F moves by ~10 times a change of eta, so the double 1/1.5 differs from the float
@@ -101,9 +99,7 @@ int materialsBench(KernelRunner& runner, int samples, int repeat, int stride) {
                   reference::Weight rw{reference::Weight::Fresnel, {FRESNEL_DIELECTRIC, etaK, 0}};
                   return reference::albedo(kNdf, kGaf, r, mu, rw).b;
                 },
-                0.0,
-                1.0,
-                stride};
+                0.0, 1.0, stride};
   };
   auto diffuse = [&](const char* name, int model, double lo, double hi) {
     return Case{name,
@@ -130,13 +126,19 @@ int materialsBench(KernelRunner& runner, int samples, int repeat, int stride) {
   runner.hemisphere(kNdf, kGaf, 1, 1, false, HemiWeight{HEMI_FRESNEL, FRESNEL_DIELECTRIC, 1.5f, 0});
   runner.diffuseAlbedo(DIFFUSE_BURLEY, 1, 1, 0.0f, 1.0f, false);
 
-  std::printf("%dx%d texel-centre albedo tables: brdfbake kernel (OpenCL) vs Monte Carlo %d spp (Hammersley, "
-              "C++ float, 2 threads), best of %d, interleaved\n", kN, kN, samples, repeat);
-  std::printf("dielectric: ggx + smith-correlated, errors on every %d-th texel per axis + edges; diffuse: every "
-              "texel (stride %d)\n", stride, 1);
-  std::printf("errors relative to max(1, |E|) against the host reference (adaptive GK, double, 2 threads); "
-              "bound: the kernel's largest claimed bound over the whole table; within: every sampled kernel "
-              "error <= its bound + %.0e\n", kAllowance);
+  std::printf(
+      "%dx%d texel-centre albedo tables: brdfbake kernel (OpenCL) vs Monte Carlo %d spp (Hammersley, "
+      "C++ float, 2 threads), best of %d, interleaved\n",
+      kN, kN, samples, repeat);
+  std::printf(
+      "dielectric: ggx + smith-correlated, errors on every %d-th texel per axis + edges; diffuse: every "
+      "texel (stride %d)\n",
+      stride, 1);
+  std::printf(
+      "errors relative to max(1, |E|) against the host reference (adaptive GK, double, 2 threads); "
+      "bound: the kernel's largest claimed bound over the whole table; within: every sampled kernel "
+      "error <= its bound + %.0e\n",
+      kAllowance);
   std::printf("%-34s %9s %9s %7s %11s %11s %-9s %11s %6s %7s\n", "table", "kernel s", "MC s", "k/MC", "kernel err",
               "bound", "within", "MC err", "texels", "ref s");
   int over = 0;

@@ -47,7 +47,8 @@ int merlBench(const std::string& file, int size) {
   for (int c = 0; c < 3; ++c)
     worstAvg = std::max(worstAvg, std::fabs(double(avg.planes[c][0]) - q[c]) / std::max(1.0, std::fabs(q[c])));
   const double cv = avg.floats["brdf.error"];
-  std::printf("%-10s %8.1f %12.3e %14.3e %8.2f %s\n", "albedo-avg", tv, cv, worstAvg, cv / worstAvg, "direct rule n = 10");
+  std::printf("%-10s %8.1f %12.3e %14.3e %8.2f %s\n", "albedo-avg", tv, cv, worstAvg, cv / worstAvg,
+              "direct rule n = 10");
   const bool honest = ca >= worst && cv >= worstAvg;
   std::printf("%s\n", honest ? "every claim holds" : "A CLAIM IS BELOW ITS ERROR");
   return honest ? 0 : 1;

@@ -54,9 +54,11 @@ int allPairs(const std::string& device, int n, int stride, const std::vector<std
       }
       all = std::max(all, worst);
       over += bad;
-      std::printf("%-12s %-20s %12.2e %12.2e %10d\n", ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), worst, bound, bad);
+      std::printf("%-12s %-20s %12.2e %12.2e %10d\n", ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), worst, bound,
+                  bad);
     }
-  std::printf("%s: largest error %.2e, %d texels over their bound\n", only.empty() ? "all pairs" : "these pairs", all, over);
+  std::printf("%s: largest error %.2e, %d texels over their bound\n", only.empty() ? "all pairs" : "these pairs", all,
+              over);
   return over == 0 ? 0 : 1;
 }
 

@@ -67,9 +67,10 @@ int probeSpanBench(KernelRunner& runner, const std::vector<std::pair<int, int>>&
         std::fflush(stdout);
       }
     }
-  std::printf("%d tables: %d where %d texels of steps give a smaller brdf.interp-error than %d (%d a smaller "
-              "maximum); probes %.2f s against %.2f s (%.2f)\n",
-              tables, worse, kProbeMuTexels, wide, lower, t2, t6, t2 / t6);
+  std::printf(
+      "%d tables: %d where %d texels of steps give a smaller brdf.interp-error than %d (%d a smaller "
+      "maximum); probes %.2f s against %.2f s (%.2f)\n",
+      tables, worse, kProbeMuTexels, wide, lower, t2, t6, t2 / t6);
   return worse == 0 ? 0 : 1;
 }
 

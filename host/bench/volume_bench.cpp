@@ -63,8 +63,10 @@ int volumeBench(KernelRunner& runner, int repeat, int bigSize) {
   double worst = 0;
   for (size_t t = 0; t < host.size(); ++t)
     worst = std::max(worst, std::fabs(dev[0][t] - host[t]) / std::max(1.0, std::fabs(host[t])));
-  std::printf("3D table, MERL layout (rusinkiewicz, sqrt theta_h, 90x90x180 = %.0f texels), ggx + smith-correlated, "
-              "r = 0.5, Schlick F0 = 0.04\n", texels);
+  std::printf(
+      "3D table, MERL layout (rusinkiewicz, sqrt theta_h, 90x90x180 = %.0f texels), ggx + smith-correlated, "
+      "r = 0.5, Schlick F0 = 0.04\n",
+      texels);
   std::printf("%-40s %10s %14s\n", "method", "seconds", "texels/s");
   std::printf("%-40s %10.4f %14.3e\n", "brdfbake kernel (OpenCL, best of repeat)", td, texels / td);
   std::printf("%-40s %10.4f %14.3e\n", "plain C++ (GLM + double, 1 thread)", th, texels / th);
@@ -97,8 +99,10 @@ int volumeBench(KernelRunner& runner, int repeat, int bigSize) {
   std::printf("\n%d^3 angles table (ggx + smith-correlated, FLOAT RGB), baked and written slab by slab:\n", bigSize);
   std::printf("  %.1f s in all (%.1f s kernel, the rest EXR compression and writing), file %.1f MB\n", total,
               kernelSeconds, bytes / 1e6);
-  std::printf("  largest slab %.1f MB; peak resident memory %.1f MB (%.1f MB before the bake); the whole table "
-              "would be %.1f MB\n", slab / 1e6, after, before, whole);
+  std::printf(
+      "  largest slab %.1f MB; peak resident memory %.1f MB (%.1f MB before the bake); the whole table "
+      "would be %.1f MB\n",
+      slab / 1e6, after, before, whole);
   return 0;
 }
 

@@ -27,7 +27,8 @@ std::string typeName(cl_device_type t) {
 std::string cacheProblem(const std::string& dir) {
   // root passes access() checks there, but nothing can be created in them
   for (const char* fs : {"/proc", "/sys"})
-    if (dir == fs || dir.rfind(std::string(fs) + "/", 0) == 0) return "'" + dir + "' is in " + fs + ", a kernel file system";
+    if (dir == fs || dir.rfind(std::string(fs) + "/", 0) == 0)
+      return "'" + dir + "' is in " + fs + ", a kernel file system";
   std::string cur = dir;
   while (true) {
     struct stat st {};
@@ -110,8 +111,8 @@ DeviceEntry selectDevice(const std::string& substring) {
     if (e.name.find(substring) != std::string::npos || e.platform.find(substring) != std::string::npos) return e;
   std::string names;
   for (auto& e : all) names += "\n  " + e.platform + ": " + e.name;
-  throw Error(kExitUnavailable, "--device: no OpenCL device or platform name contains '" + substring +
-                                    "'; available:" + names);
+  throw Error(kExitUnavailable,
+              "--device: no OpenCL device or platform name contains '" + substring + "'; available:" + names);
 }
 
 std::string describeDevices() {
@@ -119,8 +120,8 @@ std::string describeDevices() {
   int i = 0;
   for (auto& e : listDevices()) {
     s += "[" + std::to_string(i++) + "] " + e.type + "  " + e.name + "\n      platform: " + e.platform +
-         "\n      version: " + e.version + (e.fp64 ? "  (fp64: double accumulators)" : "  (no fp64: float accumulators)") +
-         "\n";
+         "\n      version: " + e.version +
+         (e.fp64 ? "  (fp64: double accumulators)" : "  (no fp64: float accumulators)") + "\n";
     // the program binaries ready for this device (cl/program_cache.h), where they are
     bool any = false;
     for (const std::string& dir : programCacheDirs()) {
@@ -134,9 +135,11 @@ std::string describeDevices() {
       any = true;
       std::string list;
       for (const std::string& n : found.ready) list += (list.empty() ? "" : "; ") + n;
-      s += "      programs ready in " + dir + ": " + std::to_string(found.ready.size()) + " (" + list + ")" + stale + "\n";
+      s += "      programs ready in " + dir + ": " + std::to_string(found.ready.size()) + " (" + list + ")" + stale +
+           "\n";
     }
-    if (!any) s += "      programs ready: none (each bake builds its programs from source, then keeps their binaries)\n";
+    if (!any)
+      s += "      programs ready: none (each bake builds its programs from source, then keeps their binaries)\n";
   }
   return s;
 }

@@ -53,7 +53,9 @@ uint64_t entryHash(const unsigned char* p, size_t n) {
   for (uint64_t v : h) r = fnvMix(r, v);
   return fnvMix(r, n);
 }
-uint64_t entryHash(const std::string& s) { return entryHash(reinterpret_cast<const unsigned char*>(s.data()), s.size()); }
+uint64_t entryHash(const std::string& s) {
+  return entryHash(reinterpret_cast<const unsigned char*>(s.data()), s.size());
+}
 
 std::string hex64(uint64_t v) { return hex16(v); }
 
@@ -134,8 +136,8 @@ std::string programIdentity(const cl::Device& device, const std::string& name, c
                             const std::string& source) {
   cl::Platform platform(device.getInfo<CL_DEVICE_PLATFORM>());
   return "platform: " + platform.getInfo<CL_PLATFORM_NAME>() + " / " + platform.getInfo<CL_PLATFORM_VERSION>() +
-         "\ndevice: " + device.getInfo<CL_DEVICE_NAME>() + " / " + device.getInfo<CL_DEVICE_VERSION>() +
-         " / driver " + device.getInfo<CL_DRIVER_VERSION>() + "\noptions: " + options + "\nprogram: " + name +
+         "\ndevice: " + device.getInfo<CL_DEVICE_NAME>() + " / " + device.getInfo<CL_DEVICE_VERSION>() + " / driver " +
+         device.getInfo<CL_DRIVER_VERSION>() + "\noptions: " + options + "\nprogram: " + name +
          "\nsource: " + std::to_string(source.size()) + " bytes\n" + source;
 }
 
@@ -170,7 +172,8 @@ std::vector<std::string> programCacheDirs() {
   char exe[4096];
   ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
   const std::string buildDir = BRDFBAKE_PROGRAMS_BUILD_DIR;
-  const std::string buildRoot = buildDir.substr(0, buildDir.find_last_of('/') == std::string::npos ? 0 : buildDir.find_last_of('/'));
+  const std::string buildRoot =
+      buildDir.substr(0, buildDir.find_last_of('/') == std::string::npos ? 0 : buildDir.find_last_of('/'));
   bool inBuild = n <= 0;
   if (n > 0) {
     std::string path(exe, static_cast<size_t>(n));
@@ -196,7 +199,8 @@ std::optional<ProgramBinary> loadProgram(const std::string& identity, std::strin
     if (!id || *id != identity) continue;  // another program, device, driver or source: never used
     uint64_t n = 0, sum = 0;
     if (!getU64(*data, &at, &n) || n > data->size() - at) continue;
-    ProgramBinary bin(data->begin() + static_cast<std::ptrdiff_t>(at), data->begin() + static_cast<std::ptrdiff_t>(at + n));
+    ProgramBinary bin(data->begin() + static_cast<std::ptrdiff_t>(at),
+                      data->begin() + static_cast<std::ptrdiff_t>(at + n));
     at += static_cast<size_t>(n);
     if (!getU64(*data, &at, &sum) || sum != entryHash(bin.data(), bin.size()) || bin.empty()) continue;
     if (where) *where = dir + "/" + file;
@@ -222,7 +226,8 @@ std::string storeProgram(const std::string& identity, const ProgramBinary& binar
   if (DIR* d = ::opendir(dir.c_str())) {
     std::vector<std::string> gone;
     while (dirent* e = ::readdir(d))
-      if (std::string(e->d_name).rfind(".program.", 0) == 0 && ownerIsGone(temporaryOwner(e->d_name))) gone.push_back(e->d_name);
+      if (std::string(e->d_name).rfind(".program.", 0) == 0 && ownerIsGone(temporaryOwner(e->d_name)))
+        gone.push_back(e->d_name);
     ::closedir(d);
     for (const std::string& g : gone) ::unlink((dir + "/" + g).c_str());
   }

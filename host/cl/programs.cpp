@@ -100,9 +100,12 @@ struct Joiner {
 
 const char* topFile(ProgramKey::Kind kind) {
   switch (kind) {
-    case ProgramKey::Volume: return "brdf3d.cl";
-    case ProgramKey::Dielectric: return "dielectric.cl";
-    case ProgramKey::Integrators: break;
+    case ProgramKey::Volume:
+      return "brdf3d.cl";
+    case ProgramKey::Dielectric:
+      return "dielectric.cl";
+    case ProgramKey::Integrators:
+      break;
   }
   return "bake.cl";
 }

@@ -23,7 +23,6 @@ using namespace runner_detail;
 
 const char* const kBuildOptions = kProgramBuildOptions;
 
-
 KernelRunner::KernelRunner(const cl::Device& device) : device_(device) {
   cpu_ = (device_.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
   fp64_ = device_.getInfo<CL_DEVICE_EXTENSIONS>().find("cl_khr_fp64") != std::string::npos;
@@ -125,9 +124,8 @@ void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* don
     std::string log = buildLog(prog, device_, &rc);
     if (rc != CL_SUCCESS)
       throw Error(driverCache.empty() ? kExitSoftware : driverFailureCode(log, driverCache),
-                  "OpenCL kernel build failed for " + name + " (" + std::to_string(rc) +
-                                     "); build log:\n" + log +
-                                     (driverCache.empty() ? std::string() : driverCacheHint(log, driverCache)));
+                  "OpenCL kernel build failed for " + name + " (" + std::to_string(rc) + "); build log:\n" + log +
+                      (driverCache.empty() ? std::string() : driverCacheHint(log, driverCache)));
   }
   done->slot = slotIndex;
   done->program = prog;
@@ -142,7 +140,8 @@ void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* don
     how += stored ? ", binary stored in " + dir : ", binary not stored: " + why;
   }
   std::lock_guard<std::mutex> lock(eventsMutex_);
-  events_.push_back({name, how, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), loaded, stored});
+  events_.push_back(
+      {name, how, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), loaded, stored});
 }
 
 void KernelRunner::compileKernel(Compiled& c, const std::string& name) {
@@ -206,8 +205,10 @@ bool KernelRunner::sharedProgramBuilt() const { return programs_.count(ProgramKe
 
 KernelRunner::Compiled& KernelRunner::compiled(const ProgramKey& key, const char* kernel) {
   if (!find(key)) {
-    if (key.kind == ProgramKey::Integrators && shareFor(1)) buildHere(ProgramKey::shared());
-    else buildHere(key);
+    if (key.kind == ProgramKey::Integrators && shareFor(1))
+      buildHere(ProgramKey::shared());
+    else
+      buildHere(key);
   }
   Compiled& c = *find(key, kernel);
   compileKernel(c, kernel);
@@ -230,11 +231,16 @@ namespace {
 // The program and kernel of a need other than the integrators' (which the plan shares or not).
 std::pair<ProgramKey, const char*> ownProgram(const KernelNeed& need) {
   switch (need.kernel) {
-    case KernelNeed::Brdf3d: return {{ProgramKey::Volume, need.ndf, need.gaf}, kBrdf3d};
-    case KernelNeed::Dielectric: return {{ProgramKey::Dielectric, need.ndf, need.gaf}, kDielectric};
-    case KernelNeed::DielectricNodes: return {{ProgramKey::Dielectric, need.ndf, need.gaf}, kDielectricNodes};
-    case KernelNeed::Hemisphere: break;
-    case KernelNeed::Kp: break;
+    case KernelNeed::Brdf3d:
+      return {{ProgramKey::Volume, need.ndf, need.gaf}, kBrdf3d};
+    case KernelNeed::Dielectric:
+      return {{ProgramKey::Dielectric, need.ndf, need.gaf}, kDielectric};
+    case KernelNeed::DielectricNodes:
+      return {{ProgramKey::Dielectric, need.ndf, need.gaf}, kDielectricNodes};
+    case KernelNeed::Hemisphere:
+      break;
+    case KernelNeed::Kp:
+      break;
   }
   return {integrators(need.ndf, need.gaf), kHemisphere};
 }
@@ -242,8 +248,10 @@ std::pair<ProgramKey, const char*> ownProgram(const KernelNeed& need) {
 
 void KernelRunner::prepare(const KernelNeed& need) {
   if (need.kernel == KernelNeed::Kp) {
-    if (Compiled* c = kpProgram(need.ndf)) compileKernel(*c, kKp);
-    else compiled(integrators(need.ndf, GAF_NONE), kKp);
+    if (Compiled* c = kpProgram(need.ndf))
+      compileKernel(*c, kKp);
+    else
+      compiled(integrators(need.ndf, GAF_NONE), kKp);
     return;
   }
   auto [key, kernel] = ownProgram(need);
@@ -264,9 +272,8 @@ std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<KernelNeed>
     if (std::find(it->kernels.begin(), it->kernels.end(), kernel) == it->kernels.end()) it->kernels.push_back(kernel);
   };
   auto builtFor = [&](int ndf) {
-    return std::any_of(programs_.begin(), programs_.end(), [&](const auto& p) {
-      return p.first.kind == ProgramKey::Integrators && p.first.ndf == ndf;
-    });
+    return std::any_of(programs_.begin(), programs_.end(),
+                       [&](const auto& p) { return p.first.kind == ProgramKey::Integrators && p.first.ndf == ndf; });
   };
   // the pairs (k_p: its NDF, gaf -1) without an integrators program of their own yet
   std::vector<std::pair<int, int>> fresh;
@@ -304,9 +311,12 @@ std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<KernelNeed>
         gaf = p.first.gaf;
     for (const Work& w : work)
       if (w.key.kind == ProgramKey::Integrators && w.key.ndf == t.ndf && (gaf < 0 || w.key.gaf < gaf)) gaf = w.key.gaf;
-    if (gaf >= 0) add(integrators(t.ndf, gaf), kKp);
-    else if (shared || programs_.count(ProgramKey::shared())) add(ProgramKey::shared(), kKp);
-    else add(integrators(t.ndf, GAF_NONE), kKp);
+    if (gaf >= 0)
+      add(integrators(t.ndf, gaf), kKp);
+    else if (shared || programs_.count(ProgramKey::shared()))
+      add(ProgramKey::shared(), kKp);
+    else
+      add(integrators(t.ndf, GAF_NONE), kKp);
   }
   return work;
 }

@@ -220,7 +220,7 @@ class KernelRunner {
   // there are said as such for the runner's life (cl/driver_guard.h).
   std::unique_ptr<DriverWork> driverWork_;
   bool cpu_ = false;
-  bool fp64_ = false;  // the device has cl_khr_fp64: the 3D tables' programs compute in double
+  bool fp64_ = false;     // the device has cl_khr_fp64: the 3D tables' programs compute in double
   bool planned_ = false;  // prepareAll() has run
   int buildThreads_ = 0;
   Sharing sharing_ = Sharing::Auto;
@@ -230,7 +230,7 @@ class KernelRunner {
   ProgramCacheUse cacheUse_ = ProgramCacheUse::On;
   Progress progress_;
   std::string progressLabel_;
-  std::string cacheDir_;  // Refresh: where binaries go
+  std::string cacheDir_;            // Refresh: where binaries go
   mutable std::mutex eventsMutex_;  // builds run on several threads (prepareAll)
   std::vector<ProgramEvent> events_;
   bool reuse_ = false;
@@ -249,7 +249,9 @@ class KernelRunner {
   struct PointKey {
     uint32_t launch;
     uint32_t bits[4];
-    bool operator==(const PointKey& o) const { return launch == o.launch && std::memcmp(bits, o.bits, sizeof bits) == 0; }
+    bool operator==(const PointKey& o) const {
+      return launch == o.launch && std::memcmp(bits, o.bits, sizeof bits) == 0;
+    }
   };
   struct PointHash {
     size_t operator()(const PointKey& k) const {

@@ -44,7 +44,7 @@
 namespace brdfbake {
 
 namespace {
-constexpr int kMaxPanels = 32;     // per entry; the halving stops there (the bound says how far it got)
+constexpr int kMaxPanels = 32;  // per entry; the halving stops there (the bound says how far it got)
 
 // A panel's rule on [0, 1]: GK31 (kernels/integrate/albedo_avg.h), or GK15 (quadrature.h, mapped
 // from [-1, 1]) for the horizon layer's panel (albedo_avg.h avg_first_break).
@@ -60,7 +60,7 @@ struct AvgPanel {
   double a, b;
   AvgRule rule = kGk31;
   double k = 0, d = 0, inner = 0;  // Kronrod, Kronrod - Gauss, node bounds
-  double resasc = 0;                // len sum w_k |f_k - mean f| (QUADPACK's resasc)
+  double resasc = 0;               // len sum w_k |f_k - mean f| (QUADPACK's resasc)
   // sharp: gk_error's rescaling of |K - G| (where E(mu) is analytic)
   double bound(bool sharp) const { return brdf64::gk_error(std::fabs(d), resasc, sharp) + inner; }
 };
@@ -152,8 +152,9 @@ std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double
         b += p.bound(sharp);
       }
       if (b / std::max(1.0, std::fabs(sum)) <= goal || panels[j].size() >= static_cast<size_t>(kMaxPanels)) continue;
-      auto worst = std::max_element(panels[j].begin(), panels[j].end(),
-                                    [&](const AvgPanel& l, const AvgPanel& r) { return l.bound(sharp) < r.bound(sharp); });
+      auto worst = std::max_element(panels[j].begin(), panels[j].end(), [&](const AvgPanel& l, const AvgPanel& r) {
+        return l.bound(sharp) < r.bound(sharp);
+      });
       double mid = 0.5 * (worst->a + worst->b), hi = worst->b;
       AvgRule rule = worst->rule;
       *worst = AvgPanel{worst->a, mid, rule};
@@ -179,8 +180,7 @@ std::vector<double> avgViewBreaks(int gaf) {
   return std::vector<double>(mu, mu + brdf64::gaf_view_breaks(gaf, mu));
 }
 
-KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w, float rLo,
-                                    float rHi) {
+KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w, float rLo, float rHi) {
   std::vector<float> rs(n);
   for (int j = 0; j < n; ++j) {  // as bake.cl's grid_coord computes it, in float
     float t = nodeGrid ? (n > 1 ? static_cast<float>(j) / static_cast<float>(n - 1) : 0.0f)
@@ -220,7 +220,8 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
     const double sum = sums[j].value, scale = std::max(1.0, std::fabs(sum));
     const float stored = static_cast<float>(sum);
     t.planes[0][j] = stored;
-    t.err[j] = static_cast<float>((sums[j].bound + floor * std::fabs(sum) + std::fabs(static_cast<double>(stored) - sum)) / scale);
+    t.err[j] = static_cast<float>(
+        (sums[j].bound + floor * std::fabs(sum) + std::fabs(static_cast<double>(stored) - sum)) / scale);
   }
   return t;
 }

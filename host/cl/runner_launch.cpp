@@ -123,8 +123,9 @@ void KernelRunner::keep(const std::string& key, const std::vector<std::vector<fl
 
 KernelTable KernelRunner::hemisphereRange(int ndf, int gaf, int nx, int ny, float muLo, float muHi, float rLo,
                                           float rHi, bool nodeGrid, const HemiWeight& w, int level, bool muSqrt) {
-  const std::string key = launchKey('h', ndf, brdf64::gaf_canonical(ndf, gaf), nx, ny, muLo, muHi, rLo, rHi, nodeGrid,
-                                    level, muSqrt) + weightKey(w);
+  const std::string key =
+      launchKey('h', ndf, brdf64::gaf_canonical(ndf, gaf), nx, ny, muLo, muHi, rLo, rHi, nodeGrid, level, muSqrt) +
+      weightKey(w);
   if (const auto* kept = reused(key)) {
     KernelTable t;
     t.width = nx;
@@ -192,10 +193,13 @@ std::vector<std::vector<float>> KernelRunner::hemisphereNodes(int ndf, int gaf, 
   std::vector<const std::array<float, 4>*> known(nodes.size(), nullptr);
   for (size_t k = 0; k < nodes.size(); ++k) {
     auto it = reuse_ ? points_.find(pointKey(nodes[k])) : points_.end();
-    if (it != points_.end()) known[k] = &it->second;
-    else todo.push_back(nodes[k]);
+    if (it != points_.end())
+      known[k] = &it->second;
+    else
+      todo.push_back(nodes[k]);
   }
-  std::vector<std::vector<float>> out = todo.empty() ? std::vector<std::vector<float>>(4) : nodesLaunch(ndf, gaf, todo, w, bare);
+  std::vector<std::vector<float>> out =
+      todo.empty() ? std::vector<std::vector<float>>(4) : nodesLaunch(ndf, gaf, todo, w, bare);
   // kept for later launches (element references stay valid as the map grows: `known` holds them)
   for (size_t k = 0; reuse_ && k < todo.size() && points_.size() < kReusePoints; ++k)
     points_.emplace(pointKey(todo[k]), std::array<float, 4>{out[0][k], out[1][k], out[2][k], out[3][k]});
@@ -259,7 +263,8 @@ KernelTable KernelRunner::diffuseAlbedo(int model, int nx, int ny, float pLo, fl
   static const char* const kDiffuse = "bake_diffuse_albedo";
   // the first integrators program (the map orders them first), else ggx + smith-correlated's
   Compiled* pc = nullptr;
-  if (!programs_.empty() && programs_.begin()->first.kind == ProgramKey::Integrators) pc = find(programs_.begin()->first);
+  if (!programs_.empty() && programs_.begin()->first.kind == ProgramKey::Integrators)
+    pc = find(programs_.begin()->first);
   if (!pc) {
     const ProgramKey fallback{ProgramKey::Integrators, NDF_GGX, GAF_SMITH_CORRELATED};
     buildHere(fallback);
@@ -402,7 +407,8 @@ std::vector<std::vector<double>> KernelRunner::dielectricPoints(int ndf, int gaf
     all.assign(f.begin(), f.end());
   }
   for (size_t ch = 0; ch < 4; ++ch)
-    planes[ch].assign(all.begin() + static_cast<std::ptrdiff_t>(ch * n), all.begin() + static_cast<std::ptrdiff_t>((ch + 1) * n));
+    planes[ch].assign(all.begin() + static_cast<std::ptrdiff_t>(ch * n),
+                      all.begin() + static_cast<std::ptrdiff_t>((ch + 1) * n));
   return planes;
 }
 

@@ -70,14 +70,16 @@ void checkFormatOptions(BakeRequest& req) {
   if (req.precision)
     for (FileFormat f : req.formats)
       if (!formatHolds(f, *req.precision))
-        throw Error(kExitUsage, "--precision " + precisionName(*req.precision) + ": --format " + formatName(f) +
-                                    (f == FileFormat::Exr ? " stores float32 or float16 (ktx2, dds and header store all four)"
-                                                          : " stores unorm16 only (its values mapped onto [0, 1]); leave "
-                                                            "--precision out or give unorm16"));
+        throw Error(kExitUsage,
+                    "--precision " + precisionName(*req.precision) + ": --format " + formatName(f) +
+                        (f == FileFormat::Exr ? " stores float32 or float16 (ktx2, dds and header store all four)"
+                                              : " stores unorm16 only (its values mapped onto [0, 1]); leave "
+                                                "--precision out or give unorm16"));
   const bool png = std::find(req.formats.begin(), req.formats.end(), FileFormat::Png16) != req.formats.end();
   if (png && std::any_of(req.tables.begin(), req.tables.end(), [](TableKind t) { return kindInfo(t).volume; }))
-    throw Error(kExitUsage, "--format png16: a 3D table (brdf3d) has no PNG form (PNG is 2D); use ktx2 or dds (3D "
-                            "textures), exr (an atlas of slices) or header");
+    throw Error(kExitUsage,
+                "--format png16: a 3D table (brdf3d) has no PNG form (PNG is 2D); use ktx2 or dds (3D "
+                "textures), exr (an atlas of slices) or header");
 }
 
 }  // namespace
@@ -183,14 +185,19 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       }
     } else if (parseVolumeOption(opt, value, req)) {
       // a brdf3d option (cli/volume_args.cpp)
-    } else if (parseLayoutOption(opt, value, [&](const std::string& o) { once(o, o); }, req)) {
+    } else if (parseLayoutOption(
+                   opt, value, [&](const std::string& o) { once(o, o); }, req)) {
       // --layout, --axes, --flip-x, --flip-y, --channels, --mu-axis (cli/layout_args.cpp)
     } else if (opt == "--grid") {
       once(opt, "--grid");
       gridName = value();
-      if (gridName == "node") req.nodeGrid = true;
-      else if (gridName == "texel-center") req.nodeGrid = false;
-      else throw Error(kExitUsage, "--grid must be texel-center or node, got '" + gridName + "'" + nearestValue("--grid", gridName));
+      if (gridName == "node")
+        req.nodeGrid = true;
+      else if (gridName == "texel-center")
+        req.nodeGrid = false;
+      else
+        throw Error(kExitUsage,
+                    "--grid must be texel-center or node, got '" + gridName + "'" + nearestValue("--grid", gridName));
     } else if (opt == "--half" || opt == "--precision") {
       // --half is --precision float16
       if (std::find(seen.begin(), seen.end(), "--precision") != seen.end())
@@ -210,7 +217,8 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         }
       }
       if (req.volume.merl && !req.formats.empty())
-        throw Error(kExitUsage, "--format merl writes MERL's binary file alone (brdf3d only); give it without other formats");
+        throw Error(kExitUsage,
+                    "--format merl writes MERL's binary file alone (brdf3d only); give it without other formats");
     } else if (opt == "-o" || opt == "--output") {
       once(opt, "--output");
       req.outDir = value();
@@ -253,8 +261,10 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         v.push_back(x);
       }
       if (v.size() != 2 || !(v[0] > 0) || !(v[1] > v[0]) || v[1] > 100)
-        throw Error(kExitUsage, "--eta-range must be LO,HI with 0 < LO < HI <= 100 (the relative IOR eta_t/eta_i; "
-                                "below 1 leaves the denser medium), got '" + text + "'");
+        throw Error(kExitUsage,
+                    "--eta-range must be LO,HI with 0 < LO < HI <= 100 (the relative IOR eta_t/eta_i; "
+                    "below 1 leaves the denser medium), got '" +
+                        text + "'");
       req.etaRange = std::make_pair(v[0], v[1]);
     } else if (opt == "--transmission") {
       once(opt, opt);
@@ -277,8 +287,8 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
         char* end = nullptr;
         long v = std::strtol(item.c_str(), &end, 10);
         if (item.empty() || *end != '\0' || errno != 0 || v < lo || v > hi)
-          throw Error(kExitUsage, opt + " must be a comma-separated, increasing list of integers in " + range + ", got '" +
-                                      item + "'");
+          throw Error(kExitUsage, opt + " must be a comma-separated, increasing list of integers in " + range +
+                                      ", got '" + item + "'");
         if (!ladder.empty() && v <= ladder.back())
           throw Error(kExitUsage, opt + " must be increasing (a ladder of budgets), got " + std::to_string(v) +
                                       " after " + std::to_string(ladder.back()));
@@ -288,20 +298,25 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     } else if (opt == "--preset") {
       once(opt, "--preset");
       req.preset = value();
-      if (req.preset != "gltf") throw Error(kExitUsage, "--preset: unknown preset '" + req.preset + "'" + nearestValue("--preset", req.preset) + "; valid: gltf");
+      if (req.preset != "gltf")
+        throw Error(kExitUsage, "--preset: unknown preset '" + req.preset + "'" + nearestValue("--preset", req.preset) +
+                                    "; valid: gltf");
     } else if (opt == "--brdf") {
       once(opt, "--brdf");
       const std::string& v = value();
       if (v.rfind("merl:", 0) != 0 || v.size() == 5)
-        throw Error(kExitUsage, "--brdf must be merl:FILE.binary (a measured material in MERL's layout), got '" + v + "'");
+        throw Error(kExitUsage,
+                    "--brdf must be merl:FILE.binary (a measured material in MERL's layout), got '" + v + "'");
       req.merl = v.substr(5);
     } else if (opt == "--diffuse") {
       once(opt, "--diffuse");
       req.diffuse = diffuseId(value());
     } else if (opt == "--f0" || opt == "--eta" || opt == "--k" || opt == "--f82") {
       once(opt, opt);
-      std::vector<double>& slot = opt == "--f0" ? req.fresnel.f0 : opt == "--eta" ? req.fresnel.eta
-                                  : opt == "--k"  ? req.fresnel.k  : req.fresnel.f82;
+      std::vector<double>& slot = opt == "--f0"    ? req.fresnel.f0
+                                  : opt == "--eta" ? req.fresnel.eta
+                                  : opt == "--k"   ? req.fresnel.k
+                                                   : req.fresnel.f82;
       slot = parseValues(opt, value());
     } else {
       throw Error(kExitSoftware, "internal: " + opt + " is in the option table (cli/commands.cpp) but not parsed");
@@ -316,10 +331,10 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       throw Error(kExitUsage, "--brdf: only bake and convergence take a measured material");
     if (modelsGiven || req.fresnelGiven || !req.fresnel.f0.empty() || !req.fresnel.eta.empty() ||
         !req.fresnel.k.empty() || !req.fresnel.f82.empty())
-      throw Error(kExitUsage, "--brdf merl:" + req.merl + ": the measured data is the whole material; --ndf, --gaf, "
-                              "--fresnel, --diffuse and their parameters do not apply");
-    if (req.tables.empty())
-      req.tables = albedoKinds(cmd.kind == Command::Kind::Convergence);
+      throw Error(kExitUsage, "--brdf merl:" + req.merl +
+                                  ": the measured data is the whole material; --ndf, --gaf, "
+                                  "--fresnel, --diffuse and their parameters do not apply");
+    if (req.tables.empty()) req.tables = albedoKinds(cmd.kind == Command::Kind::Convergence);
     const std::vector<TableKind> measured = kindsFor(req);  // the measured family's kinds
     for (TableKind t : req.tables)
       if (std::find(measured.begin(), measured.end(), t) == measured.end())
@@ -329,8 +344,9 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   if (!req.preset.empty()) {
     // the preset names its own models and tables (plan/plan.cpp makePresetPlan)
     if (modelsGiven || req.fresnelGiven || !req.tables.empty() || !req.merl.empty())
-      throw Error(kExitUsage, "--preset " + req.preset + " bakes its own models and tables; --ndf, --gaf, --table, "
-                              "--fresnel, --diffuse and --brdf do not apply (--size, --grid, --half, -o do)");
+      throw Error(kExitUsage, "--preset " + req.preset +
+                                  " bakes its own models and tables; --ndf, --gaf, --table, "
+                                  "--fresnel, --diffuse and --brdf do not apply (--size, --grid, --half, -o do)");
     req.ndfs = {NDF_GGX, NDF_CHARLIE};
     req.gafs = {GAF_SMITH_CORRELATED, GAF_NEUBELT, GAF_CHARLIE_SMITH};
     req.tables = kindsWhere([](const KindInfo& k) { return k.muRAxes; });  // the preset's split sums and albedos
@@ -347,9 +363,10 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       for (int g : req.gafs) checkPair(n, g);
     bool sheen = std::any_of(req.ndfs.begin(), req.ndfs.end(), isSheenNdf);
     if (sheen && (req.fresnelGiven || req.diffuse >= 0))
-      throw Error(kExitUsage, std::string(req.fresnelGiven ? "--fresnel" : "--diffuse") +
-                                  ": the sheen NDF (charlie) has no Fresnel or diffuse form (KHR_materials_sheen: F = 1, "
-                                  "the sheen colour scales the lobe); bake charlie without it");
+      throw Error(kExitUsage,
+                  std::string(req.fresnelGiven ? "--fresnel" : "--diffuse") +
+                      ": the sheen NDF (charlie) has no Fresnel or diffuse form (KHR_materials_sheen: F = 1, "
+                      "the sheen colour scales the lobe); bake charlie without it");
   }
   if (cmd.kind == Command::Kind::Energy) {
     if (req.sigma && req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
@@ -359,8 +376,8 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   }
   if (cmd.kind == Command::Kind::Convergence) {
     if (req.tables.size() > 1)
-      throw Error(kExitUsage, "--table: convergence measures one table kind at a time, got " +
-                                  std::to_string(req.tables.size()));
+      throw Error(kExitUsage,
+                  "--table: convergence measures one table kind at a time, got " + std::to_string(req.tables.size()));
     if (req.tables.empty()) req.tables = albedoKinds(true);
   }
   if (req.sigma && cmd.kind == Command::Kind::Bake) {
@@ -381,8 +398,8 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   } else {
     req.tables = def.tables;
   }
-  if (!req.fresnelGiven && (!req.fresnel.f0.empty() || !req.fresnel.eta.empty() || !req.fresnel.k.empty() ||
-                            !req.fresnel.f82.empty()))
+  if (!req.fresnelGiven &&
+      (!req.fresnel.f0.empty() || !req.fresnel.eta.empty() || !req.fresnel.k.empty() || !req.fresnel.f82.empty()))
     throw Error(kExitUsage, "--f0, --eta, --k and --f82 need --fresnel MODEL (" + joinNames(fresnelNames()) + ")");
   validateFresnel(req.fresnel);
   validateMuAxis(!gridName.empty(), req);

@@ -12,12 +12,28 @@
 namespace brdfbake {
 
 struct Command {
-  enum class Kind { Bake, Energy, Verify, Stress, Convergence, Devices, Info, Sample, ScenePlan, SceneBake, Shader, Render, Help, Version, Completion } kind = Kind::Bake;
+  enum class Kind {
+    Bake,
+    Energy,
+    Verify,
+    Stress,
+    Convergence,
+    Devices,
+    Info,
+    Sample,
+    ScenePlan,
+    SceneBake,
+    Shader,
+    Render,
+    Help,
+    Version,
+    Completion
+  } kind = Kind::Bake;
   BakeRequest bake;
-  std::string file;  // for Info, Sample
-  std::array<double, 3> at{};  // Sample: --at, in degrees
-  SceneOptions scene;          // ScenePlan, SceneBake
-  RenderOptions render;        // Render
+  std::string file;                // for Info, Sample
+  std::array<double, 3> at{};      // Sample: --at, in degrees
+  SceneOptions scene;              // ScenePlan, SceneBake
+  RenderOptions render;            // Render
   std::vector<std::string> files;  // Shader: the tables
   bool hlsl = false;               // Shader: --lang hlsl (else glsl)
   std::string helpFor;             // Help: the command whose help to print ("" = the overview)

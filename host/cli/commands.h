@@ -27,7 +27,7 @@ enum CommandBit : unsigned {
 };
 
 struct CommandInfo {
-  std::string name;                   // as typed: "bake"; "bake SCENE" for the scene form
+  std::string name;  // as typed: "bake"; "bake SCENE" for the scene form
   unsigned bit;
   std::string synopsis;               // "brdfbake verify [options]"
   std::string summary;                // one line for the overview

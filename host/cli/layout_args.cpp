@@ -17,7 +17,8 @@ bool parseLayoutOption(const std::string& opt, const std::function<const std::st
     once(opt);
     if (opt == "--axes") {
       const std::string& v = value();
-      if (v != "mu,r" && v != "r,mu") throw Error(kExitUsage, "--axes must be mu,r or r,mu, got '" + v + "'" + nearestValue("--axes", v));
+      if (v != "mu,r" && v != "r,mu")
+        throw Error(kExitUsage, "--axes must be mu,r or r,mu, got '" + v + "'" + nearestValue("--axes", v));
       req.layout.rAlongX = v == "r,mu";
     } else if (opt == "--channels") {
       req.layout.channels = parseLayoutChannels(value());
@@ -28,8 +29,10 @@ bool parseLayoutOption(const std::string& opt, const std::function<const std::st
     once("--mu-axis");
     const std::string& v = value();
     if (v != "linear" && v != "sqrt")
-      throw Error(kExitUsage, "--mu-axis must be linear (x = mu, the default) or sqrt (x = sqrt(mu): texel i holds "
-                              "mu = u_i^2, as Unity HDRP's pre-integrated FGD), got '" + v + "'" + nearestValue("--mu-axis", v));
+      throw Error(kExitUsage,
+                  "--mu-axis must be linear (x = mu, the default) or sqrt (x = sqrt(mu): texel i holds "
+                  "mu = u_i^2, as Unity HDRP's pre-integrated FGD), got '" +
+                      v + "'" + nearestValue("--mu-axis", v));
     req.muSqrt = v == "sqrt";
   } else {
     return false;
@@ -43,8 +46,9 @@ void validateMuAxis(bool gridGiven, BakeRequest& req) {
     const LayoutPreset& lp = layoutPreset(*req.layoutPreset);
     const std::string grid = lp.nodeGrid ? "node" : "texel-center", axis = lp.muSqrt ? "sqrt" : "linear";
     if (gridGiven && req.nodeGrid != lp.nodeGrid)
-      throw Error(kExitUsage, "--grid " + std::string(req.nodeGrid ? "node" : "texel-center") + ": --layout " + lp.name +
-                                  " samples a " + grid + " grid (the engine's lookup); leave --grid out or give " + grid);
+      throw Error(kExitUsage, "--grid " + std::string(req.nodeGrid ? "node" : "texel-center") + ": --layout " +
+                                  lp.name + " samples a " + grid +
+                                  " grid (the engine's lookup); leave --grid out or give " + grid);
     if (req.muSqrt && *req.muSqrt != lp.muSqrt)
       throw Error(kExitUsage, "--mu-axis " + std::string(*req.muSqrt ? "sqrt" : "linear") + ": --layout " + lp.name +
                                   " samples x = " + (lp.muSqrt ? "sqrt(NdotV)" : "NdotV") +
@@ -63,7 +67,8 @@ void validateMuAxis(bool gridGiven, BakeRequest& req) {
     throw Error(kExitUsage, o + ": a measured material (--brdf merl:) is tabulated on a linear mu axis only "
                                 "(accepted: --mu-axis linear)");
   if (!req.preset.empty())
-    throw Error(kExitUsage, o + ": --preset " + req.preset + " bakes what glTF samples, on a linear mu axis "
+    throw Error(kExitUsage, o + ": --preset " + req.preset +
+                                " bakes what glTF samples, on a linear mu axis "
                                 "(accepted: --mu-axis linear)");
   std::vector<TableKind> takers;  // the kinds over (mu, r), as their families describe them
   for (const KindInfo& k : allKinds())

@@ -37,7 +37,8 @@ bool parseRenderCommand(const std::vector<std::string>& args, Command& cmd) {
       o.noWait = true;
       continue;
     }
-    if (i + 1 >= args.size() || (args[i + 1].size() > 1 && args[i + 1][0] == '-' && !std::isdigit(static_cast<unsigned char>(args[i + 1][1]))))
+    if (i + 1 >= args.size() ||
+        (args[i + 1].size() > 1 && args[i + 1][0] == '-' && !std::isdigit(static_cast<unsigned char>(args[i + 1][1]))))
       throw Error(kExitUsage, opt + ": missing value");
     const std::string& v = args[++i];
     if (canonical == "--output") {
@@ -50,7 +51,8 @@ bool parseRenderCommand(const std::vector<std::string>& args, Command& cmd) {
     } else if (opt == "--rows") {
       o.rows = splitCommas(v);
     } else if (opt == "--ndf" || opt == "--gaf") {
-      if (v.find(',') != std::string::npos) throw Error(kExitUsage, opt + ": render shades one pair; give one name, got '" + v + "'");
+      if (v.find(',') != std::string::npos)
+        throw Error(kExitUsage, opt + ": render shades one pair; give one name, got '" + v + "'");
       (opt == "--ndf" ? o.ndf : o.gaf) = v;
     } else if (opt == "--device") {
       o.device = v;

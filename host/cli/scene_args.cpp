@@ -16,14 +16,16 @@ bool parseSceneCommand(const std::vector<std::string>& args, Command& cmd) {
   bool bake = args[0] == "bake" && args.size() > 1 && !args[1].empty() && args[1][0] != '-';
   if (!plan && !bake) return false;
   if (args.size() < 2 || args[1].empty() || args[1][0] == '-')
-    throw Error(kExitUsage, "plan: expected a scene file (.toml manifest, .gltf or .glb): brdfbake plan SCENE [options]");
+    throw Error(kExitUsage,
+                "plan: expected a scene file (.toml manifest, .gltf or .glb): brdfbake plan SCENE [options]");
   SceneOptions o;
   o.file = args[1];
   std::vector<std::string> seen;
   for (size_t i = 2; i < args.size(); ++i) {
     const std::string& opt = args[i];
     if (!takesOption(plan ? "plan" : "bake SCENE", opt)) refuseOption(plan ? "plan" : "bake SCENE", opt);
-    if (std::find(seen.begin(), seen.end(), opt) != seen.end()) throw Error(kExitUsage, opt + " given twice; give it once");
+    if (std::find(seen.begin(), seen.end(), opt) != seen.end())
+      throw Error(kExitUsage, opt + " given twice; give it once");
     seen.push_back(opt);
     auto value = [&]() -> const std::string& {
       if (i + 1 >= args.size() || (args[i + 1].size() > 1 && args[i + 1][0] == '-'))

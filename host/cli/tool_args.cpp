@@ -46,10 +46,12 @@ bool parseToolCommand(const std::vector<std::string>& args, Command& cmd) {
         if (langGiven || k + 1 >= args.size()) throw Error(kExitUsage, "--lang: give it once, glsl or hlsl");
         langGiven = true;
         const std::string& l = args[++k];
-        if (l != "glsl" && l != "hlsl") throw Error(kExitUsage, "--lang must be glsl or hlsl, got '" + l + "'" + nearestValue("--lang", l));
+        if (l != "glsl" && l != "hlsl")
+          throw Error(kExitUsage, "--lang must be glsl or hlsl, got '" + l + "'" + nearestValue("--lang", l));
         cmd.hlsl = l == "hlsl";
       } else if (args[k] == "-o" || args[k] == "--output") {
-        if (!cmd.file.empty() || k + 1 >= args.size()) throw Error(kExitUsage, args[k] + ": give one output file, once");
+        if (!cmd.file.empty() || k + 1 >= args.size())
+          throw Error(kExitUsage, args[k] + ": give one output file, once");
         cmd.file = args[++k];
       } else if (!args[k].empty() && args[k][0] == '-') {
         refuseOption("shader", args[k]);
@@ -58,7 +60,8 @@ bool parseToolCommand(const std::vector<std::string>& args, Command& cmd) {
       }
     }
     if (!langGiven) throw Error(kExitUsage, "shader: --lang glsl or --lang hlsl is required");
-    if (cmd.files.empty()) throw Error(kExitUsage, "shader: expected one or more table files (brdfbake shader --lang glsl FILE...)");
+    if (cmd.files.empty())
+      throw Error(kExitUsage, "shader: expected one or more table files (brdfbake shader --lang glsl FILE...)");
     return true;
   }
   if (args[0] == "sample") {
@@ -69,8 +72,9 @@ bool parseToolCommand(const std::vector<std::string>& args, Command& cmd) {
     cmd.file = args[1];
     std::vector<std::string> parts = splitCommas(args[3]);
     if (parts.size() != 3)
-      throw Error(kExitUsage, "--at takes three angles in degrees, A,B,C (theta_i,theta_o,phi or theta_h,theta_d,phi_d), got '" +
-                                  args[3] + "'");
+      throw Error(kExitUsage,
+                  "--at takes three angles in degrees, A,B,C (theta_i,theta_o,phi or theta_h,theta_d,phi_d), got '" +
+                      args[3] + "'");
     for (int a = 0; a < 3; ++a) {
       char* end = nullptr;
       errno = 0;
@@ -84,7 +88,8 @@ bool parseToolCommand(const std::vector<std::string>& args, Command& cmd) {
     return true;
   }
   if (args[0] == "info") {
-    if (args.size() != 2) throw Error(kExitUsage, "info: expected exactly one table file (.exr, .ktx2, .dds, .png, .h, .mjs)");
+    if (args.size() != 2)
+      throw Error(kExitUsage, "info: expected exactly one table file (.exr, .ktx2, .dds, .png, .h, .mjs)");
     cmd.kind = Command::Kind::Info;
     cmd.file = args[1];
     return true;

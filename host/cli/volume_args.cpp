@@ -39,7 +39,7 @@ void parseVolumeSize(const std::string& v, BakeRequest& req) {
     long x = std::strtol(parts[a].c_str(), &end, 10);
     if (parts[a].empty() || *end != '\0' || errno != 0 || x < 1 || x > kMaxVolumeSize)
       throw Error(kExitUsage, "--size: each axis of a brdf3d or dielectric table must be an integer in 1.." +
-          std::to_string(kMaxVolumeSize) + ", got '" + parts[a] + "'");
+                                  std::to_string(kMaxVolumeSize) + ", got '" + parts[a] + "'");
     n[a] = static_cast<int>(x);
   }
   req.volume.size = n;
@@ -54,35 +54,46 @@ bool parseVolumeOption(const std::string& opt, const std::function<const std::st
   if (opt == "--param") {
     once(opt);
     std::string v = value();
-    if (v == "angles") req.volume.param = Brdf3dParam::Angles;
-    else if (v == "rusinkiewicz") req.volume.param = Brdf3dParam::Rusinkiewicz;
-    else throw Error(kExitUsage, "--param must be angles or rusinkiewicz, got '" + v + "'" + nearestValue("--param", v));
+    if (v == "angles")
+      req.volume.param = Brdf3dParam::Angles;
+    else if (v == "rusinkiewicz")
+      req.volume.param = Brdf3dParam::Rusinkiewicz;
+    else
+      throw Error(kExitUsage, "--param must be angles or rusinkiewicz, got '" + v + "'" + nearestValue("--param", v));
     req.volume.flags.push_back(opt);
   } else if (opt == "--theta-h") {
     once(opt);
     std::string v = value();
-    if (v == "sqrt") req.volume.thetaHSqrt = true;
-    else if (v != "linear") throw Error(kExitUsage, "--theta-h must be linear or sqrt (MERL's index), got '" + v + "'" + nearestValue("--theta-h", v));
+    if (v == "sqrt")
+      req.volume.thetaHSqrt = true;
+    else if (v != "linear")
+      throw Error(kExitUsage,
+                  "--theta-h must be linear or sqrt (MERL's index), got '" + v + "'" + nearestValue("--theta-h", v));
     req.volume.flags.push_back(opt);
   } else if (opt == "--value") {
     once(opt);
     std::string v = value();
-    if (v == "f-cos") req.volume.timesCos = true;
-    else if (v != "f") throw Error(kExitUsage, "--value must be f or f-cos (f times cos theta_i), got '" + v + "'" + nearestValue("--value", v));
+    if (v == "f-cos")
+      req.volume.timesCos = true;
+    else if (v != "f")
+      throw Error(kExitUsage,
+                  "--value must be f or f-cos (f times cos theta_i), got '" + v + "'" + nearestValue("--value", v));
     req.volume.flags.push_back(opt);
   } else if (opt == "--roughness") {
     once(opt);
     std::vector<double> v = parseValues(opt, value());
     if (v.size() != 1 || !(v[0] >= kMinVolumeRoughness && v[0] <= 1.0))
-      throw Error(kExitUsage, "--roughness must be one value in [0.01, 1] (perceptual r; below 0.01 the lobe is "
-                              "narrower than any table resolves)");
+      throw Error(kExitUsage,
+                  "--roughness must be one value in [0.01, 1] (perceptual r; below 0.01 the lobe is "
+                  "narrower than any table resolves)");
     req.volume.roughness = v[0];
     req.volume.flags.push_back(opt);
   } else if (opt == "--rho") {
     once(opt);
     std::vector<double> v = parseValues(opt, value());
     for (double x : v)
-      if (!(x >= 0 && x <= 1)) throw Error(kExitUsage, "--rho must be one value or three (R,G,B) in [0, 1], got '" + fmtG(x) + "'");
+      if (!(x >= 0 && x <= 1))
+        throw Error(kExitUsage, "--rho must be one value or three (R,G,B) in [0, 1], got '" + fmtG(x) + "'");
     req.volume.rho = v;
     req.volume.flags.push_back(opt);
   } else if (opt == "--atlas") {
@@ -126,11 +137,13 @@ void validateVolumeOptions(bool bake, BakeRequest& req) {
       throw Error(kExitUsage, "--format merl writes one brdf3d table per pair; bake the other tables in another run");
     for (const char* f : {"--size NX,NY,NZ", "--atlas", "--value", "--theta-h"})
       if (std::find(v.flags.begin(), v.flags.end(), f) != v.flags.end())
-        throw Error(kExitUsage, std::string(f) + ": --format merl has MERL's fixed layout (rusinkiewicz, sqrt theta_h "
-                                                 "index, 90x90x180 bins, f); leave it out");
+        throw Error(kExitUsage, std::string(f) +
+                                    ": --format merl has MERL's fixed layout (rusinkiewicz, sqrt theta_h "
+                                    "index, 90x90x180 bins, f); leave it out");
     if (req.size || req.half || req.precision || req.nodeGrid)
-      throw Error(kExitUsage, "--size/--half/--precision/--grid: --format merl has MERL's fixed layout (90x90x180 doubles, bins "
-                              "sampled at their lower edges); leave them out");
+      throw Error(kExitUsage,
+                  "--size/--half/--precision/--grid: --format merl has MERL's fixed layout (90x90x180 doubles, bins "
+                  "sampled at their lower edges); leave them out");
     if (v.param == Brdf3dParam::Angles && std::find(v.flags.begin(), v.flags.end(), "--param") != v.flags.end())
       throw Error(kExitUsage, "--param angles: --format merl is over the Rusinkiewicz angles; leave --param out");
     v.param = Brdf3dParam::Rusinkiewicz;

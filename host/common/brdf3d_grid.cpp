@@ -24,9 +24,7 @@ int Brdf3dSpec::kernelParam() const {
   return thetaHSqrt ? 2 : 1;
 }
 
-int Brdf3dSpec::kernelGrid() const {
-  return grid == Brdf3dGrid::TexelCenter ? 0 : grid == Brdf3dGrid::Node ? 1 : 2;
-}
+int Brdf3dSpec::kernelGrid() const { return grid == Brdf3dGrid::TexelCenter ? 0 : grid == Brdf3dGrid::Node ? 1 : 2; }
 
 std::array<Brdf3dSpec::Axis, 3> Brdf3dSpec::axes() const {
   if (param == Brdf3dParam::Angles) return {{{"theta_i", 0, kHalfPi}, {"theta_o", 0, kHalfPi}, {"phi", 0, kPi}}};
@@ -35,9 +33,12 @@ std::array<Brdf3dSpec::Axis, 3> Brdf3dSpec::axes() const {
 
 double gridFraction(Brdf3dGrid grid, int i, int n) {
   switch (grid) {
-    case Brdf3dGrid::TexelCenter: return (i + 0.5) / n;
-    case Brdf3dGrid::Node: return n > 1 ? static_cast<double>(i) / (n - 1) : 0.0;
-    default: return static_cast<double>(i) / n;
+    case Brdf3dGrid::TexelCenter:
+      return (i + 0.5) / n;
+    case Brdf3dGrid::Node:
+      return n > 1 ? static_cast<double>(i) / (n - 1) : 0.0;
+    default:
+      return static_cast<double>(i) / n;
   }
 }
 
@@ -49,9 +50,17 @@ std::vector<double> axisTrig(const Brdf3dSpec& s) {
       // t = num/den and 1 - t = (den - num)/den, from integers
       double num, den;
       switch (s.grid) {
-        case Brdf3dGrid::TexelCenter: num = 2.0 * i + 1; den = 2.0 * n[a]; break;
-        case Brdf3dGrid::Node: num = i; den = n[a] > 1 ? n[a] - 1.0 : 1.0; break;
-        default: num = i; den = n[a];
+        case Brdf3dGrid::TexelCenter:
+          num = 2.0 * i + 1;
+          den = 2.0 * n[a];
+          break;
+        case Brdf3dGrid::Node:
+          num = i;
+          den = n[a] > 1 ? n[a] - 1.0 : 1.0;
+          break;
+        default:
+          num = i;
+          den = n[a];
       }
       double u = num / den, uc = (den - num) / den;
       if (a == 0 && s.param == Brdf3dParam::Rusinkiewicz && s.thetaHSqrt) {
@@ -82,9 +91,12 @@ double texelIndex(const Brdf3dSpec& s, int axis, double angle) {
   double t = angle / s.axes()[axis].hi;
   if (axis == 0 && s.param == Brdf3dParam::Rusinkiewicz && s.thetaHSqrt) t = std::sqrt(std::max(t, 0.0));
   switch (s.grid) {
-    case Brdf3dGrid::TexelCenter: return t * n - 0.5;
-    case Brdf3dGrid::Node: return t * (n - 1);
-    default: return t * n;
+    case Brdf3dGrid::TexelCenter:
+      return t * n - 0.5;
+    case Brdf3dGrid::Node:
+      return t * (n - 1);
+    default:
+      return t * n;
   }
 }
 
@@ -221,10 +233,13 @@ InterpError interpolationError(const Brdf3dSpec& s, int samples) {
       int dx = c & 1, dy = (c >> 1) & 1, dz = (c >> 2) & 1;
       double wc = (dx ? w[0] : 1 - w[0]) * (dy ? w[1] : 1 - w[1]) * (dz ? w[2] : 1 - w[2]);
       if (wc != 0)
-        lookup += wc * hostBrdf(s, texelDirections(s, std::min(lo[0] + dx, n[0] - 1), std::min(lo[1] + dy, n[1] - 1),
-                                                   std::min(lo[2] + dz, n[2] - 1)), 0);
+        lookup += wc * hostBrdf(s,
+                                texelDirections(s, std::min(lo[0] + dx, n[0] - 1), std::min(lo[1] + dy, n[1] - 1),
+                                                std::min(lo[2] + dz, n[2] - 1)),
+                                0);
     }
-    Directions d = s.param == Brdf3dParam::Angles ? fromAngles(ang.x, ang.y, ang.z) : fromRusinkiewicz(ang.x, ang.y, ang.z);
+    Directions d =
+        s.param == Brdf3dParam::Angles ? fromAngles(ang.x, ang.y, ang.z) : fromRusinkiewicz(ang.x, ang.y, ang.z);
     double exact = hostBrdf(s, d, 0);
     double err = std::fabs(lookup - exact) / std::max(1.0, std::fabs(exact));
     sum2 += err * err;

@@ -18,14 +18,14 @@ enum class Brdf3dParam { Angles, Rusinkiewicz };
 enum class Brdf3dGrid { TexelCenter, Node, CellStart };  // (i+0.5)/n, i/(n-1), i/n (MERL's bins)
 
 struct Brdf3dSpec {
-  int ndf = 0, gaf = 0;           // NDF_*, GAF_*
-  double roughness = 0.5;         // perceptual r of the specular lobe
-  FresnelChoice fresnel;          // validated; model one = F = 1
-  int diffuse = -1;               // DIFFUSE_* or -1 (no diffuse lobe)
-  double diffuseParam = 0;        // F0 (shirley forms), sigma (oren-nayar) or r (burley)
-  std::vector<double> rho;        // diffuse albedo: one value or three (R, G, B)
+  int ndf = 0, gaf = 0;     // NDF_*, GAF_*
+  double roughness = 0.5;   // perceptual r of the specular lobe
+  FresnelChoice fresnel;    // validated; model one = F = 1
+  int diffuse = -1;         // DIFFUSE_* or -1 (no diffuse lobe)
+  double diffuseParam = 0;  // F0 (shirley forms), sigma (oren-nayar) or r (burley)
+  std::vector<double> rho;  // diffuse albedo: one value or three (R, G, B)
   Brdf3dParam param = Brdf3dParam::Angles;
-  bool thetaHSqrt = false;        // rusinkiewicz: x = sqrt(theta_h/(pi/2)) (MERL), else theta_h/(pi/2)
+  bool thetaHSqrt = false;  // rusinkiewicz: x = sqrt(theta_h/(pi/2)) (MERL), else theta_h/(pi/2)
   Brdf3dGrid grid = Brdf3dGrid::TexelCenter;
   bool timesCos = false;          // store f (n.i) instead of f
   int nx = 32, ny = 32, nz = 32;  // x, y, z resolution

@@ -44,8 +44,7 @@ int openChecked(const std::string& path, const std::string& what, uint64_t cap, 
   }
   if (!S_ISREG(st.st_mode)) {
     ::close(fd);
-    throw Error(kExitNoInput, cannotRead(what, path) + fileTypeName(st.st_mode) +
-                                  ", not a regular file");
+    throw Error(kExitNoInput, cannotRead(what, path) + fileTypeName(st.st_mode) + ", not a regular file");
   }
   const uint64_t n = static_cast<uint64_t>(st.st_size);
   if (n > cap) {

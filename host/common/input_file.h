@@ -8,11 +8,11 @@
 namespace brdfbake {
 
 // Size caps, in bytes, by kind of input.
-inline constexpr uint64_t kCapManifest = 4ull << 20;     // a scene manifest (TOML): 4 MiB
-inline constexpr uint64_t kCapGltfJson = 64ull << 20;    // a .gltf, or a .glb's JSON chunk: 64 MiB
-inline constexpr uint64_t kCapGlb = 2ull << 30;          // a .glb file (its JSON chunk alone is read): 2 GiB
-inline constexpr uint64_t kCapTable = 16ull << 30;       // a table file (EXR, KTX2, DDS, PNG, .h, .mjs): 16 GiB
-inline constexpr uint64_t kCapMerl = 34992012;           // a MERL .binary: 3 x 90 x 90 x 180 doubles + 12
+inline constexpr uint64_t kCapManifest = 4ull << 20;   // a scene manifest (TOML): 4 MiB
+inline constexpr uint64_t kCapGltfJson = 64ull << 20;  // a .gltf, or a .glb's JSON chunk: 64 MiB
+inline constexpr uint64_t kCapGlb = 2ull << 30;        // a .glb file (its JSON chunk alone is read): 2 GiB
+inline constexpr uint64_t kCapTable = 16ull << 30;     // a table file (EXR, KTX2, DDS, PNG, .h, .mjs): 16 GiB
+inline constexpr uint64_t kCapMerl = 34992012;         // a MERL .binary: 3 x 90 x 90 x 180 doubles + 12
 
 // Throws Error(kExitNoInput) when `path` is missing, unreadable or not a regular file ("cannot read
 // scene x.toml: a FIFO (named pipe), not a regular file"), Error(kExitDataErr) when it is larger

@@ -25,8 +25,8 @@ int fresnelId(const std::string& name, const std::string& field) {
 }
 
 const std::vector<std::string>& diffuseNames() {
-  static const std::vector<std::string> n = {"lambert",   "shirley",           "ashikhmin-shirley",     "oren-nayar",
-                                             "burley",    "shirley-as-printed", "oren-nayar-as-printed"};
+  static const std::vector<std::string> n = {
+      "lambert", "shirley", "ashikhmin-shirley", "oren-nayar", "burley", "shirley-as-printed", "oren-nayar-as-printed"};
   return n;
 }
 
@@ -41,10 +41,13 @@ DiffuseAxis diffuseAxis(int model) {
   switch (model) {
     case DIFFUSE_SHIRLEY:
     case DIFFUSE_ASHIKHMIN_SHIRLEY:
-    case DIFFUSE_SHIRLEY_AS_PRINTED: return {"f0", 0, 1};
+    case DIFFUSE_SHIRLEY_AS_PRINTED:
+      return {"f0", 0, 1};
     case DIFFUSE_OREN_NAYAR:
-    case DIFFUSE_OREN_NAYAR_AS_PRINTED: return {"sigma", 0, 1.5707963267948966};
-    default: return {"r", 0, 1};
+    case DIFFUSE_OREN_NAYAR_AS_PRINTED:
+      return {"sigma", 0, 1.5707963267948966};
+    default:
+      return {"r", 0, 1};
   }
 }
 
@@ -98,12 +101,17 @@ int FresnelChoice::channels() const {
 
 std::pair<double, double> FresnelChoice::modelParams(int c) const {
   switch (model) {
-    case FRESNEL_SCHLICK: return {at(f0, c), 0};
+    case FRESNEL_SCHLICK:
+      return {at(f0, c), 0};
     case FRESNEL_DIELECTRIC:
-    case FRESNEL_SCHLICK_TIR: return {at(eta, c), 0};
-    case FRESNEL_CONDUCTOR: return {at(eta, c), at(k, c)};
-    case FRESNEL_F82_TINT: return {at(f0, c), at(f82, c)};
-    default: return {0, 0};
+    case FRESNEL_SCHLICK_TIR:
+      return {at(eta, c), 0};
+    case FRESNEL_CONDUCTOR:
+      return {at(eta, c), at(k, c)};
+    case FRESNEL_F82_TINT:
+      return {at(f0, c), at(f82, c)};
+    default:
+      return {0, 0};
   }
 }
 
@@ -136,17 +144,21 @@ double fresnelAverage(int model, double x, double y, double* err, std::string* h
   };
   auto schlickAvg = [](double f0) { return (20 * f0 + 1) / 21; };  // 2 int (F0 + (1-F0)(1-mu)^5) mu dmu
   switch (model) {
-    case FRESNEL_ONE: return closed(1);
-    case FRESNEL_SCHLICK: return closed(schlickAvg(x));
+    case FRESNEL_ONE:
+      return closed(1);
+    case FRESNEL_SCHLICK:
+      return closed(schlickAvg(x));
     // 2 int mu (1 - mu)^6 mu dmu = 2 B(3, 7) = 1/126
-    case FRESNEL_F82_TINT: return closed(schlickAvg(x) - y / 126);
+    case FRESNEL_F82_TINT:
+      return closed(schlickAvg(x) - y / 126);
     case FRESNEL_SCHLICK_TIR: {
       double f0 = (x - 1) * (x - 1) / ((x + 1) * (x + 1));
       if (x >= 1) return closed(schlickAvg(f0));
       // F = 1 below mu_c = sqrt(1 - eta^2); above, mu dmu = eta^2 ct dct maps [mu_c, 1] to ct in [0, 1]
       return closed((1 - x * x) + x * x * schlickAvg(f0));
     }
-    default: break;
+    default:
+      break;
   }
   // dielectric, conductor: F from kernels/brdf/fresnel.h in double, split at the critical angle
   // mu = oc + (1 - oc) t^2: F has a square-root end at the critical angle oc (eta < 1), and for eta

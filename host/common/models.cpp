@@ -13,17 +13,28 @@ const std::vector<std::string>& ndfNames() {
 }
 
 const std::vector<std::string>& gafNames() {
-  static const std::vector<std::string> n = {"none",  "implicit", "cook-torrance", "kelemen",
-                                             "neumann", "ashikhmin-premoze", "schlick-beckmann",
-                                             "schlick-ggx", "schlick-ggx-direct", "smith",
-                                             "smith-correlated", "smith-exact",
-                                             "smith-correlated-exact", "charlie-smith", "neubelt"};
+  static const std::vector<std::string> n = {"none",
+                                             "implicit",
+                                             "cook-torrance",
+                                             "kelemen",
+                                             "neumann",
+                                             "ashikhmin-premoze",
+                                             "schlick-beckmann",
+                                             "schlick-ggx",
+                                             "schlick-ggx-direct",
+                                             "smith",
+                                             "smith-correlated",
+                                             "smith-exact",
+                                             "smith-correlated-exact",
+                                             "charlie-smith",
+                                             "neubelt"};
   return n;
 }
 
 const std::vector<std::string>& tableNames() {
-  static const std::vector<std::string> n = {"splitsum", "albedo", "albedo-avg", "kp", "fresnel-avg", "brdf3d",
-                                             "ashikhmin-shirley", "dielectric", "dielectric-avg"};
+  static const std::vector<std::string> n = {"splitsum",      "albedo", "albedo-avg",        "kp",
+                                             "fresnel-avg",   "brdf3d", "ashikhmin-shirley", "dielectric",
+                                             "dielectric-avg"};
   return n;
 }
 
@@ -68,12 +79,11 @@ std::string didYouMean(const std::string& word, const std::vector<std::string>& 
 }
 
 namespace {
-int lookup(const std::vector<std::string>& names, const std::string& name, const std::string& field,
-           const char* what) {
+int lookup(const std::vector<std::string>& names, const std::string& name, const std::string& field, const char* what) {
   for (size_t i = 0; i < names.size(); ++i)
     if (names[i] == name) return static_cast<int>(i);
-  throw Error(kExitUsage, field + ": unknown " + what + " '" + name + "'" + didYouMean(name, names) + "; valid: " +
-                              joinNames(names));
+  throw Error(kExitUsage, field + ": unknown " + what + " '" + name + "'" + didYouMean(name, names) +
+                              "; valid: " + joinNames(names));
 }
 }  // namespace
 
@@ -86,11 +96,16 @@ const std::string& tableName(TableKind kind) { return tableNames()[static_cast<i
 
 std::string roughnessMapping(int ndf) {
   switch (ndf) {
-    case 0: return "alpha=r^2";
-    case 1: return "alpha=r^2 (Beckmann m=alpha)";
-    case 2: return "e=2/alpha^2-2, alpha=r^2";
-    case 4: return "alpha=r^2 (sheenRoughness^2, KHR_materials_sheen; Filament's linear roughness)";
-    default: return "c=1/alpha, alpha=r^2";
+    case 0:
+      return "alpha=r^2";
+    case 1:
+      return "alpha=r^2 (Beckmann m=alpha)";
+    case 2:
+      return "e=2/alpha^2-2, alpha=r^2";
+    case 4:
+      return "alpha=r^2 (sheenRoughness^2, KHR_materials_sheen; Filament's linear roughness)";
+    default:
+      return "c=1/alpha, alpha=r^2";
   }
 }
 
@@ -110,8 +125,10 @@ void checkPair(int ndf, int gaf, const std::string& field) {
   if (isSheenGaf(gaf))
     throw Error(kExitUsage, field + ": gaf '" + gafNames()[gaf] + "' is a sheen visibility with a non-sheen NDF ('" +
                                 ndfNames()[ndf] + "'); it pairs with --ndf charlie only");
-  throw Error(kExitUsage, field + ": ndf 'charlie' (sheen) takes the sheen visibilities charlie-smith, neubelt (or none, "
-                              "implicit), not gaf '" + gafNames()[gaf] + "'");
+  throw Error(kExitUsage, field +
+                              ": ndf 'charlie' (sheen) takes the sheen visibilities charlie-smith, neubelt (or none, "
+                              "implicit), not gaf '" +
+                              gafNames()[gaf] + "'");
 }
 
 }  // namespace brdfbake

@@ -6,10 +6,20 @@
 
 namespace brdfbake {
 
-enum class TableKind { SplitSum, Albedo, AlbedoAvg, Kp, FresnelAvg, Brdf3d, AshikhminShirley, Dielectric, DielectricAvg };
+enum class TableKind {
+  SplitSum,
+  Albedo,
+  AlbedoAvg,
+  Kp,
+  FresnelAvg,
+  Brdf3d,
+  AshikhminShirley,
+  Dielectric,
+  DielectricAvg
+};
 
-const std::vector<std::string>& ndfNames();   // index = NDF_* id
-const std::vector<std::string>& gafNames();   // index = GAF_* id
+const std::vector<std::string>& ndfNames();    // index = NDF_* id
+const std::vector<std::string>& gafNames();    // index = GAF_* id
 const std::vector<std::string>& tableNames();  // in TableKind order
 
 // Name -> id; throws Error(kExitUsage) naming `field` and listing the valid names.

@@ -15,7 +15,7 @@
 namespace brdfbake {
 
 // The hidden names this tool uses in an output directory.
-inline const char* const kLockInfoName = ".brdfbake-lock";     // who holds the lock (while held)
+inline const char* const kLockInfoName = ".brdfbake-lock";        // who holds the lock (while held)
 inline const char* const kCommitRecordName = ".brdfbake-commit";  // a commit in progress
 // A temporary for `path` in the same directory, unique (mkstemp):
 // `.<name>.brdfbake-tmp-<pid>-XXXXXX`, the marker and this process's PID saying whose it is.

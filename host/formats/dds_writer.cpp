@@ -20,10 +20,14 @@ uint32_t ddsDxgiFormat(int channels, Precision p) {
   static const uint32_t kUnorm8[4] = {61, 49, 0, 28};   // R8_UNORM, R8G8_UNORM, -, R8G8B8A8_UNORM
   if (channels < 1 || channels > 4) return 0;
   switch (p) {
-    case Precision::Float32: return kFloat32[channels - 1];
-    case Precision::Float16: return kFloat16[channels - 1];
-    case Precision::Unorm16: return kUnorm16[channels - 1];
-    case Precision::Unorm8: return kUnorm8[channels - 1];
+    case Precision::Float32:
+      return kFloat32[channels - 1];
+    case Precision::Float16:
+      return kFloat16[channels - 1];
+    case Precision::Unorm16:
+      return kUnorm16[channels - 1];
+    case Precision::Unorm8:
+      return kUnorm8[channels - 1];
   }
   return 0;
 }
@@ -47,7 +51,7 @@ void writeDdsTemporary(const std::string& tmp, const std::string& path, const Sl
                 (volume ? DDSD_DEPTH : 0u));
   putU32(h, static_cast<uint32_t>(src.height));
   putU32(h, static_cast<uint32_t>(src.width));
-  putU32(h, static_cast<uint32_t>(src.width) * texelBytes);  // dwPitchOrLinearSize: bytes per row
+  putU32(h, static_cast<uint32_t>(src.width) * texelBytes);   // dwPitchOrLinearSize: bytes per row
   putU32(h, volume ? static_cast<uint32_t>(src.depth) : 0u);  // dwDepth
   putU32(h, 1);                                               // dwMipMapCount
   for (int k = 0; k < 11; ++k) putU32(h, 0);                  // dwReserved1

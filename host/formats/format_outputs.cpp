@@ -42,7 +42,8 @@ int binaryChannels(int channels) { return channels == 3 ? 4 : channels; }
 // brdf.error = the table's error without storage + `storage`.
 }  // namespace
 
-TableImage formatMetadata(const TableImage& src, FileFormat f, Precision p, double computeError, double storage, int channels) {
+TableImage formatMetadata(const TableImage& src, FileFormat f, Precision p, double computeError, double storage,
+                          int channels) {
   TableImage m = headerOf(src);
   const int out = f == FileFormat::Ktx2 || f == FileFormat::Dds ? binaryChannels(channels) : channels;
   std::string desc = formatName(f);
@@ -58,7 +59,7 @@ TableImage formatMetadata(const TableImage& src, FileFormat f, Precision p, doub
 }
 
 OutputFile formatWriter(const std::string& path, FileFormat f, Precision p, const TableImage& meta,
-                      const SliceSource& src, const std::string& stem, bool js) {
+                        const SliceSource& src, const std::string& stem, bool js) {
   OutputFile o;
   o.path = path;
   const int out = binaryChannels(src.channels);
@@ -67,13 +68,15 @@ OutputFile formatWriter(const std::string& path, FileFormat f, Precision p, cons
   o.bytesBound = f == FileFormat::Header ? 2 * (texels * out * 18 + 65536) : texels * out * 4 + 65536;
   const std::string name = "brdf_" + stem.substr(stem.find_last_of('/') + 1);
   o.write = [f, p, meta, src, out, name, js, path](const std::string& tmp) {
-    if (f == FileFormat::Ktx2) writeKtx2Temporary(tmp, path, meta, src, out, p);
-    else if (f == FileFormat::Dds) writeDdsTemporary(tmp, path, src, out, p);
-    else writeHeaderTemporary(tmp, path, meta, src, p, name, js);
+    if (f == FileFormat::Ktx2)
+      writeKtx2Temporary(tmp, path, meta, src, out, p);
+    else if (f == FileFormat::Dds)
+      writeDdsTemporary(tmp, path, src, out, p);
+    else
+      writeHeaderTemporary(tmp, path, meta, src, p, name, js);
   };
   return o;
 }
-
 
 std::vector<PlannedFile> tableOutputs(const FileSpec& job, const TableImage& baked, std::deque<TableImage>& keep) {
   // the engine's layout (formats/layout.h): every file of the set holds the same arrangement
@@ -98,9 +101,10 @@ std::vector<PlannedFile> tableOutputs(const FileSpec& job, const TableImage& bak
   const double computeError = std::max(0.0, stated - exrStorage);
   const std::string table = img.strings.count("brdf.table") ? img.strings.at("brdf.table") : "table";
   for (FileFormat f : job.formats)
-    if (f != FileFormat::Png16 && f != FileFormat::Exr && isUnorm(job.precision) && (lo0 < -kUnormSlack || hi0 > 1 + kUnormSlack))
-      throw Error(kExitUsage, stem + formatExtension(f) + ": the " + table + " table's values span [" + fmtG(lo0) + ", " +
-                                  fmtG(hi0) + "], outside [0, 1], which " + precisionName(job.precision) +
+    if (f != FileFormat::Png16 && f != FileFormat::Exr && isUnorm(job.precision) &&
+        (lo0 < -kUnormSlack || hi0 > 1 + kUnormSlack))
+      throw Error(kExitUsage, stem + formatExtension(f) + ": the " + table + " table's values span [" + fmtG(lo0) +
+                                  ", " + fmtG(hi0) + "], outside [0, 1], which " + precisionName(job.precision) +
                                   " cannot hold; float32 or float16 (exr, ktx2, dds, header) can, and png16 maps the "
                                   "range onto its 16 bits; nothing was written");
 
@@ -108,7 +112,8 @@ std::vector<PlannedFile> tableOutputs(const FileSpec& job, const TableImage& bak
   const int nchan = static_cast<int>(img.channels.size());
   if (nchan < 3 && std::find(job.formats.begin(), job.formats.end(), FileFormat::Png16) != job.formats.end())
     throw Error(kExitUsage, stem + ".png: --format png16 stores RGB or RGBA, and this " + table + " table has " +
-                                std::to_string(nchan) + " channels (--channels); give three (e.g. --channels A,B,A+B) or "
+                                std::to_string(nchan) +
+                                " channels (--channels); give three (e.g. --channels A,B,A+B) or "
                                 "another format (ktx2, dds, exr, header); nothing was written");
   SliceSource src;
   src.width = img.width;
@@ -133,8 +138,9 @@ std::vector<PlannedFile> tableOutputs(const FileSpec& job, const TableImage& bak
       storage += std::ldexp(1.0, -24);
       TableImage& m = keep.emplace_back(formatMetadata(img, f, p, computeError, storage, nchan));
       m.planes = img.planes;
-      m.strings["brdf.mapping"] = "value = png / 65535 * scale + offset (scale = brdf.mapping.scale, offset = "
-                                  "brdf.mapping.offset; png the 16-bit sample)";
+      m.strings["brdf.mapping"] =
+          "value = png / 65535 * scale + offset (scale = brdf.mapping.scale, offset = "
+          "brdf.mapping.offset; png the 16-bit sample)";
       m.strings["brdf.mapping.scale"] = fmtG(scale, 17);
       m.strings["brdf.mapping.offset"] = fmtG(offset, 17);
       const std::string path = stem + ".png";

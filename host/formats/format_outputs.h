@@ -51,7 +51,7 @@ TableImage formatMetadata(const TableImage& src, FileFormat f, Precision p, doub
                           int channels);
 // The OutputFile that writes `src` in the binary or header format `f` (KTX2, DDS, header; `js`:
 // the header's .mjs twin) with metadata `meta`.
-OutputFile formatWriter(const std::string& path, FileFormat f, Precision p, const TableImage& meta, const SliceSource& src,
-                        const std::string& stem, bool js);
+OutputFile formatWriter(const std::string& path, FileFormat f, Precision p, const TableImage& meta,
+                        const SliceSource& src, const std::string& stem, bool js);
 
 }  // namespace brdfbake

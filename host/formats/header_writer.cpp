@@ -27,9 +27,12 @@ std::string quoted(const std::string& s, bool js) {
   std::string q = "\"";
   char buf[8];
   for (unsigned char ch : s) {
-    if (ch == '"' || ch == '\\') q += std::string("\\") + static_cast<char>(ch);
-    else if (ch == '?' && !js) q += "\\?";
-    else if (ch >= 0x20 && ch < 0x7F) q += static_cast<char>(ch);
+    if (ch == '"' || ch == '\\')
+      q += std::string("\\") + static_cast<char>(ch);
+    else if (ch == '?' && !js)
+      q += "\\?";
+    else if (ch >= 0x20 && ch < 0x7F)
+      q += static_cast<char>(ch);
     else {
       std::snprintf(buf, sizeof buf, js ? "\\x%02x" : "\\%03o", ch);
       q += buf;
@@ -71,10 +74,14 @@ const char* jsArray(Precision p) {
 }
 std::string decodeText(Precision p) {
   switch (p) {
-    case Precision::Float32: return "value = data[i] (float32)";
-    case Precision::Float16: return "value = the IEEE 754 binary16 number whose bits are data[i] (float16)";
-    case Precision::Unorm16: return "value = data[i] / 65535 (unorm16)";
-    case Precision::Unorm8: return "value = data[i] / 255 (unorm8)";
+    case Precision::Float32:
+      return "value = data[i] (float32)";
+    case Precision::Float16:
+      return "value = the IEEE 754 binary16 number whose bits are data[i] (float16)";
+    case Precision::Unorm16:
+      return "value = data[i] / 65535 (unorm16)";
+    case Precision::Unorm8:
+      return "value = data[i] / 255 (unorm8)";
   }
   return "";
 }
@@ -101,8 +108,8 @@ void writeHeaderTemporary(const std::string& tmp, const std::string& path, const
   for (const auto& [k, v] : attrs) h += "// " + k + " = " + commentText(v) + "\n";
   const std::string d = std::to_string(src.depth), wdt = std::to_string(src.width), hgt = std::to_string(src.height);
   if (js) {
-    h += "export const width = " + wdt + ", height = " + hgt + ", depth = " + d + ", channels = " +
-         std::to_string(src.channels) + ";\n";
+    h += "export const width = " + wdt + ", height = " + hgt + ", depth = " + d +
+         ", channels = " + std::to_string(src.channels) + ";\n";
     h += "export const channelNames = " + quoted(channelNames, true) + ";\n";
     h += "export const precision = " + quoted(precisionName(p), true) + ";\n";
     h += "export const attributes = Object.freeze({\n";

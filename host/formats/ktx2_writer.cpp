@@ -22,16 +22,21 @@ namespace brdfbake {
 
 uint32_t ktx2VkFormat(int channels, Precision p) {
   // VkFormat values (Vulkan 1.0 core): the UNORM / SFLOAT entries of each component width
-  static const uint32_t kUnorm8[4] = {9, 16, 23, 37};          // R8_UNORM .. R8G8B8A8_UNORM
-  static const uint32_t kUnorm16[4] = {70, 77, 84, 91};        // R16_UNORM .. R16G16B16A16_UNORM
-  static const uint32_t kFloat16[4] = {76, 83, 90, 97};        // R16_SFLOAT .. R16G16B16A16_SFLOAT
-  static const uint32_t kFloat32[4] = {100, 103, 106, 109};    // R32_SFLOAT .. R32G32B32A32_SFLOAT
-  if (channels < 1 || channels > 4) throw Error(kExitSoftware, "internal: KTX2 with " + std::to_string(channels) + " channels");
+  static const uint32_t kUnorm8[4] = {9, 16, 23, 37};        // R8_UNORM .. R8G8B8A8_UNORM
+  static const uint32_t kUnorm16[4] = {70, 77, 84, 91};      // R16_UNORM .. R16G16B16A16_UNORM
+  static const uint32_t kFloat16[4] = {76, 83, 90, 97};      // R16_SFLOAT .. R16G16B16A16_SFLOAT
+  static const uint32_t kFloat32[4] = {100, 103, 106, 109};  // R32_SFLOAT .. R32G32B32A32_SFLOAT
+  if (channels < 1 || channels > 4)
+    throw Error(kExitSoftware, "internal: KTX2 with " + std::to_string(channels) + " channels");
   switch (p) {
-    case Precision::Unorm8: return kUnorm8[channels - 1];
-    case Precision::Unorm16: return kUnorm16[channels - 1];
-    case Precision::Float16: return kFloat16[channels - 1];
-    case Precision::Float32: return kFloat32[channels - 1];
+    case Precision::Unorm8:
+      return kUnorm8[channels - 1];
+    case Precision::Unorm16:
+      return kUnorm16[channels - 1];
+    case Precision::Float16:
+      return kFloat16[channels - 1];
+    case Precision::Float32:
+      return kFloat32[channels - 1];
   }
   return 0;
 }
@@ -43,16 +48,16 @@ std::string dataFormatDescriptor(int channels, Precision p) {
   const uint32_t bytes = static_cast<uint32_t>(bytesPerChannel(p));
   const uint32_t blockSize = 24 + 16 * static_cast<uint32_t>(channels);
   std::string d;
-  putU32(d, 4 + blockSize);           // dfdTotalSize
-  putU32(d, 0);                       // vendorId 0 (Khronos, 17 bits) | descriptorType 0 (basic) << 17
-  putU32(d, 2 | (blockSize << 16));   // versionNumber 2 (KDF 1.3) | descriptorBlockSize << 16
-  putU8(d, 1);                        // colorModel KHR_DF_MODEL_RGBSDA
-  putU8(d, 1);                        // colorPrimaries KHR_DF_PRIMARIES_BT709 (as vk2dfd for colour formats)
-  putU8(d, 1);                        // transferFunction KHR_DF_TRANSFER_LINEAR (data, not sRGB)
-  putU8(d, 0);                        // flags KHR_DF_FLAG_ALPHA_STRAIGHT
-  putU32(d, 0);                       // texelBlockDimension0..3 = 0: a 1x1x1x1 block
-  putU8(d, bytes * static_cast<uint32_t>(channels));  // bytesPlane0: the texel's bytes
-  for (int k = 0; k < 7; ++k) putU8(d, 0);             // bytesPlane1..7
+  putU32(d, 4 + blockSize);          // dfdTotalSize
+  putU32(d, 0);                      // vendorId 0 (Khronos, 17 bits) | descriptorType 0 (basic) << 17
+  putU32(d, 2 | (blockSize << 16));  // versionNumber 2 (KDF 1.3) | descriptorBlockSize << 16
+  putU8(d, 1);                       // colorModel KHR_DF_MODEL_RGBSDA
+  putU8(d, 1);                       // colorPrimaries KHR_DF_PRIMARIES_BT709 (as vk2dfd for colour formats)
+  putU8(d, 1);                       // transferFunction KHR_DF_TRANSFER_LINEAR (data, not sRGB)
+  putU8(d, 0);                       // flags KHR_DF_FLAG_ALPHA_STRAIGHT
+  putU32(d, 0);                      // texelBlockDimension0..3 = 0: a 1x1x1x1 block
+  putU8(d, bytes * static_cast<uint32_t>(channels));    // bytesPlane0: the texel's bytes
+  for (int k = 0; k < 7; ++k) putU8(d, 0);              // bytesPlane1..7
   static const uint32_t kChannelId[4] = {0, 1, 2, 15};  // R, G, B, A (KHR_DF_CHANNEL_RGBSDA_*)
   for (int c = 0; c < channels; ++c) {
     const bool isFloat = !isUnorm(p);
@@ -113,10 +118,10 @@ void writeKtx2Temporary(const std::string& tmp, const std::string& path, const T
   putU32(head, static_cast<uint32_t>(src.width));
   putU32(head, static_cast<uint32_t>(src.height));
   putU32(head, volume ? static_cast<uint32_t>(src.depth) : 0u);  // pixelDepth: 0 for 2D
-  putU32(head, 0);  // layerCount: not an array
-  putU32(head, 1);  // faceCount
-  putU32(head, 1);  // levelCount: level 0 only
-  putU32(head, 0);  // supercompressionScheme: none
+  putU32(head, 0);                                               // layerCount: not an array
+  putU32(head, 1);                                               // faceCount
+  putU32(head, 1);                                               // levelCount: level 0 only
+  putU32(head, 0);                                               // supercompressionScheme: none
   putU32(head, static_cast<uint32_t>(dfdOffset));
   putU32(head, static_cast<uint32_t>(dfd.size()));
   putU32(head, kvd.empty() ? 0u : static_cast<uint32_t>(kvdOffset));

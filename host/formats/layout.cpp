@@ -15,14 +15,26 @@ const std::vector<LayoutPreset>& layoutPresets() {
   // (row 0 = r 0: no flip); they differ in the channels and the file. unity-hdrp-sqrt alone samples
   // x = sqrt(NoV) on a node grid.
   static const std::vector<LayoutPreset> presets = {
-      {"filament", {false, false, false, {"B", "A+B"}}, FileFormat::Ktx2, Precision::Float16, 128,
+      {"filament",
+       {false, false, false, {"B", "A+B"}},
+       FileFormat::Ktx2,
+       Precision::Float16,
+       128,
        "google/filament shaders/src/light_indirect.fs: PrefilteredDFG_LUT = textureLod(light_iblDFG, vec2(NoV, "
        "roughness), 0.0).rg; specularDFG = mix(dfg.xxx, dfg.yyy, f0) (multiple scattering): R = B, G = A + B"},
-      {"bevy", {false, false, false, {"A", "B"}}, FileFormat::Ktx2, Precision::Float16, 64,
+      {"bevy",
+       {false, false, false, {"A", "B"}},
+       FileFormat::Ktx2,
+       Precision::Float16,
+       64,
        "bevyengine/bevy crates/bevy_pbr/src/environment_map/environment_map.wgsl: f_ab = "
        "textureSample(environment_map_brdf_lut, s, vec2(NdotV, perceptual_roughness)).rg; FssEss = kS * f_ab.x + "
        "f_ab.y: R = A, G = B"},
-      {"unity-hdrp", {false, false, false, {"B", "A+B"}}, FileFormat::Exr, Precision::Float16, 64,
+      {"unity-hdrp",
+       {false, false, false, {"B", "A+B"}},
+       FileFormat::Exr,
+       Precision::Float16,
+       64,
        "Unity-Technologies/Graphics com.unity.render-pipelines.high-definition/HDRP/Material/PreIntegratedFGD/"
        "PreIntegratedFGD.hlsl: preFGD = SAMPLE_TEXTURE2D_LOD(_PreIntegratedFGD_GGXDisneyDiffuse, "
        "s_linear_clamp_sampler, float2(NdotV, perceptualRoughness), 0); specularFGD = lerp(preFGD.xxx, "
@@ -30,7 +42,11 @@ const std::vector<LayoutPreset>& layoutPresets() {
        "grid: unity-hdrp-sqrt)"},
       // HDRP's current form: x = sqrt(NdotV) on a node grid (Remap01ToHalfTexelCoord), so the preset bakes the
       // sqrt mu axis (--mu-axis sqrt) on nodes (--grid node)
-      {"unity-hdrp-sqrt", {false, false, false, {"B", "A+B"}}, FileFormat::Exr, Precision::Float16, 64,
+      {"unity-hdrp-sqrt",
+       {false, false, false, {"B", "A+B"}},
+       FileFormat::Exr,
+       Precision::Float16,
+       64,
        "Unity-Technologies/Graphics com.unity.render-pipelines.high-definition/Runtime/Material/PreIntegratedFGD/"
        "PreIntegratedFGD.hlsl: GetPreIntegratedFGDGGXAndDisneyDiffuse: coordLUT = Remap01ToHalfTexelCoord("
        "float2(sqrt(NdotV), perceptualRoughness), FGDTEXTURE_RESOLUTION); preFGD = SAMPLE_TEXTURE2D_LOD("
@@ -41,15 +57,24 @@ const std::vector<LayoutPreset>& layoutPresets() {
        "PreIntegratedFGD.cs.hlsl: FGDTEXTURE_RESOLUTION 64; core ImageBasedLighting.hlsl "
        "IntegrateGGXAndDisneyDiffuseFGD: x += w (1 - V.H)^5, y += w: R = B, G = A + B (z, the Disney diffuse "
        "albedo - 0.5, is not baked)",
-       true, true},
-      {"unreal", {false, false, false, {"A", "B"}}, FileFormat::Dds, Precision::Unorm16, 128,
+       true,
+       true},
+      {"unreal",
+       {false, false, false, {"A", "B"}},
+       FileFormat::Dds,
+       Precision::Unorm16,
+       128,
        "Epic Games' Unreal Engine (its repository is access-restricted; read in the public mirror "
        "chenyong2github/UnrealEngine) Engine/Shaders/Private/BRDF.ush: EnvBRDF: AB = Texture2DSampleLevel("
        "PreIntegratedGF, PreIntegratedGFSampler, float2(NoV, Roughness), 0).rg; SpecularColor * AB.x + "
        "saturate(50.0 * SpecularColor.g) * AB.y; Engine/Source/Runtime/Renderer/Private/SystemTextures.cpp "
        "(PreintegratedGF): x is NoV = (x + 0.5) / width, y is Roughness = (y + 0.5) / height, PF_G16R16 with "
        "Dest[0] = A, Dest[1] = B as unorm16: R = A, G = B, row 0 = roughness 0"},
-      {"gltf-sample-viewer", {false, false, false, {}}, FileFormat::Png16, Precision::Unorm16, 128,
+      {"gltf-sample-viewer",
+       {false, false, false, {}},
+       FileFormat::Png16,
+       Precision::Unorm16,
+       128,
        "KhronosGroup/glTF-Sample-Viewer source/Renderer/shaders/ibl.glsl: brdf = texture(u_GGXLUT, "
        "clamp(vec2(NdotV, perceptualRoughness), 0.0, 1.0)).rg; specularColor * brdf.x + brdf.y: R = A, G = B "
        "(the baker's B = A + B rides along in the PNG's third channel); source/Renderer/webgl.js setTexture: "
@@ -68,7 +93,8 @@ std::string layoutName(const std::optional<std::string>& preset, const TableLayo
   if (layout.flipY) n += "_flip-y";
   if (!layout.channels.empty()) {
     n += "_";
-    for (size_t c = 0; c < layout.channels.size(); ++c) n += (c ? "-" : "") + (layout.channels[c] == "A+B" ? std::string("AB") : layout.channels[c]);
+    for (size_t c = 0; c < layout.channels.size(); ++c)
+      n += (c ? "-" : "") + (layout.channels[c] == "A+B" ? std::string("AB") : layout.channels[c]);
   }
   return n;
 }
@@ -79,7 +105,8 @@ const LayoutPreset& layoutPreset(const std::string& name) {
     if (p.name == name) return p;
     names.push_back(p.name);
   }
-  throw Error(kExitUsage, "--layout: unknown preset '" + name + "'" + didYouMean(name, names) + "; presets: " + joinNames(names) +
+  throw Error(kExitUsage, "--layout: unknown preset '" + name + "'" + didYouMean(name, names) +
+                              "; presets: " + joinNames(names) +
                               " (or set the layout with --axes mu,r|r,mu, --flip-x, --flip-y, --channels)");
 }
 
@@ -110,8 +137,10 @@ TableImage applyLayout(const TableImage& img, const TableLayout& layout) {
   auto ch = img.strings.find("brdf.channels");
   if (ch == img.strings.end() || ch->second.rfind("R=A,G=B", 0) != 0 || img.planes.size() < 2)
     throw Error(kExitUsage, "--layout, --axes, --flip-x, --flip-y, --channels apply to the splitsum table only");
-  const std::vector<std::string> chans = layout.channels.empty() ? std::vector<std::string>{"A", "B", "A+B"} : layout.channels;
-  const bool thirdIsSum = img.planes.size() > 2 && ch != img.strings.end() && ch->second.find("B=A+B") != std::string::npos;
+  const std::vector<std::string> chans =
+      layout.channels.empty() ? std::vector<std::string>{"A", "B", "A+B"} : layout.channels;
+  const bool thirdIsSum =
+      img.planes.size() > 2 && ch != img.strings.end() && ch->second.find("B=A+B") != std::string::npos;
   TableImage out = img;
   const int w = img.width, h = img.height;
   out.width = layout.rAlongX ? h : w;
@@ -131,9 +160,13 @@ TableImage applyLayout(const TableImage& img, const TableLayout& layout) {
   for (size_t c = 0; c < chans.size(); ++c) stored += (c ? "," : "") + chans[c];
   out.strings["brdf.axes"] = layout.rAlongX ? "r,mu" : "mu,r";
   out.strings["brdf.channels"] = "";
-  for (size_t c = 0; c < chans.size(); ++c) out.strings["brdf.channels"] += std::string(c ? "," : "") + "RGB"[c] + "=" + chans[c];
+  for (size_t c = 0; c < chans.size(); ++c)
+    out.strings["brdf.channels"] += std::string(c ? "," : "") + "RGB"[c] + "=" + chans[c];
   out.strings["brdf.layout.channels"] = stored;
-  out.strings["brdf.layout.flip"] = layout.flipX && layout.flipY ? "x,y" : layout.flipX ? "x" : layout.flipY ? "y" : "none";
+  out.strings["brdf.layout.flip"] = layout.flipX && layout.flipY ? "x,y"
+                                    : layout.flipX               ? "x"
+                                    : layout.flipY               ? "y"
+                                                                 : "none";
   return out;
 }
 

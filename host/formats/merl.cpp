@@ -15,7 +15,7 @@
 #include "common/format.h"
 #include "common/input_file.h"
 #include "formats/exr/table_file.h"  // temporaryPathFor
-#include "formats/storage.h"  // TempFileWriter
+#include "formats/storage.h"         // TempFileWriter
 
 namespace brdfbake {
 
@@ -68,10 +68,11 @@ Brdf3dSpec merlSpec(Brdf3dSpec s) {
   return s;
 }
 
-void writeMerlTemporary(const std::string& tmp, const std::string& path, const std::vector<std::vector<float>>& planes) {
+void writeMerlTemporary(const std::string& tmp, const std::string& path,
+                        const std::vector<std::vector<float>>& planes) {
   if (planes.size() != 1 && planes.size() != 3)
-    throw Error(kExitDataErr, "cannot write " + path + ": a MERL file holds 1 or 3 channels, got " +
-                                  std::to_string(planes.size()));
+    throw Error(kExitDataErr,
+                "cannot write " + path + ": a MERL file holds 1 or 3 channels, got " + std::to_string(planes.size()));
   for (const auto& p : planes)
     if (p.size() != kMerlBins)
       throw Error(kExitDataErr, "cannot write " + path + ": a MERL table has 90x90x180 = " + std::to_string(kMerlBins) +
@@ -195,7 +196,8 @@ MerlData readMerl(const std::string& path) {
   struct stat st;
   if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
     ::close(fd);
-    throw Error(kExitNoInput, "cannot read MERL file " + path + ": " + fileTypeName(st.st_mode) + ", not a regular file");
+    throw Error(kExitNoInput,
+                "cannot read MERL file " + path + ": " + fileTypeName(st.st_mode) + ", not a regular file");
   }
   ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   auto readAll = [&](unsigned char* p, size_t n) {
@@ -206,7 +208,8 @@ MerlData readMerl(const std::string& path) {
       if (r <= 0) {
         const int err = r < 0 ? errno : EIO;
         ::close(fd);
-        throw Error(kExitNoInput, "cannot read MERL file " + path + ": " + (r < 0 ? errnoText(err) : "file shrank while reading"));
+        throw Error(kExitNoInput,
+                    "cannot read MERL file " + path + ": " + (r < 0 ? errnoText(err) : "file shrank while reading"));
       }
       done += static_cast<size_t>(r);
     }
@@ -214,14 +217,17 @@ MerlData readMerl(const std::string& path) {
   const uint64_t size = static_cast<uint64_t>(st.st_size);
   unsigned char head[12];
   if (size >= 12) readAll(head, 12);
-  const bool headOk = size >= 12 && getU32(head) == kMerlThetaH && getU32(head + 4) == kMerlThetaD &&
-                      getU32(head + 8) == kMerlPhiD;
+  const bool headOk =
+      size >= 12 && getU32(head) == kMerlThetaH && getU32(head + 4) == kMerlThetaD && getU32(head + 8) == kMerlPhiD;
   if (size >= 12 && !headOk) {
     ::close(fd);
     char found[96];
-    std::snprintf(found, sizeof found, "%d %d %d", int32_t(getU32(head)), int32_t(getU32(head + 4)), int32_t(getU32(head + 8)));
-    throw Error(kExitDataErr, "MERL file " + path + ": bad header: expected the dimensions 90 90 180 (three "
-                              "little-endian int32), found " + found);
+    std::snprintf(found, sizeof found, "%d %d %d", int32_t(getU32(head)), int32_t(getU32(head + 4)),
+                  int32_t(getU32(head + 8)));
+    throw Error(kExitDataErr, "MERL file " + path +
+                                  ": bad header: expected the dimensions 90 90 180 (three "
+                                  "little-endian int32), found " +
+                                  found);
   }
   if (size != kMerlFileBytes) {
     ::close(fd);
@@ -249,8 +255,9 @@ MerlData readMerl(const std::string& path) {
       double raw = getF64(buf.data() + (size_t(c) * kMerlBins + i) * 8);
       if (!std::isfinite(raw)) {
         int th = int(i / (kMerlThetaD * kMerlPhiD)), td = int(i / kMerlPhiD % kMerlThetaD), pd = int(i % kMerlPhiD);
-        throw Error(kExitDataErr, "MERL file " + path + ": channel " + "RGB"[c] + " bin (theta_h " + std::to_string(th) +
-                                      ", theta_d " + std::to_string(td) + ", phi_d " + std::to_string(pd) +
+        throw Error(kExitDataErr, "MERL file " + path + ": channel " + "RGB"[c] + " bin (theta_h " +
+                                      std::to_string(th) + ", theta_d " + std::to_string(td) + ", phi_d " +
+                                      std::to_string(pd) +
                                       ") is not finite; expected a finite value (negative = not measured)");
       }
       d.f[c][i] = raw * kMerlScale[c];
@@ -264,10 +271,11 @@ MerlData readMerl(const std::string& path) {
     for (size_t i = 0; i < kMerlBins; ++i) measured += d.usable[c][i];
     d.measuredShare[c] = lit ? double(measured) / double(lit) : 0.0;
     if (d.measuredShare[c] < kMerlMinMeasured)
-      throw Error(kExitDataErr, "MERL file " + path + ": channel " + "RGB"[c] + " measures " + std::to_string(measured) +
-                                    " of the " + std::to_string(lit) + " bins above the horizon (" +
-                                    fmtG(100 * d.measuredShare[c], 3) + "%); a material needs at least " +
-                                    fmtG(100 * kMerlMinMeasured, 3) + "% (negative values mark unmeasured bins)");
+      throw Error(kExitDataErr, "MERL file " + path + ": channel " + "RGB"[c] + " measures " +
+                                    std::to_string(measured) + " of the " + std::to_string(lit) +
+                                    " bins above the horizon (" + fmtG(100 * d.measuredShare[c], 3) +
+                                    "%); a material needs at least " + fmtG(100 * kMerlMinMeasured, 3) +
+                                    "% (negative values mark unmeasured bins)");
   }
   return d;
 }

@@ -20,7 +20,7 @@ namespace brdfbake {
 
 constexpr int kMerlThetaH = 90, kMerlThetaD = 90, kMerlPhiD = 180;
 constexpr size_t kMerlBins = size_t(kMerlThetaH) * kMerlThetaD * kMerlPhiD;  // 1458000
-constexpr size_t kMerlFileBytes = 12 + 3 * kMerlBins * sizeof(double);      // 34992012
+constexpr size_t kMerlFileBytes = 12 + 3 * kMerlBins * sizeof(double);       // 34992012
 // What a reader multiplies the stored R, G, B by (a writer divides by it).
 constexpr double kMerlScale[3] = {1.0 / 1500.0, 1.15 / 1500.0, 1.66 / 1500.0};
 
@@ -55,12 +55,12 @@ constexpr double kMerlMinMeasured = 0.5;
 // A MERL file in memory: the BRDF (stored values times kMerlScale) in MERL's bin order.
 struct MerlData {
   std::string path;
-  std::array<std::vector<double>, 3> f;     // f[c][merlIndex(th, td, pd)]
+  std::array<std::vector<double>, 3> f;  // f[c][merlIndex(th, td, pd)]
   // Bins an interpolation may use, per channel: value >= 0 (measured) and the bin's sample
   // configuration (its lower edges) has both directions above the horizon.
   std::array<std::vector<uint8_t>, 3> usable;
-  std::array<size_t, 3> negative{};         // bins holding a negative value (not measured)
-  size_t belowHorizon = 0;                  // bins whose sample configuration is below the horizon
+  std::array<size_t, 3> negative{};  // bins holding a negative value (not measured)
+  size_t belowHorizon = 0;           // bins whose sample configuration is below the horizon
   // The share of the bins above the horizon that are measured, per channel (readMerl refuses a
   // file where it is below kMerlMinMeasured in any channel).
   std::array<double, 3> measuredShare{};

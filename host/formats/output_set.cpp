@@ -25,8 +25,8 @@ namespace {
 // ---- what the signal handler may touch: fixed buffers, no allocation -----------------------
 constexpr int kMaxPaths = kMaxFilesPerSet + 1;  // every temporary, and the lock's holder line
 constexpr int kPathLen = 4096;
-char gPaths[kMaxPaths][kPathLen];   // temporaries to unlink
-char gDirs[64][kPathLen];           // directories we created, to rmdir (deepest last)
+char gPaths[kMaxPaths][kPathLen];  // temporaries to unlink
+char gDirs[64][kPathLen];          // directories we created, to rmdir (deepest last)
 volatile sig_atomic_t gNumPaths = 0, gNumDirs = 0;
 char gWhat[1024];
 
@@ -108,8 +108,10 @@ bool copyFile(const std::string& from, const std::string& to) {
 // BRDFBAKE_TEST_NO_HARDLINKS=1 makes link() fail as on such a file system (tests/commit_test.cpp).
 bool keepBackup(const std::string& path, const std::string& backup) {
   const char* noLinks = std::getenv("BRDFBAKE_TEST_NO_HARDLINKS");
-  if (noLinks && *noLinks == '1') errno = EPERM;
-  else if (::link(path.c_str(), backup.c_str()) == 0) return true;
+  if (noLinks && *noLinks == '1')
+    errno = EPERM;
+  else if (::link(path.c_str(), backup.c_str()) == 0)
+    return true;
   if (errno != EPERM && errno != ENOTSUP && errno != EOPNOTSUPP && errno != EXDEV && errno != EMLINK && errno != ENOSYS)
     return false;
   return copyFile(path, backup);
@@ -162,7 +164,8 @@ void checkOutputDir(const std::string& dir) {
   while (true) {
     struct stat lst {};
     if (::lstat(cur.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode) && ::stat(cur.c_str(), &lst) != 0)
-      throw Error(kExitCantCreat, "-o: '" + cur + "' is a symbolic link to nothing (a dangling link): give a directory");
+      throw Error(kExitCantCreat,
+                  "-o: '" + cur + "' is a symbolic link to nothing (a dangling link): give a directory");
     if (isDir(cur, &exists)) break;
     if (exists) throw Error(kExitCantCreat, "-o: '" + cur + "' exists and is not a directory");
     std::string up = parentOf(cur);
@@ -208,7 +211,8 @@ void guardInterrupts(const std::string& what) {
 void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files, bool wait) {
   if (files.size() > static_cast<size_t>(kMaxFilesPerSet))
     throw Error(kExitUsage, "too many files in one set (" + std::to_string(files.size()) + "; at most " +
-                                std::to_string(kMaxFilesPerSet) + " land together): ask for fewer tables or formats per run");
+                                std::to_string(kMaxFilesPerSet) +
+                                " land together): ask for fewer tables or formats per run");
   checkOutputDir(dir);
   // mkdir -p, remembering what we created; the handler sees each one before it exists
   std::vector<std::string> created, chain;
@@ -247,14 +251,16 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
   uint64_t need = 0;
   for (const auto& f : files)
     need += f.bytesBound ? f.bytesBound
-                         : f.image ? tableExrBytesBound(f.image->width, f.image->height, f.image->planes.size(), f.half)
-                                   : 0;
+            : f.image    ? tableExrBytesBound(f.image->width, f.image->height, f.image->planes.size(), f.half)
+                         : 0;
   const uint64_t free = need > 0 ? freeBytesAt(p) : UINT64_MAX;
   if (need > free) {
     cleanUp({}, created);
     char msg[512];
-    std::snprintf(msg, sizeof msg, "-o %s: not enough space: the %zu file(s) may need up to %.2f MB, %.2f MB free; "
-                  "nothing was written", dir.c_str(), files.size(), need / 1e6, free / 1e6);
+    std::snprintf(msg, sizeof msg,
+                  "-o %s: not enough space: the %zu file(s) may need up to %.2f MB, %.2f MB free; "
+                  "nothing was written",
+                  dir.c_str(), files.size(), need / 1e6, free / 1e6);
     throw Error(kExitIoErr, msg);
   }
 
@@ -295,8 +301,10 @@ void commitOutputs(const std::string& dir, const std::vector<OutputFile>& files,
     // the writers in order (they may share a device or a stream), then the images together
     std::vector<ExrTemporary> images;
     for (size_t k = 0; k < files.size(); ++k) {
-      if (files[k].write) files[k].write(temps[k]);
-      else images.push_back({temps[k], files[k].path, files[k].image, files[k].half});
+      if (files[k].write)
+        files[k].write(temps[k]);
+      else
+        images.push_back({temps[k], files[k].path, files[k].image, files[k].half});
     }
     writeTableExrTemporaries(images);
   } catch (const Error& e) {
@@ -395,7 +403,8 @@ void checkNotAnInput(const std::string& path, const std::vector<std::string>& in
     struct stat st {};
     if (::stat(in.c_str(), &st) == 0 && st.st_dev == out.st_dev && st.st_ino == out.st_ino)
       throw Error(kExitCantCreat, option + " " + path + ": is " + (in == path ? "" : "the same file as ") +
-                                      (in == path ? "" : in + ", ") + "an input of this command; it would be replaced by its output");
+                                      (in == path ? "" : in + ", ") +
+                                      "an input of this command; it would be replaced by its output");
   }
 }
 

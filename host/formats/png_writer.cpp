@@ -97,15 +97,16 @@ void writePng16Temporary(const std::string& tmp, const std::string& path, const 
       for (int c = 0; c < channels; ++c) {
         const double v = img.planes[c][y * w + x];
         const double q = std::nearbyint((v - offset) / scale * 65535.0);
-        if (!(q >= 0 && q <= 65535))
-          throw Error(kExitSoftware, "internal: " + path + " value outside its PNG mapping");
+        if (!(q >= 0 && q <= 65535)) throw Error(kExitSoftware, "internal: " + path + " value outside its PNG mapping");
         const unsigned code = static_cast<unsigned>(q);
         rows[y][(x * channels + c) * 2] = static_cast<png_byte>(code >> 8);
         rows[y][(x * channels + c) * 2 + 1] = static_cast<png_byte>(code & 0xFF);
       }
   std::vector<std::pair<std::string, std::string>> text = attributesAsText(img);
   for (const auto& [k, v] : text)
-    if (k.size() > 79) throw Error(kExitDataErr, "cannot write " + path + ": attribute name '" + k + "' is longer than PNG's 79-byte keyword");
+    if (k.size() > 79)
+      throw Error(kExitDataErr,
+                  "cannot write " + path + ": attribute name '" + k + "' is longer than PNG's 79-byte keyword");
 
   writeRows(tmp, path, img.width, img.height, channels, 16, rows, text);
 }

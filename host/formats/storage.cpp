@@ -44,8 +44,8 @@ FileFormat parseFormat(const std::string& opt, const std::string& name) {
     if (kFormatNames[i] == name) return static_cast<FileFormat>(i);
   std::vector<std::string> all = kFormatNames;
   all.push_back("merl");
-  throw Error(kExitUsage, opt + " must be one or more of " + join(kFormatNames) + " (merl: brdf3d only), got '" + name + "'" +
-                              didYouMean(name, all));
+  throw Error(kExitUsage, opt + " must be one or more of " + join(kFormatNames) + " (merl: brdf3d only), got '" + name +
+                              "'" + didYouMean(name, all));
 }
 
 Precision parsePrecision(const std::string& opt, const std::string& name) {
@@ -57,11 +57,16 @@ Precision parsePrecision(const std::string& opt, const std::string& name) {
 
 std::string formatExtension(FileFormat f) {
   switch (f) {
-    case FileFormat::Exr: return ".exr";
-    case FileFormat::Ktx2: return ".ktx2";
-    case FileFormat::Dds: return ".dds";
-    case FileFormat::Png16: return ".png";
-    case FileFormat::Header: return ".h";
+    case FileFormat::Exr:
+      return ".exr";
+    case FileFormat::Ktx2:
+      return ".ktx2";
+    case FileFormat::Dds:
+      return ".dds";
+    case FileFormat::Png16:
+      return ".png";
+    case FileFormat::Header:
+      return ".h";
   }
   return "";
 }
@@ -76,10 +81,13 @@ bool isUnorm(Precision p) { return p == Precision::Unorm16 || p == Precision::Un
 
 int bytesPerChannel(Precision p) {
   switch (p) {
-    case Precision::Float32: return 4;
+    case Precision::Float32:
+      return 4;
     case Precision::Float16:
-    case Precision::Unorm16: return 2;
-    case Precision::Unorm8: return 1;
+    case Precision::Unorm16:
+      return 2;
+    case Precision::Unorm8:
+      return 1;
   }
   return 4;
 }
@@ -91,7 +99,8 @@ uint32_t storedBits(float v, Precision p) {
       std::memcpy(&b, &v, 4);
       return b;
     }
-    case Precision::Float16: return Imath::half(v).bits();
+    case Precision::Float16:
+      return Imath::half(v).bits();
     default: {
       // round to nearest: the code whose value c/max is closest to v
       const double m = unormMax(p);
@@ -103,9 +112,12 @@ uint32_t storedBits(float v, Precision p) {
 
 double storedValue(float v, Precision p) {
   switch (p) {
-    case Precision::Float32: return v;
-    case Precision::Float16: return static_cast<float>(Imath::half(v));
-    default: return storedBits(v, p) / unormMax(p);
+    case Precision::Float32:
+      return v;
+    case Precision::Float16:
+      return static_cast<float>(Imath::half(v));
+    default:
+      return storedBits(v, p) / unormMax(p);
   }
 }
 
@@ -119,9 +131,12 @@ double storageError(const std::vector<float>& values, Precision p) {
 
 double storageErrorBound(Precision p) {
   switch (p) {
-    case Precision::Float32: return std::ldexp(1.0, -24);
-    case Precision::Float16: return std::ldexp(1.0, -11) + std::ldexp(1.0, -24);
-    default: return 0.5 / unormMax(p) + std::ldexp(1.0, -24);
+    case Precision::Float32:
+      return std::ldexp(1.0, -24);
+    case Precision::Float16:
+      return std::ldexp(1.0, -11) + std::ldexp(1.0, -24);
+    default:
+      return 0.5 / unormMax(p) + std::ldexp(1.0, -24);
   }
 }
 
@@ -139,8 +154,10 @@ void packTexels(const std::string& path, const std::vector<std::vector<float>>& 
         v = planes[c][i];
         std::string problem;
         ExitCode code = kExitDataErr;
-        if (!std::isfinite(v)) problem = std::isnan(v) ? "is NaN" : "is infinite";
-        else if (p == Precision::Float16 && std::fabs(v) > 65504.0f) problem = "exceeds the float16 range (|v| <= 65504)";
+        if (!std::isfinite(v))
+          problem = std::isnan(v) ? "is NaN" : "is infinite";
+        else if (p == Precision::Float16 && std::fabs(v) > 65504.0f)
+          problem = "exceeds the float16 range (|v| <= 65504)";
         else if (isUnorm(p) && !(v >= -kUnormSlack && v <= 1.0f + kUnormSlack)) {
           problem = "is outside [0, 1], which " + precisionName(p) +
                     " cannot hold (float32 or float16 can; for 2D tables also png16's mapping)";
@@ -161,7 +178,8 @@ TempFileWriter::TempFileWriter(const std::string& tmp, const std::string& path) 
     fd_ = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0666);
   } while (fd_ < 0 && errno == EINTR);
   if (fd_ < 0)
-    throw Error(kExitCantCreat, "cannot create " + path + ": " + std::strerror(errno) + " (temporary file " + tmp + ")");
+    throw Error(kExitCantCreat,
+                "cannot create " + path + ": " + std::strerror(errno) + " (temporary file " + tmp + ")");
 }
 
 TempFileWriter::~TempFileWriter() {

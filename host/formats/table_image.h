@@ -13,9 +13,9 @@
 namespace brdfbake {
 
 struct TableImage {
-  int width = 0, height = 0;               // x = first axis (width), y = second axis (height)
-  std::vector<std::string> channels;       // subset of "R","G","B","A", in that order
-  std::vector<std::vector<float>> planes;  // planes[c][y * width + x], one per channel
+  int width = 0, height = 0;                           // x = first axis (width), y = second axis (height)
+  std::vector<std::string> channels;                   // subset of "R","G","B","A", in that order
+  std::vector<std::vector<float>> planes;              // planes[c][y * width + x], one per channel
   std::map<std::string, std::string> strings;          // string header attributes
   std::map<std::string, std::pair<float, float>> v2f;  // Imath::V2f header attributes
   std::map<std::string, float> floats;                 // float header attributes

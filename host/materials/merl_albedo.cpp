@@ -58,11 +58,12 @@ Gauss gaussLegendre(int n) {
 
 // Bin edges as the quadrature needs them, computed once.
 struct Edges {
-  double cosThetaD[kMerlThetaD];               // cos of theta_d edges k = 1..89 (index k)
+  double cosThetaD[kMerlThetaD];                  // cos of theta_d edges k = 1..89 (index k)
   double sinPhiD[kMerlPhiD], cosPhiD[kMerlPhiD];  // of phi_d edges k pi/180
   Edges() {
     for (int k = 0; k < kMerlThetaD; ++k) cosThetaD[k] = std::cos(k * kPi / 2 / kMerlThetaD);
-    for (int k = 0; k < kMerlPhiD; ++k) sinPhiD[k] = std::sin(k * kPi / kMerlPhiD), cosPhiD[k] = std::cos(k * kPi / kMerlPhiD);
+    for (int k = 0; k < kMerlPhiD; ++k)
+      sinPhiD[k] = std::sin(k * kPi / kMerlPhiD), cosPhiD[k] = std::cos(k * kPi / kMerlPhiD);
   }
 };
 const Edges& edges() {
@@ -254,7 +255,8 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
         throw Error(kExitDataErr, "MERL file " + d.path + ": the " + tableName(kind) + " texel " + std::to_string(i) +
                                       " is not finite (the data's values are too large); nothing was written");
       double stored = half ? static_cast<double>(static_cast<float>(Imath::half(v))) : static_cast<double>(v);
-      claim = std::max(claim, (est[i].err[c] + std::fabs(stored - est[i].e[c])) / std::max(1.0, std::fabs(est[i].e[c])));
+      claim =
+          std::max(claim, (est[i].err[c] + std::fabs(stored - est[i].e[c])) / std::max(1.0, std::fabs(est[i].e[c])));
     }
   }
   claim += kMerlArithmetic;
@@ -262,8 +264,8 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
   img.strings["brdf.table"] = tableName(kind);
   img.strings["brdf.material"] = "merl:" + name;
   // the share of the lit bins the file measures, per channel (formats/merl.h kMerlMinMeasured)
-  img.strings["brdf.merl.measured"] = "R " + fmtG(d.measuredShare[0], 4) + ", G " + fmtG(d.measuredShare[1], 4) +
-                                      ", B " + fmtG(d.measuredShare[2], 4);
+  img.strings["brdf.merl.measured"] =
+      "R " + fmtG(d.measuredShare[0], 4) + ", G " + fmtG(d.measuredShare[1], 4) + ", B " + fmtG(d.measuredShare[2], 4);
   img.strings["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
   auto listOf = [](const auto& ladder) {
     std::string text;
@@ -285,21 +287,24 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
     img.strings["brdf.axes"] = "none";
     img.strings["brdf.channels"] = "R,G,B=E_avg (2 int E(mu) mu dmu of the measured material, per colour channel)";
     img.strings["brdf.method"] =
-        "E_avg = 16 int f W sin(theta_h) sin(theta_d) cos(theta_d) over (theta_h, theta_d, phi_d) (Rusinkiewicz's change "
-        "of variables, phi_h integrated out; W = cos(theta_i) cos(theta_o) > 0) of " + interpolant +
+        "E_avg = 16 int f W sin(theta_h) sin(theta_d) cos(theta_d) over (theta_h, theta_d, phi_d) (Rusinkiewicz's "
+        "change "
+        "of variables, phi_h integrated out; W = cos(theta_i) cos(theta_o) > 0) of " +
+        interpolant +
         ": Gauss-Legendre n per theta_h bin, per theta_d piece (bin edges, pi/2 - theta_h, and where the horizon's "
-        "phi_d crosses a phi_d edge) and per phi_d piece (bin edges and the horizon); n climbs " + listOf(kMerlAvgLadder) +
-        " until the estimate max(|Q_n - Q_prev|, |Q_n - Q_prev2|)" + claimText;
+        "phi_d crosses a phi_d edge) and per phi_d piece (bin edges and the horizon); n climbs " +
+        listOf(kMerlAvgLadder) + " until the estimate max(|Q_n - Q_prev|, |Q_n - Q_prev2|)" + claimText;
   } else {
     img.strings["brdf.axes"] = "mu";
     img.strings["brdf.grid"] = nodeGrid ? "node" : "texel-center";
     img.v2f["brdf.mu.range"] = {0.0f, 1.0f};
     img.strings["brdf.channels"] = merlChannels(kind);
     img.strings["brdf.method"] =
-        "h-space quadrature of " + interpolant + ": theta_h by Gauss-Legendre n per bin (bins cut where the horizon "
+        "h-space quadrature of " + interpolant +
+        ": theta_h by Gauss-Legendre n per bin (bins cut where the horizon "
         "turns and where a theta_d or phi_d edge touches the arc), phi_h by Gauss-Legendre n - 1 per piece between the "
-        "theta_d and phi_d bin edges and the horizon; n climbs " + listOf(kMerlLadder) +
-        " until the estimate max(|R_n - R_prev|, |R_n - R_prev2|)" + claimText;
+        "theta_d and phi_d bin edges and the horizon; n climbs " +
+        listOf(kMerlLadder) + " until the estimate max(|R_n - R_prev|, |R_n - R_prev2|)" + claimText;
   }
   img.floats["brdf.merl.unsupported"] = static_cast<float>(lost);
   float stored = static_cast<float>(claim);

@@ -27,7 +27,7 @@ using RusinkiewiczFn = std::function<bool(double thetaH, double thetaD, double p
 // Progress of a long computation: done of total units, seconds since it started.
 using ProgressFn = std::function<void(double done, double total, double seconds)>;
 RusinkiewiczFn merlFunction(const MerlData& d, bool nearestBin = false);  // trilinear, or MERL's lookup
-RusinkiewiczFn analyticFunction(const Brdf3dSpec& s);                      // hostBrdf (for checks)
+RusinkiewiczFn analyticFunction(const Brdf3dSpec& s);                     // hostBrdf (for checks)
 
 struct HSpaceRule {
   int thetaNodes = 4;  // Gauss-Legendre nodes per theta_h bin
@@ -49,11 +49,14 @@ inline constexpr std::array<int, 10> kMerlLadder{4, 5, 6, 7, 8, 10, 12, 15, 20, 
 inline double merlLargest(const std::array<double, 3>& e) {
   return std::max({std::fabs(e[0]), std::fabs(e[1]), std::fabs(e[2])});
 }
-inline double merlTexelTarget(const std::array<double, 3>& e) { return std::max(1e-9, std::ldexp(merlLargest(e), -25)); }
+inline double merlTexelTarget(const std::array<double, 3>& e) {
+  return std::max(1e-9, std::ldexp(merlLargest(e), -25));
+}
 inline constexpr double kMerlArithmetic = 1e-11;  // the double sums' rounding, added to brdf.error
 
 // One rule's E(mu) per channel; *unsupported (optional) as in AlbedoEstimate.
-std::array<double, 3> hSpaceIntegral(const RusinkiewiczFn& f, double mu, HSpaceRule rule, double* unsupported = nullptr);
+std::array<double, 3> hSpaceIntegral(const RusinkiewiczFn& f, double mu, HSpaceRule rule,
+                                     double* unsupported = nullptr);
 // E(mu) by the ladder's rule R_k, err = max(|R_k - R_k-1|, |R_k - R_k-2|) per channel.
 AlbedoEstimate hSpaceAlbedo(const RusinkiewiczFn& f, double mu);
 // E_avg = 2 int E(mu) mu dmu over the table's own coordinates (theta_h, theta_d, phi_d), where its

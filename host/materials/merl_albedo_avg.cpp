@@ -105,13 +105,12 @@ std::array<double, 3> directAlbedoAvgRule(const RusinkiewiczFn& f, int n, int th
 }
 
 // The rules converge fast here (on four test materials the n = 4 rule is within 1.6e-9 of n = 8;
-// docs/merl.md, "E_avg over the table's coordinates"), but not geometrically everywhere (the horizon still crosses edges), so
-// the estimate is the ladder's, as for the texels: max(|Q_n - Q_n-1|, |Q_n - Q_n-2|) from n = 4,
-// climbing while any channel's is above merlAvgTarget.
+// docs/merl.md, "E_avg over the table's coordinates"), but not geometrically everywhere (the horizon still crosses
+// edges), so the estimate is the ladder's, as for the texels: max(|Q_n - Q_n-1|, |Q_n - Q_n-2|) from n = 4, climbing
+// while any channel's is above merlAvgTarget.
 AlbedoEstimate directAlbedoAvg(const RusinkiewiczFn& f, int threads, const ProgressFn& progress) {
-  return merl_detail::climbLadder(kMerlAvgLadder, merlAvgTarget, [&](int n, double* lost) {
-    return directRule(f, n, threads, progress, lost);
-  });
+  return merl_detail::climbLadder(kMerlAvgLadder, merlAvgTarget,
+                                  [&](int n, double* lost) { return directRule(f, n, threads, progress, lost); });
 }
 
 }  // namespace brdfbake

@@ -34,10 +34,10 @@ struct MsTables {
 // What the shader adds for one view direction mu = n.o at roughness r, Schlick reflectance f0
 // (grey: one channel of the shader's vec3), all from the tables:
 struct MsEnergy {
-  double kullaConty;   // int f_ms,F(o, i) (n.i) dw_i: the Kulla-Conty lobe's albedo, Fresnel factor included
-  double fdezSingle;   // Fdez-Aguera's F_ss E_ss = F0 A + B
-  double fdezMultiple; // Fdez-Aguera's F_ms E_ms
-  double filament;     // Filament's scale 1 + F0 (1/E_ss - 1)
+  double kullaConty;    // int f_ms,F(o, i) (n.i) dw_i: the Kulla-Conty lobe's albedo, Fresnel factor included
+  double fdezSingle;    // Fdez-Aguera's F_ss E_ss = F0 A + B
+  double fdezMultiple;  // Fdez-Aguera's F_ms E_ms
+  double filament;      // Filament's scale 1 + F0 (1/E_ss - 1)
 };
 MsEnergy evaluate(const MsTables& tables, double mu, double r, double f0);
 

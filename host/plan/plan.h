@@ -15,9 +15,9 @@ namespace brdfbake {
 struct Plan {
   std::string outDir;
   std::string device;
-  bool noWait = false;  // another writer holds outDir: exit 75 instead of waiting
+  bool noWait = false;                     // another writer holds outDir: exit 75 instead of waiting
   std::shared_ptr<BakeObserver> observer;  // the request's (brdfbake/observer.h), or none
-  std::vector<Job> jobs;  // in the registry's family order
+  std::vector<Job> jobs;                   // in the registry's family order
   // Extra string attributes of the file at a path (scenes: brdf.hash, brdf.scene).
   std::map<std::string, std::map<std::string, std::string>> extraStrings;
   std::string shardHint;  // what to do when the plan has too many files (scenes: --shard)

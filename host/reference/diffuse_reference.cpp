@@ -125,9 +125,8 @@ double diffuseAlbedoClosedForm(int model, double p, double mu) {
 }
 
 std::string diffuseName(int model) {
-  static const char* const names[] = {"lambert",    "shirley",           "ashikhmin-shirley",
-                                      "oren-nayar", "burley",            "shirley-as-printed",
-                                      "oren-nayar-as-printed"};
+  static const char* const names[] = {
+      "lambert", "shirley", "ashikhmin-shirley", "oren-nayar", "burley", "shirley-as-printed", "oren-nayar-as-printed"};
   return model >= 0 && model < 7 ? names[model] : "diffuse#" + std::to_string(model);
 }
 

@@ -25,9 +25,12 @@ double fresnel(const FresnelSpec& f, double c) {
   c = std::min(std::fabs(c), 1.0);
   auto schlick = [](double f0, double x) { return f0 + (1 - f0) * std::pow(1 - x, 5); };  // Schlick 1994
   switch (f.model) {
-    case FRESNEL_SCHLICK: return schlick(f.x, c);
-    case FRESNEL_DIELECTRIC: return complexFresnel(f.x, 0, c);
-    case FRESNEL_CONDUCTOR: return complexFresnel(f.x, f.y, c);
+    case FRESNEL_SCHLICK:
+      return schlick(f.x, c);
+    case FRESNEL_DIELECTRIC:
+      return complexFresnel(f.x, 0, c);
+    case FRESNEL_CONDUCTOR:
+      return complexFresnel(f.x, f.y, c);
     case FRESNEL_SCHLICK_TIR: {  // Burley 2015: Schlick on the transmitted cosine where eta < 1
       double f0 = std::pow((f.x - 1) / (f.x + 1), 2);
       if (f.x >= 1) return schlick(f0, c);
@@ -39,15 +42,19 @@ double fresnel(const FresnelSpec& f, double c) {
       double b = schlick(f.x, mb) * (1 - f.y) / (mb * std::pow(1 - mb, 6));
       return schlick(f.x, c) - b * c * std::pow(1 - c, 6);
     }
-    default: return 1.0;
+    default:
+      return 1.0;
   }
 }
 
 double weightAt(const Weight& w, double c) {
   switch (w.kind) {
-    case Weight::Fresnel: return fresnel(w.f, c);
-    case Weight::F82C: return c * std::pow(1 - c, 6);
-    default: return std::pow(1 - c, 5);
+    case Weight::Fresnel:
+      return fresnel(w.f, c);
+    case Weight::F82C:
+      return c * std::pow(1 - c, 6);
+    default:
+      return std::pow(1 - c, 5);
   }
 }
 

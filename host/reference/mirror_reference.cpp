@@ -16,15 +16,22 @@ namespace brdfbake::reference {
 Moments mirrorAlbedo(int gaf, double mu, const Weight& w) {
   double e = 1;
   switch (gaf) {
-    case GAF_IMPLICIT: e = mu * mu; break;
-    case GAF_NEUMANN: e = mu; break;
-    case GAF_ASHIKHMIN_PREMOZE: e = mu / (2 - mu); break;
+    case GAF_IMPLICIT:
+      e = mu * mu;
+      break;
+    case GAF_NEUMANN:
+      e = mu;
+      break;
+    case GAF_ASHIKHMIN_PREMOZE:
+      e = mu / (2 - mu);
+      break;
     case GAF_SCHLICK_GGX_DIRECT: {
       double g = mu / (mu * 7 / 8 + 1.0 / 8);
       e = g * g;
       break;
     }
-    default: break;
+    default:
+      break;
   }
   if (mu <= 0 && gaf != GAF_NONE) e = 0;
   Moments m;

@@ -28,8 +28,8 @@ using detail::adapt;
 
 // Over [a, b], split first at the given interior points.
 template <class F>
-auto integrate(F f, double a, double b, std::vector<double> breaks, unsigned depth = kDepth,
-               double tol = kTol, double rel = 1e-10) -> decltype(f(a)) {
+auto integrate(F f, double a, double b, std::vector<double> breaks, unsigned depth = kDepth, double tol = kTol,
+               double rel = 1e-10) -> decltype(f(a)) {
   return detail::adaptPieces(f, a, b, std::move(breaks), tol, depth, rel);
 }
 
@@ -46,22 +46,25 @@ std::vector<double> lobeBreaks(double alpha, double hi) {
 struct Model {
   int ndf, gaf;
   double r, alpha;
-  double k;                   // Schlick's k
-  brdf64::BrdfParams dp;      // for D only (alpha, and 1/k_p of the gaussian)
-  double oc = -1;             // o.h where the weight has a kink (Fresnel's critical angle), or -1
-  bool direct = false;        // exact Lambda by quadrature at each call, not from the per-r cache
+  double k;               // Schlick's k
+  brdf64::BrdfParams dp;  // for D only (alpha, and 1/k_p of the gaussian)
+  double oc = -1;         // o.h where the weight has a kink (Fresnel's critical angle), or -1
+  bool direct = false;    // exact Lambda by quadrature at each call, not from the per-r cache
 };
-
 
 // Schlick's k: Schlick 1994 with m = alpha (k = alpha sqrt(2/pi)); Karis 2013: alpha/2 for image
 // based lighting, (r + 1)^2/8 for analytic lights.
 double schlickK(int gaf, double r) {
   double alpha = r * r;
   switch (gaf) {
-    case GAF_SCHLICK_BECKMANN: return alpha * std::sqrt(2 / kPi);
-    case GAF_SCHLICK_GGX: return alpha / 2;
-    case GAF_SCHLICK_GGX_DIRECT: return (r + 1) * (r + 1) / 8;
-    default: return 0;
+    case GAF_SCHLICK_BECKMANN:
+      return alpha * std::sqrt(2 / kPi);
+    case GAF_SCHLICK_GGX:
+      return alpha / 2;
+    case GAF_SCHLICK_GGX_DIRECT:
+      return (r + 1) * (r + 1) / 8;
+    default:
+      return 0;
   }
 }
 
@@ -98,10 +101,10 @@ double cLambdaQuad(int ndf, const brdf64::BrdfParams& dp, double c) {
   double tho = std::atan2(s, c);
   auto f = [&](double d) {
     double ct = std::sin(tho - d), st = std::cos(tho - d);  // cos, sin of theta = pi/2 - theta_o + d
-    double om = std::sin(d) / (s * st);                      // 1 - cos psi
+    double om = std::sin(d) / (s * st);                     // 1 - cos psi
     double x = 1 - om, sp = std::sqrt(std::max(0.0, om * (2 - om)));
     double psi = std::atan2(sp, x);
-    double g;  // sin psi - psi cos psi
+    double g;         // sin psi - psi cos psi
     if (psi < 0.3) {  // series: the difference cancels (its terms 2k psi^(2k+1)/(2k+1)!)
       double p2 = psi * psi;
       g = psi * p2 *
@@ -169,25 +172,35 @@ double gafOf(const Model& m, const dvec3& i, const dvec3& o, const dvec3& h) {
   double ni = i.z, no = o.z, nh = h.z, oh = glm::dot(o, h), ih = glm::dot(i, h);
   if (ni <= 0 || no <= 0 || oh <= 0 || ih <= 0) return 0;  // chi+
   switch (m.gaf) {
-    case GAF_NONE: return 1;                                             // Ward
-    case GAF_IMPLICIT: return ni * no;                                   // Blinn-Phong's implicit G
-    case GAF_COOK_TORRANCE: return std::min({1.0, 2 * nh * no / oh, 2 * nh * ni / ih});  // Cook-Torrance 1982
-    case GAF_KELEMEN: return ni * no / (oh * ih);                        // Kelemen, Szirmay-Kalos 2001
-    case GAF_NEUMANN: return ni * no / std::max(ni, no);                 // Neumann et al. 1999
-    case GAF_ASHIKHMIN_PREMOZE:                                          // Ashikhmin, Premoze 2007
-    case GAF_NEUBELT: return ni * no / (ni + no - ni * no);              // Neubelt, Pettineo 2013: the same G
-    case GAF_CHARLIE_SMITH:                                              // Estevez, Kulla 2017
+    case GAF_NONE:
+      return 1;  // Ward
+    case GAF_IMPLICIT:
+      return ni * no;  // Blinn-Phong's implicit G
+    case GAF_COOK_TORRANCE:
+      return std::min({1.0, 2 * nh * no / oh, 2 * nh * ni / ih});  // Cook-Torrance 1982
+    case GAF_KELEMEN:
+      return ni * no / (oh * ih);  // Kelemen, Szirmay-Kalos 2001
+    case GAF_NEUMANN:
+      return ni * no / std::max(ni, no);  // Neumann et al. 1999
+    case GAF_ASHIKHMIN_PREMOZE:           // Ashikhmin, Premoze 2007
+    case GAF_NEUBELT:
+      return ni * no / (ni + no - ni * no);  // Neubelt, Pettineo 2013: the same G
+    case GAF_CHARLIE_SMITH:                  // Estevez, Kulla 2017
       return 1 / (1 + charlieLambda(m.r, ni) + charlieLambda(m.r, no));
     case GAF_SCHLICK_BECKMANN:
     case GAF_SCHLICK_GGX:
-    case GAF_SCHLICK_GGX_DIRECT: {                                       // Schlick 1994
+    case GAF_SCHLICK_GGX_DIRECT: {  // Schlick 1994
       auto g = [&](double x) { return x / (x * (1 - m.k) + m.k); };
       return g(ni) * g(no);
     }
-    case GAF_SMITH: return 1 / ((1 + smithLambda(m, ni)) * (1 + smithLambda(m, no)));  // separable
-    case GAF_SMITH_EXACT: return 1 / ((1 + smithLambdaExact(m, ni)) * (1 + smithLambdaExact(m, no)));
-    case GAF_SMITH_CORRELATED_EXACT: return 1 / (1 + smithLambdaExact(m, ni) + smithLambdaExact(m, no));
-    default: return 1 / (1 + smithLambda(m, ni) + smithLambda(m, no));  // height-correlated, Heitz 2014
+    case GAF_SMITH:
+      return 1 / ((1 + smithLambda(m, ni)) * (1 + smithLambda(m, no)));  // separable
+    case GAF_SMITH_EXACT:
+      return 1 / ((1 + smithLambdaExact(m, ni)) * (1 + smithLambdaExact(m, no)));
+    case GAF_SMITH_CORRELATED_EXACT:
+      return 1 / (1 + smithLambdaExact(m, ni) + smithLambdaExact(m, no));
+    default:
+      return 1 / (1 + smithLambda(m, ni) + smithLambda(m, no));  // height-correlated, Heitz 2014
   }
 }
 
@@ -251,9 +264,7 @@ void branchRoots(const Model& m, At at, const std::vector<double>& xs, std::vect
 
 // cos(phimax): the mirror direction is above the surface (n.i > 0) for cos(phi) > c0, with
 // n.i = 2 (o.h) cos(theta) - mu and o.h = s sin(theta) cos(phi) + mu cos(theta).
-double cosPhiLimit(double mu, double s, double th) {
-  return -mu * std::cos(2 * th) / (s * std::sin(2 * th));
-}
+double cosPhiLimit(double mu, double s, double th) { return -mu * std::cos(2 * th) / (s * std::sin(2 * th)); }
 
 Moments albedoInside(int ndf, int gaf, double r, double mu, const Weight& wt) {
   Model m = model(ndf, gaf, r);
@@ -262,9 +273,7 @@ Moments albedoInside(int ndf, int gaf, double r, double mu, const Weight& wt) {
   // E = int sin(th) dth 2 int_0^phimax dphi D (G/no) F (o.h), the h-space form of the albedo
   // (dw_i = 4 (o.h) dw_h, phi folded). E and B (F = (1 - o.h)^5) are integrated together.
   double th1 = std::atan(mu / (1 + s)), th2 = std::atan2(1 + s, mu);
-  auto phiEnd = [&](double th) {
-    return th <= th1 ? kPi : std::acos(std::clamp(cosPhiLimit(mu, s, th), -1.0, 1.0));
-  };
+  auto phiEnd = [&](double th) { return th <= th1 ? kPi : std::acos(std::clamp(cosPhiLimit(mu, s, th), -1.0, 1.0)); };
   auto outer = [&](double th) {
     double sn = std::sin(th), c = std::cos(th);
     double D = brdf64::ndf_D(ndf, m.dp, c, sn * sn);
@@ -281,7 +290,8 @@ Moments albedoInside(int ndf, int gaf, double r, double mu, const Weight& wt) {
     // the kinks of min/max GAFs in phi, by root finding on 65 samples
     std::vector<double> br, xs;
     for (int k = 0; k <= 64; ++k) xs.push_back(phimax * k / 64.0);
-    branchRoots(m, [&](double phi) { return geometry(mu, s, th, phi); }, xs, br);
+    branchRoots(
+        m, [&](double phi) { return geometry(mu, s, th, phi); }, xs, br);
     // inner far tighter than outer: its rounding must not look like structure to the outer rule.
     // Its absolute tolerance applies to the weighted value w * inner.
     return w * integrate(inner, 0, phimax, br, 30, std::max(1e-14, 1e-14 / w), 1e-13);
@@ -298,8 +308,10 @@ Moments albedoInside(int ndf, int gaf, double r, double mu, const Weight& wt) {
       xs.push_back(th2 - d);
     }
     std::sort(xs.begin(), xs.end());
-    branchRoots(m, [&](double th) { return geometry(mu, s, th, 0.0); }, xs, kinkTheta);
-    branchRoots(m, [&](double th) { return geometry(mu, s, th, phiEnd(th)); }, xs, kinkTheta);
+    branchRoots(
+        m, [&](double th) { return geometry(mu, s, th, 0.0); }, xs, kinkTheta);
+    branchRoots(
+        m, [&](double th) { return geometry(mu, s, th, phiEnd(th)); }, xs, kinkTheta);
   }
   // [0, th1]: the whole half circle is visible; [th1, th2]: phimax falls from pi to 0 with
   // square-root ends. The partial range is cut geometrically (th1 2^k: the NDF's tail is a power

@@ -12,9 +12,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-using detail::Pair;
 using detail::adapt;
 using detail::norm;
+using detail::Pair;
 
 template <class F>
 auto integrate(F f, double a, double b, std::vector<double> br, double tol, double rel) -> decltype(f(a)) {
@@ -35,10 +35,13 @@ std::vector<double> scaleBreaks(double alpha, double mu, double hi) {
 // The visibility G/(4 (n.i)(n.o)) times (n.i): V(ni, no) ni.
 double visTimesNi(int gaf, double r, double ni, double no) {
   switch (gaf) {
-    case GAF_NEUBELT: return ni / (4 * (ni + no - ni * no));  // Neubelt and Pettineo 2013
-    case GAF_IMPLICIT: return ni / 4;                            // G = (n.i)(n.o)
-    case GAF_NONE: return 1 / (4 * no);                          // G = 1
-    default:  // Estevez and Kulla 2017: G = 1/(1 + Lambda(i) + Lambda(o))
+    case GAF_NEUBELT:
+      return ni / (4 * (ni + no - ni * no));  // Neubelt and Pettineo 2013
+    case GAF_IMPLICIT:
+      return ni / 4;  // G = (n.i)(n.o)
+    case GAF_NONE:
+      return 1 / (4 * no);  // G = 1
+    default:                // Estevez and Kulla 2017: G = 1/(1 + Lambda(i) + Lambda(o))
       return 1 / ((1 + charlieLambda(r, ni) + charlieLambda(r, no)) * 4 * no);
   }
 }

@@ -44,34 +44,39 @@ std::string furnaceSource(const FurnaceSpec& s, const FurnaceTables& t) {
   gaussLegendre(16, &x16, &w16);
   std::string rowList;
   for (int k : s.rows) rowList += (rowList.empty() ? "" : ", ") + std::to_string(k);
-  std::string src = "#version 310 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
-                    "layout(local_size_x = 8, local_size_y = 8) in;\n"
-                    "layout(std430, binding = 0) buffer Pixels { vec4 px[]; };\n";
+  std::string src =
+      "#version 310 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
+      "layout(local_size_x = 8, local_size_y = 8) in;\n"
+      "layout(std430, binding = 0) buffer Pixels { vec4 px[]; };\n";
   src += shaderForFiles(t.all(), ShaderLang::Glsl) + "\nuniform sampler2D sheen_tex;\nuniform sampler2D glass_tex;\n";
   src += t.albedo.empty() ? "" : multiscatterBody();
   src += "const int W = " + std::to_string(W) + ", H = " + std::to_string(H) + ", CELL = " + std::to_string(s.cell) +
          ", COLS = " + std::to_string(s.columns) + ", NROWS = " + std::to_string(s.rows.size()) + ";\n";
   src += "const int ROW[NROWS] = int[NROWS](" + rowList + ");\n";
-  src += "const float X32[32] = float[32](" + floats(x32) + ");\nconst float W32[32] = float[32](" + floats(w32) + ");\n";
-  src += "const float X16[16] = float[16](" + floats(x16) + ");\nconst float W16[16] = float[16](" + floats(w16) + ");\n";
+  src +=
+      "const float X32[32] = float[32](" + floats(x32) + ");\nconst float W32[32] = float[32](" + floats(w32) + ");\n";
+  src +=
+      "const float X16[16] = float[16](" + floats(x16) + ");\nconst float W16[16] = float[16](" + floats(w16) + ");\n";
   src += "const vec3 GOLD = vec3(" + lit(kGold[0]) + ", " + lit(kGold[1]) + ", " + lit(kGold[2]) + ");\n";
   src += "const float F0_DIELECTRIC = " + lit(kDielectricF0) + ", SPHERE = " + lit(kSphere) + ";\n";
   // test hook: BRDFBAKE_TEST_RENDER_LOBE_SCALE scales the Kulla-Conty lobe, so that a test can see
   // the measurement fail a compensation that does not conserve (tests/render_test.cpp)
   const char* lobeScale = std::getenv("BRDFBAKE_TEST_RENDER_LOBE_SCALE");
   src += "const float LOBE_SCALE = " + lit(lobeScale ? std::atof(lobeScale) : 1.0) + ";\n";
-  src += t.sheen.empty() ? "float sheenE(float mu, float r) { return 0.0; }\n"
-                         : "float sheenE(float mu, float r) { return " + shaderPrefix(t.sheen) + "_lookup(sheen_tex, mu, r).r; }\n";
+  src += t.sheen.empty()
+             ? "float sheenE(float mu, float r) { return 0.0; }\n"
+             : "float sheenE(float mu, float r) { return " + shaderPrefix(t.sheen) + "_lookup(sheen_tex, mu, r).r; }\n";
   src += t.glass.empty() ? "float glassE(float mu, float r) { return 0.0; }\n"
-                         : "float glassE(float mu, float r) { return " + shaderPrefix(t.glass) + "_albedos(glass_tex, mu, r, " +
-                               lit(kGlassEta) + ").b; }\n";
+                         : "float glassE(float mu, float r) { return " + shaderPrefix(t.glass) +
+                               "_albedos(glass_tex, mu, r, " + lit(kGlassEta) + ").b; }\n";
   if (t.albedo.empty()) {
     // no microfacet rows: the functions they call are never reached
-    src += "vec2 lookupAB(float mu, float r) { return vec2(0.0); }\nfloat lookupE(float mu, float r) { return 0.0; }\n"
-           "float lookupEavg(float r) { return 0.0; }\nfloat kullaContyLobe(float a, float b, float r) { return 0.0; }\n"
-           "vec3 fdezAgueraSingle(float mu, float r, vec3 f0) { return vec3(0.0); }\n"
-           "vec3 fdezAgueraMultiple(float mu, float r, vec3 f0) { return vec3(0.0); }\nconst float MS_FLOOR = 1e-6;\n"
-           "const float MS_PI = 3.14159265;\n";
+    src +=
+        "vec2 lookupAB(float mu, float r) { return vec2(0.0); }\nfloat lookupE(float mu, float r) { return 0.0; }\n"
+        "float lookupEavg(float r) { return 0.0; }\nfloat kullaContyLobe(float a, float b, float r) { return 0.0; }\n"
+        "vec3 fdezAgueraSingle(float mu, float r, vec3 f0) { return vec3(0.0); }\n"
+        "vec3 fdezAgueraMultiple(float mu, float r, vec3 f0) { return vec3(0.0); }\nconst float MS_FLOOR = 1e-6;\n"
+        "const float MS_PI = 3.14159265;\n";
   }
   src += R"glsl(
 // The Kulla-Conty lobe's albedo under a uniform white light: 2 pi int_0^1 f_ms(mu_o, mu_i) mu_i dmu_i
@@ -131,7 +136,8 @@ void main() {
 }
 
 // Runs `prog` over W x H pixels with the tables bound, returns RGBA per pixel.
-std::vector<float> dispatch(const GlContext& gl, GLuint prog, int W, int H, const std::vector<std::pair<const Table*, std::string>>& tex) {
+std::vector<float> dispatch(const GlContext& gl, GLuint prog, int W, int H,
+                            const std::vector<std::pair<const Table*, std::string>>& tex) {
   const GlFunctions& g = gl.gl();
   g.UseProgram(prog);
   int unit = 0;
@@ -153,7 +159,9 @@ std::vector<float> dispatch(const GlContext& gl, GLuint prog, int W, int H, cons
   g.Finish();
   const float* mapped = static_cast<const float*>(
       g.MapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(n * 4 * sizeof(float)), GL_MAP_READ_BIT));
-  if (!mapped) throw Error(kExitSoftware, "render: could not read the pixels back (GL error " + std::to_string(g.GetError()) + ")");
+  if (!mapped)
+    throw Error(kExitSoftware,
+                "render: could not read the pixels back (GL error " + std::to_string(g.GetError()) + ")");
   std::vector<float> px(mapped, mapped + n * 4);
   g.UnmapBuffer(GL_SHADER_STORAGE_BUFFER);
   g.DeleteBuffers(1, &buf);
@@ -186,16 +194,16 @@ const std::vector<FurnaceRow>& furnaceRows() {
   static const std::vector<FurnaceRow> rows = {
       {"single", "F = 1, single scattering: E = A + B from the split sum", false, C::Tables, "(|pixel - E_ref|)",
        "below 1 as r grows: single scattering loses energy"},
-      {"kulla-conty", "F = 1, single scattering + the Kulla-Conty lobe (albedo, albedo-avg), integrated over the light", true,
-       C::Tables, "(|pixel - 1|)", "vanishes: tests the albedo tables"},
-      {"single-table", "F = 1, compensated from the split sum alone (Fdez-Aguera 2019)", true, C::Algebra, "(|pixel - 1|)",
-       "vanishes: 1 by algebra"},
-      {"dielectric-lambert", "specular F0 = 0.04 (compensated) over Lambert rho = 1 with albedo scaling", true, C::Algebra,
+      {"kulla-conty", "F = 1, single scattering + the Kulla-Conty lobe (albedo, albedo-avg), integrated over the light",
+       true, C::Tables, "(|pixel - 1|)", "vanishes: tests the albedo tables"},
+      {"single-table", "F = 1, compensated from the split sum alone (Fdez-Aguera 2019)", true, C::Algebra,
        "(|pixel - 1|)", "vanishes: 1 by algebra"},
-      {"gold", "gold, Schlick F0 = (1, 0.71, 0.29), compensated: absorbs, so darker than the background", false, C::None, "",
-       "darker: gold absorbs blue most"},
-      {"sheen", "the Charlie sheen's albedo alone (charlie + charlie-smith split sum): dark, a sheen reflects little", false,
-       C::None, "", "black at r = 0 is expected: a sheen reflects little"},
+      {"dielectric-lambert", "specular F0 = 0.04 (compensated) over Lambert rho = 1 with albedo scaling", true,
+       C::Algebra, "(|pixel - 1|)", "vanishes: 1 by algebra"},
+      {"gold", "gold, Schlick F0 = (1, 0.71, 0.29), compensated: absorbs, so darker than the background", false,
+       C::None, "", "darker: gold absorbs blue most"},
+      {"sheen", "the Charlie sheen's albedo alone (charlie + charlie-smith split sum): dark, a sheen reflects little",
+       false, C::None, "", "black at r = 0 is expected: a sheen reflects little"},
       {"glass", "rough glass, eta 1.5: E_R + E_T from the dielectric table, single scattering (never above 1)", false,
        C::Tables, "(|pixel - E_ref|)", "below 1 as r grows: single scattering"},
   };
@@ -213,7 +221,8 @@ bool furnaceRowFits(int row, int ndf, int gaf) {
   const std::string& name = furnaceRows()[static_cast<size_t>(row)].name;
   if (name == "sheen") return true;
   if (name == "glass")
-    return (ndf == ndfId("ggx") || ndf == ndfId("beckmann")) && (gaf == gafId("smith") || gaf == gafId("smith-correlated"));
+    return (ndf == ndfId("ggx") || ndf == ndfId("beckmann")) &&
+           (gaf == gafId("smith") || gaf == gafId("smith-correlated"));
   return !isSheenNdf(ndf);
 }
 
@@ -228,9 +237,12 @@ FurnaceTables bakeFurnaceTables(const FurnaceSpec& s, const std::string& dir, co
   bool microfacet = false, sheen = false, glass = false;
   for (int k : s.rows) {
     const std::string& name = furnaceRows()[static_cast<size_t>(k)].name;
-    if (name == "sheen") sheen = true;
-    else if (name == "glass") glass = true;
-    else microfacet = true;
+    if (name == "sheen")
+      sheen = true;
+    else if (name == "glass")
+      glass = true;
+    else
+      microfacet = true;
   }
   FurnaceTables t;
   BakeRequest base = defaultRequest();
@@ -251,9 +263,12 @@ FurnaceTables bakeFurnaceTables(const FurnaceSpec& s, const std::string& dir, co
     r.tables = {tableKind("splitsum"), tableKind("albedo"), tableKind("albedo-avg")};
     std::vector<TableReport> reps = bakeToDirectory(r);
     for (const TableReport& rep : reps) {
-      if (rep.table == "splitsum") t.splitsum = rep.path;
-      else if (rep.table == "albedo") t.albedo = rep.path;
-      else if (rep.table == "albedo-avg") t.albedoAvg = rep.path;
+      if (rep.table == "splitsum")
+        t.splitsum = rep.path;
+      else if (rep.table == "albedo")
+        t.albedo = rep.path;
+      else if (rep.table == "albedo-avg")
+        t.albedoAvg = rep.path;
     }
     if (t.splitsum.empty() || t.albedo.empty() || t.albedoAvg.empty())
       throw Error(kExitSoftware, "internal: render baked no split sum, albedo or albedo-avg table");
@@ -315,7 +330,8 @@ FurnacePicture renderFurnace(const GlContext& gl, const FurnaceSpec& s, const Fu
   // value depends on mu = n.v and the column's r only, and that radius runs from the centre (mu ~ 1)
   // to the rim (mu ~ 0.07 at 48 pixels).
   constexpr int kRefStride = 3;
-  const int singleRow = furnaceRowIndex("single"), kcRow = furnaceRowIndex("kulla-conty"), glassRow = furnaceRowIndex("glass");
+  const int singleRow = furnaceRowIndex("single"), kcRow = furnaceRowIndex("kulla-conty"),
+            glassRow = furnaceRowIndex("glass");
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       const size_t i = static_cast<size_t>(y) * W + x;
@@ -326,7 +342,8 @@ FurnacePicture renderFurnace(const GlContext& gl, const FurnaceSpec& s, const Fu
       RowMeasure& rm = pic.rows[static_cast<size_t>(row)];
       ++rm.pixels;
       if (fr.checks == FurnaceRow::Checks::None) continue;
-      const bool sampled = y % s.cell == s.cell / 2 && x % s.cell >= s.cell / 2 && (x % s.cell - s.cell / 2) % kRefStride == 0;
+      const bool sampled =
+          y % s.cell == s.cell / 2 && x % s.cell >= s.cell / 2 && (x % s.cell - s.cell / 2) % kRefStride == 0;
       if ((kind == singleRow || kind == glassRow) && !sampled) continue;
       const double cx = ((x % s.cell) + 0.5) / s.cell * 2 - 1, cy = ((y % s.cell) + 0.5) / s.cell * 2 - 1;
       const double mu = std::sqrt(std::max(0.0, 1 - (cx * cx + cy * cy) / (static_cast<double>(kSphere) * kSphere)));
@@ -357,7 +374,8 @@ FurnacePicture renderFurnace(const GlContext& gl, const FurnaceSpec& s, const Fu
         // E_R + E_T against the reference's (a smooth interface keeps all of it: 1 at r = 0)
         double ref = 1;
         if (r > 0) {
-          const reference::DielectricAlbedo d = reference::dielectricAlbedo(s.ndf, s.gaf, std::max(mu, 1e-6), r, kGlassEta);
+          const reference::DielectricAlbedo d =
+              reference::dielectricAlbedo(s.ndf, s.gaf, std::max(mu, 1e-6), r, kGlassEta);
           ref = d.r + d.t;
         }
         dev = std::fabs(q[0] - ref);
@@ -382,7 +400,8 @@ FurnacePicture renderFurnace(const GlContext& gl, const FurnaceSpec& s, const Fu
 std::string furnaceTable(const FurnaceSpec& s, const FurnacePicture& p) {
   char line[320];
   const char* fmt = "%-19s %-9s %-22s %-30s %-11s %-13s %s\n";
-  std::snprintf(line, sizeof line, fmt, "row", "conserves", "tests", "largest deviation", "bound there", "largest bound", "pixels over");
+  std::snprintf(line, sizeof line, fmt, "row", "conserves", "tests", "largest deviation", "bound there",
+                "largest bound", "pixels over");
   std::string out = line;
   for (size_t row = 0; row < s.rows.size(); ++row) {
     const FurnaceRow& fr = furnaceRows()[static_cast<size_t>(s.rows[row])];
@@ -394,14 +413,18 @@ std::string furnaceTable(const FurnaceSpec& s, const FurnacePicture& p) {
       std::snprintf(big, sizeof big, "%.3g", rm.largestBound);
       std::snprintf(over, sizeof over, "%ld", rm.over + rm.created);
     }
-    const char* tests = fr.checks == FurnaceRow::Checks::Tables ? "the tables" : fr.checks == FurnaceRow::Checks::Algebra ? "algebra only" : "nothing (looks)";
+    const char* tests = fr.checks == FurnaceRow::Checks::Tables    ? "the tables"
+                        : fr.checks == FurnaceRow::Checks::Algebra ? "algebra only"
+                                                                   : "nothing (looks)";
     std::snprintf(line, sizeof line, fmt, fr.name.c_str(), fr.conserves ? "yes" : "no", tests, dev, bnd, big, over);
     out += line;
   }
-  out += "tests: \"the tables\": the row's pixels move with the tables' values and are held to bounds from the texels each "
-         "lookup reads; \"algebra only\": the row is 1 by construction whatever the tables hold (it checks the shading "
-         "code, not the tables); gold and sheen are for the eye: gold is darker than the background, the sheen black at "
-         "r = 0 and dim elsewhere, as they should be\n";
+  out +=
+      "tests: \"the tables\": the row's pixels move with the tables' values and are held to bounds from the texels "
+      "each "
+      "lookup reads; \"algebra only\": the row is 1 by construction whatever the tables hold (it checks the shading "
+      "code, not the tables); gold and sheen are for the eye: gold is darker than the background, the sheen black at "
+      "r = 0 and dim elsewhere, as they should be\n";
   return out;
 }
 

@@ -39,7 +39,7 @@ constexpr double kGlassEta = 1.5;
 struct FurnaceSpec {
   int ndf = 0, gaf = 0;
   int cell = 48, columns = 11;
-  std::vector<int> rows;  // furnaceRows() indices, top to bottom
+  std::vector<int> rows;          // furnaceRows() indices, top to bottom
   int glassMu = 32, glassR = 16;  // the glass row's table: texels over mu and r (one eta slice)
 };
 

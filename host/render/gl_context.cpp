@@ -11,8 +11,9 @@
 namespace brdfbake {
 
 namespace {
-const char* const kPackages = "install Mesa's EGL and GLES (Debian: apt-get install libegl1 libegl-mesa0 libgles2 "
-                              "libgl1-mesa-dri)";
+const char* const kPackages =
+    "install Mesa's EGL and GLES (Debian: apt-get install libegl1 libegl-mesa0 libgles2 "
+    "libgl1-mesa-dri)";
 }  // namespace
 
 GlContext::GlContext() {
@@ -86,8 +87,10 @@ GlContext::GlContext() {
 #undef BRDFBAKE_GL
   const char* ext = reinterpret_cast<const char*>(gl_.GetString(GL_EXTENSIONS));
   if (!ext || !std::strstr(ext, "GL_OES_texture_float_linear"))
-    throw Error(kExitUnavailable, "render: the GLES context cannot filter float textures (no "
-                                  "GL_OES_texture_float_linear): " + std::string(kPackages));
+    throw Error(kExitUnavailable,
+                "render: the GLES context cannot filter float textures (no "
+                "GL_OES_texture_float_linear): " +
+                    std::string(kPackages));
 }
 
 GlContext::~GlContext() {

@@ -11,7 +11,8 @@ namespace brdfbake {
 int textWidth(const std::string& s, int scale);
 // Draws `s` with its top left at (x, y) into linear planes (R, G, B) of width w, value `v` on every
 // plane; pixels outside the image are skipped. Error(kExitSoftware) for a character without a glyph.
-void drawText(std::vector<std::vector<float>>& planes, int w, int h, int x, int y, const std::string& s, int scale, float v);
+void drawText(std::vector<std::vector<float>>& planes, int w, int h, int x, int y, const std::string& s, int scale,
+              float v);
 
 struct LabelledPicture {
   int width = 0, height = 0;

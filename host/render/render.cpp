@@ -35,12 +35,13 @@ LobePicture renderLobe(const GlContext& gl, const FurnaceSpec& s, const FurnaceT
   const size_t ln = static_cast<size_t>(LW) * LH;
   const LobeInput lin = lobeInput(cell, s.ndf, s.gaf);
   const std::vector<std::string> paths = {t.splitsum, t.albedo, t.albedoAvg};
-  const std::string src = "#version 310 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
-                          "layout(local_size_x = 8, local_size_y = 8) in;\n"
-                          "layout(std430, binding = 1) buffer Geometry { vec4 geo[]; };\n"
-                          "layout(std430, binding = 2) buffer Lobe { float lobe[]; };\n" +
-                          shaderForFiles(paths, ShaderLang::Glsl) + multiscatterBody() + "const int LW = " +
-                          std::to_string(LW) + ", LH = " + std::to_string(LH) + ";\n" + R"glsl(
+  const std::string src =
+      "#version 310 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
+      "layout(local_size_x = 8, local_size_y = 8) in;\n"
+      "layout(std430, binding = 1) buffer Geometry { vec4 geo[]; };\n"
+      "layout(std430, binding = 2) buffer Lobe { float lobe[]; };\n" +
+      shaderForFiles(paths, ShaderLang::Glsl) + multiscatterBody() + "const int LW = " + std::to_string(LW) +
+      ", LH = " + std::to_string(LH) + ";\n" + R"glsl(
 // The Kulla-Conty lobe times n.l at each pixel (mu_o, mu_i, r from the host): f_ms(o, l) (n.l) under
 // a directional light of irradiance 1.
 void main() {
@@ -64,7 +65,8 @@ void main() {
   GLuint buf[2] = {0, 0};
   g.GenBuffers(2, buf);
   g.BindBuffer(GL_SHADER_STORAGE_BUFFER, buf[0]);
-  g.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(ln * 4 * sizeof(float)), lin.geometry.data(), GL_STATIC_DRAW);
+  g.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(ln * 4 * sizeof(float)), lin.geometry.data(),
+               GL_STATIC_DRAW);
   g.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buf[0]);
   g.BindBuffer(GL_SHADER_STORAGE_BUFFER, buf[1]);
   g.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(ln * sizeof(float)), nullptr, GL_DYNAMIC_READ);
@@ -74,7 +76,9 @@ void main() {
   g.Finish();
   const float* lm = static_cast<const float*>(
       g.MapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(ln * sizeof(float)), GL_MAP_READ_BIT));
-  if (!lm) throw Error(kExitSoftware, "render: could not read the lobe picture back (GL error " + std::to_string(g.GetError()) + ")");
+  if (!lm)
+    throw Error(kExitSoftware,
+                "render: could not read the lobe picture back (GL error " + std::to_string(g.GetError()) + ")");
   std::vector<float> lobe(lm, lm + ln);
   g.UnmapBuffer(GL_SHADER_STORAGE_BUFFER);
   g.DeleteBuffers(2, buf);
@@ -119,8 +123,9 @@ int runRender(const RenderOptions& o) {
   spec.ndf = ndfId(o.ndf);
   spec.gaf = gafId(o.gaf);
   if (isSheenNdf(spec.ndf))
-    throw Error(kExitUsage, "--ndf: render shades ggx, beckmann, blinn-phong or gaussian (the sheen row is charlie's), got '" +
-                                o.ndf + "'");
+    throw Error(kExitUsage,
+                "--ndf: render shades ggx, beckmann, blinn-phong or gaussian (the sheen row is charlie's), got '" +
+                    o.ndf + "'");
   checkPair(spec.ndf, spec.gaf);
   spec.cell = o.cell;
   spec.columns = o.columns;
@@ -132,10 +137,14 @@ int runRender(const RenderOptions& o) {
   }
   for (const std::string& r : o.rows) {
     const int k = furnaceRowIndex(r);
-    if (k < 0) throw Error(kExitUsage, "--rows: unknown row '" + r + "'" + didYouMean(r, names) + "; valid: " + joinNames(names));
+    if (k < 0)
+      throw Error(kExitUsage,
+                  "--rows: unknown row '" + r + "'" + didYouMean(r, names) + "; valid: " + joinNames(names));
     if (!furnaceRowFits(k, spec.ndf, spec.gaf))
-      throw Error(kExitUsage, "--rows: the glass row takes --ndf ggx or beckmann with --gaf smith or smith-correlated "
-                              "(the rough dielectric's models), not " + o.ndf + " + " + o.gaf);
+      throw Error(kExitUsage,
+                  "--rows: the glass row takes --ndf ggx or beckmann with --gaf smith or smith-correlated "
+                  "(the rough dielectric's models), not " +
+                      o.ndf + " + " + o.gaf);
     spec.rows.push_back(k);
   }
   checkOutputDir(o.outDir);
@@ -162,7 +171,8 @@ int runRender(const RenderOptions& o) {
   std::string tableNames;
   for (const std::string& p : tables.all()) tableNames += (tableNames.empty() ? "" : ",") + p;
   img.strings["render.kind"] = "white furnace: uniform environment of radiance 1, background 1";
-  img.strings["render.model"] = o.ndf + " + " + o.gaf + " (sheen: charlie + charlie-smith; glass: eta " + fmtG(kGlassEta) + ")";
+  img.strings["render.model"] =
+      o.ndf + " + " + o.gaf + " (sheen: charlie + charlie-smith; glass: eta " + fmtG(kGlassEta) + ")";
   img.strings["render.rows"] = rowNames;
   img.strings["render.columns"] = "perceptual roughness r = column/" + std::to_string(spec.columns - 1);
   img.strings["render.tables"] = tableNames;
@@ -172,14 +182,16 @@ int runRender(const RenderOptions& o) {
   img.strings["render.generator"] = "brdfbake render";
   TableImage lobeImg = lobe.img;
   lobeImg.strings = img.strings;
-  lobeImg.strings["render.kind"] = "one sphere per roughness (columns: r = 0.4, 0.7, 1) under a directional light of "
-                                   "irradiance 1 from (-0.5, 0.5, 0.7), black background";
+  lobeImg.strings["render.kind"] =
+      "one sphere per roughness (columns: r = 0.4, 0.7, 1) under a directional light of "
+      "irradiance 1 from (-0.5, 0.5, 0.7), black background";
   lobeImg.strings["render.rows"] = "single scattering (kernels/brdf on the host), + the Kulla-Conty lobe (GL)";
   lobeImg.strings["render.columns"] = "perceptual roughness 0.4, 0.7, 1";
   const std::vector<std::pair<std::string, std::string>> text = textOf(img), lobeText = textOf(lobeImg);
   // the PNG to look at: the grid with its rows named and its columns' roughness on top
   std::vector<std::pair<std::string, std::string>> rowLabels;
-  for (int k : spec.rows) rowLabels.push_back({furnaceRows()[static_cast<size_t>(k)].name, furnaceRows()[static_cast<size_t>(k)].expect});
+  for (int k : spec.rows)
+    rowLabels.push_back({furnaceRows()[static_cast<size_t>(k)].name, furnaceRows()[static_cast<size_t>(k)].expect});
   const LabelledPicture shown = labelFurnace(img.planes, W, H, spec.cell, spec.columns, rowLabels);
   const std::string exr = o.outDir + "/furnace.exr", png = o.outDir + "/furnace.png";
   const std::string lobeExr = o.outDir + "/lobe.exr", lobePng = o.outDir + "/lobe.png";
@@ -195,7 +207,9 @@ int runRender(const RenderOptions& o) {
   };
   files[1].bytesBound = static_cast<size_t>(shown.width) * shown.height * 3 + (1 << 16);
   files[2].path = lobeExr;
-  files[2].write = [&lobeImg, lobeExr](const std::string& tmp) { writeTableExrTemporary(tmp, lobeExr, lobeImg, false); };
+  files[2].write = [&lobeImg, lobeExr](const std::string& tmp) {
+    writeTableExrTemporary(tmp, lobeExr, lobeImg, false);
+  };
   files[2].bytesBound = ln * 12 + (1 << 16);
   files[3].path = lobePng;
   files[3].write = [&lobeImg, &lobeText, lobePng, LW, LH](const std::string& tmp) {
@@ -211,7 +225,8 @@ int runRender(const RenderOptions& o) {
   for (int i = 0; i < 3; ++i)
     std::printf("%s %.3g at r = %g (single scattering %.3g there)", i ? "," : "", lobe.lobeMax[i], kLobeRoughness[i],
                 lobe.singleAt[i]);
-  std::printf("\nwrote %s, %s (linear) and %s, %s (sRGB)\n", exr.c_str(), lobeExr.c_str(), png.c_str(), lobePng.c_str());
+  std::printf("\nwrote %s, %s (linear) and %s, %s (sRGB)\n", exr.c_str(), lobeExr.c_str(), png.c_str(),
+              lobePng.c_str());
   if (pic.fail) std::printf("FAIL: a row's pixels are off by more than the tables predict\n");
   return pic.fail ? 1 : 0;
 }

@@ -11,9 +11,9 @@ namespace brdfbake {
 struct RenderOptions {
   std::string outDir = "out/render";
   std::string ndf = "ggx", gaf = "smith-correlated";  // the pair the microfacet and glass rows shade
-  int cell = 48;     // pixels per sphere's square, 16..256
-  int columns = 11;  // roughness steps 0..1, 2..33
-  std::vector<std::string> rows;  // empty: every row that fits the pair
+  int cell = 48;                                      // pixels per sphere's square, 16..256
+  int columns = 11;                                   // roughness steps 0..1, 2..33
+  std::vector<std::string> rows;                      // empty: every row that fits the pair
   std::string device, cacheDir;
   bool noWait = false;
 };

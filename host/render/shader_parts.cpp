@@ -105,5 +105,4 @@ LobeInput lobeInput(int cell, int ndf, int gaf) {
   return in;
 }
 
-
 }  // namespace brdfbake

@@ -78,12 +78,15 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
     for (const Rung& r : res.rungs)
       if (r.method == m) rs.push_back(r);
     double o = order(rs);
-    std::snprintf(line, sizeof line, "%-40s  %9s  %14s  %14s  %14s\n", m.c_str(), std::isnan(o) ? "at floor" : fmt3(o).c_str(),
-                  timeTo(rs, 1e-3).c_str(), timeTo(rs, 1e-5).c_str(), timeTo(rs, 1e-7).c_str());
+    std::snprintf(line, sizeof line, "%-40s  %9s  %14s  %14s  %14s\n", m.c_str(),
+                  std::isnan(o) ? "at floor" : fmt3(o).c_str(), timeTo(rs, 1e-3).c_str(), timeTo(rs, 1e-5).c_str(),
+                  timeTo(rs, 1e-7).c_str());
     res.summary += line;
   }
-  res.summary += "order: slope of log(true error) against log(time) while the error falls (\"at floor\": float "
-                 "rounding or the reference's accuracy from the first rung). " + ladder.note;
+  res.summary +=
+      "order: slope of log(true error) against log(time) while the error falls (\"at floor\": float "
+      "rounding or the reference's accuracy from the first rung). " +
+      ladder.note;
 
   ReportPage page("brdfbake convergence");
   {
@@ -94,7 +97,8 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
     size_t covered = 0;
     for (const Rung& r : rs) covered += r.estimate >= r.error;
     page.verdict(ReportPage::Outcome::Measured,
-                 methods.front() + ": true error " + fmt3(rs.back().error) + " in " + fmt3(rs.back().seconds) + " s at its finest rung; its own estimate is at or above the true error at " +
+                 methods.front() + ": true error " + fmt3(rs.back().error) + " in " + fmt3(rs.back().seconds) +
+                     " s at its finest rung; its own estimate is at or above the true error at " +
                      std::to_string(covered) + " of " + std::to_string(rs.size()) + " rungs");
   }
   page.paragraph(res.table);
@@ -103,7 +107,8 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
   for (size_t mi = 0; mi < methods.size(); ++mi) {
     dat += "# " + methods[mi] + ": seconds estimate error\n";
     for (const Rung& r : res.rungs)
-      if (r.method == methods[mi]) dat += fmt3(r.seconds) + " " + fmt3(std::max(r.estimate, 1e-17)) + " " + fmt3(std::max(r.error, 1e-17)) + "\n";
+      if (r.method == methods[mi])
+        dat += fmt3(r.seconds) + " " + fmt3(std::max(r.estimate, 1e-17)) + " " + fmt3(std::max(r.error, 1e-17)) + "\n";
     dat += "\n\n";
   }
   page.data("convergence.dat", dat);
@@ -111,7 +116,8 @@ ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) 
   for (const Rung& r : res.rungs)
     csv += r.method + "," + r.budget + "," + fmt3(r.seconds) + "," + fmt3(r.estimate) + "," + fmt3(r.error) + "\n";
   page.data("convergence.csv", csv);
-  std::string plot = "set title 'error against run time: " + res.table + "' noenhanced\n"
+  std::string plot = "set title 'error against run time: " + res.table +
+                     "' noenhanced\n"
                      "set logscale xy\nset format y '10^{%L}'\nset xlabel 'seconds'\nset ylabel 'max relative error'\n"
                      "set key outside bottom center horizontal maxrows 3\nset grid\nplot ";
   for (size_t mi = 0; mi < methods.size(); ++mi) {

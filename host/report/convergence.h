@@ -14,7 +14,6 @@
 
 namespace brdfbake {
 
-
 struct ConvergenceResult {
   std::string table;  // what was measured
   std::vector<Rung> rungs;

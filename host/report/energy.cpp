@@ -20,8 +20,8 @@ namespace brdfbake {
 
 namespace {
 
-// The diffuse and dielectric kernels' float arithmetic, as in the bake (host/tables/table2d.cpp, host/tables/dielectric_bake.cpp): once per
-// lobe; the specular lobe's is modelled per texel (tables/error_model.h).
+// The diffuse and dielectric kernels' float arithmetic, as in the bake (host/tables/table2d.cpp,
+// host/tables/dielectric_bake.cpp): once per lobe; the specular lobe's is modelled per texel (tables/error_model.h).
 constexpr double kAllowance = 1e-6;
 constexpr size_t kWorstShown = 5;
 
@@ -33,11 +33,15 @@ double normalReflectance(const FresnelChoice& f, int c) {
   auto [x, y] = f.modelParams(c);
   switch (f.model) {
     case FRESNEL_SCHLICK:
-    case FRESNEL_F82_TINT: return x;
+    case FRESNEL_F82_TINT:
+      return x;
     case FRESNEL_DIELECTRIC:
-    case FRESNEL_SCHLICK_TIR: return (x - 1) * (x - 1) / ((x + 1) * (x + 1));
-    case FRESNEL_CONDUCTOR: return ((x - 1) * (x - 1) + y * y) / ((x + 1) * (x + 1) + y * y);
-    default: return 1;  // F = 1: everything is reflected specularly
+    case FRESNEL_SCHLICK_TIR:
+      return (x - 1) * (x - 1) / ((x + 1) * (x + 1));
+    case FRESNEL_CONDUCTOR:
+      return ((x - 1) * (x - 1) + y * y) / ((x + 1) * (x + 1) + y * y);
+    default:
+      return 1;  // F = 1: everything is reflected specularly
   }
 }
 
@@ -45,7 +49,8 @@ double normalReflectance(const FresnelChoice& f, int c) {
 
 std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
   const int n = req.size ? *req.size : 33;
-  if (n < 2) throw Error(kExitUsage, "--size must be at least 2 for energy (grid nodes per axis), got " + std::to_string(n));
+  if (n < 2)
+    throw Error(kExitUsage, "--size must be at least 2 for energy (grid nodes per axis), got " + std::to_string(n));
   DeviceEntry dev = selectDevice(req.device);
   KernelRunner runner(dev.device);
   const FresnelChoice& fc = req.fresnel;
@@ -60,8 +65,7 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
       EnergyResult res;
       res.material = ndfNames()[ndf] + "+" + gafNames()[gaf] + ", fresnel " + fc.describe() + ", diffuse " +
                      (d >= 0 ? diffuseNames()[d] : std::string("none")) +
-                     (orenNayar && req.sigma ? " sigma=" + fmtG(*req.sigma) : "") + ", coupling " +
-                     req.coupling;
+                     (orenNayar && req.sigma ? " sigma=" + fmtG(*req.sigma) : "") + ", coupling " + req.coupling;
       std::vector<EnergyPoint> pts;
       // the node grid (edges included), or texel centres for the sheen GAFs, whose albedo is
       // infinite at mu = 0 (as verify's white furnace samples them)
@@ -72,8 +76,10 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
       if (req.transmission) {
         // rough glass: reflected plus transmitted albedo at the material's eta, node grid of (mu, r)
         if ((ndf != NDF_GGX && ndf != NDF_BECKMANN) || (gaf != GAF_SMITH && gaf != GAF_SMITH_CORRELATED))
-          throw Error(kExitUsage, "--transmission: the rough dielectric takes --ndf ggx or beckmann with --gaf smith or "
-                                  "smith-correlated, not " + ndfNames()[ndf] + "+" + gafNames()[gaf]);
+          throw Error(kExitUsage,
+                      "--transmission: the rough dielectric takes --ndf ggx or beckmann with --gaf smith or "
+                      "smith-correlated, not " +
+                          ndfNames()[ndf] + "+" + gafNames()[gaf]);
         res.secondLobe = "E_T";
         res.material = ndfNames()[ndf] + "+" + gafNames()[gaf] + ", rough glass (transmission), " + fc.describe();
         for (int c = 0; c < fc.channels(); ++c) {
@@ -112,11 +118,15 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
           if (d == DIFFUSE_BURLEY || d == DIFFUSE_LAMBERT) {
             np = n, plo = 0, phi = 1;
           } else if (orenNayar) {
-            if (req.sigma) plo = phi = *req.sigma;
-            else np = n, plo = 0, phi = diffuseAxis(d).hi, res.paramName = "sigma";
+            if (req.sigma)
+              plo = phi = *req.sigma;
+            else
+              np = n, plo = 0, phi = diffuseAxis(d).hi, res.paramName = "sigma";
           } else if (shirley) {
-            if (!fc.isOne()) plo = phi = normalReflectance(fc, c);
-            else np = n, plo = 0, phi = 1, res.paramName = "F0";
+            if (!fc.isOne())
+              plo = phi = normalReflectance(fc, c);
+            else
+              np = n, plo = 0, phi = 1, res.paramName = "F0";
           }
           dif = runner.diffuseAlbedo(d, n, np, static_cast<float>(plo), static_cast<float>(phi), nodes);
           // the diffuse lobe on its own: Burley's and Oren-Nayar's exceed 1 by themselves
@@ -165,7 +175,8 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
         if (p.total > 1 + p.bound) res.violates = true;
       }
       res.channels = fc.channels();
-      for (int c = 0; c < fc.channels(); ++c) res.fresnelAvg.push_back(fresnelAverage(fc, c, nullptr, &res.fresnelAvgHow));
+      for (int c = 0; c < fc.channels(); ++c)
+        res.fresnelAvg.push_back(fresnelAverage(fc, c, nullptr, &res.fresnelAvgHow));
       pts.resize(std::min(pts.size(), kWorstShown));
       res.worst = pts;
       out.push_back(res);
@@ -198,7 +209,8 @@ std::string formatEnergy(const std::vector<EnergyResult>& results) {
       char param[32] = "";
       if (!std::isnan(p.param)) std::snprintf(param, sizeof param, "%.4g", p.param);
       std::snprintf(line, sizeof line, "  %6.4g  %6.4g  %8s  %7s  %10.6g  %10.6g  %10.6g  %9.2g\n", p.mu, p.r, param,
-                    r.channels == 1 ? "-" : std::string(1, "RGB"[p.channel]).c_str(), p.spec, p.diffuse, p.total, p.bound);
+                    r.channels == 1 ? "-" : std::string(1, "RGB"[p.channel]).c_str(), p.spec, p.diffuse, p.total,
+                    p.bound);
       s += line;
     }
   }
@@ -210,21 +222,24 @@ std::string writeEnergyPage(const BakeRequest& req, const std::vector<EnergyResu
   int violating = 0;
   for (const EnergyResult& r : results) violating += r.violates;
   page.verdict(violating ? ReportPage::Outcome::Fail : ReportPage::Outcome::Pass,
-               violating ? std::to_string(violating) + " of " + std::to_string(results.size()) + " material(s) violate energy conservation"
+               violating ? std::to_string(violating) + " of " + std::to_string(results.size()) +
+                               " material(s) violate energy conservation"
                          : "all " + std::to_string(results.size()) + " material(s) conserve energy");
   page.preformatted(formatEnergy(results));
   std::string csv = "material,mu,r,param,channel,lobe1,lobe2,total,bound\n";
   for (const EnergyResult& r : results)
     for (const EnergyPoint& p : r.worst)
-      csv += "\"" + r.material + "\"," + fmt4(p.mu) + "," + fmt4(p.r) + "," + (std::isnan(p.param) ? "" : fmt4(p.param)) + "," +
-             std::to_string(p.channel) + "," + fmt4(p.spec) + "," + fmt4(p.diffuse) + "," + fmt4(p.total) + "," + fmt4(p.bound) + "\n";
+      csv += "\"" + r.material + "\"," + fmt4(p.mu) + "," + fmt4(p.r) + "," +
+             (std::isnan(p.param) ? "" : fmt4(p.param)) + "," + std::to_string(p.channel) + "," + fmt4(p.spec) + "," +
+             fmt4(p.diffuse) + "," + fmt4(p.total) + "," + fmt4(p.bound) + "\n";
   page.data("energy.csv", csv);
   // the white furnace of each pair the materials use, as `brdfbake render` draws it
   FurnaceFigures figures(req.device);
   for (int ndf : req.ndfs)
     for (int gaf : req.gafs)
       if (pairSupported(ndf, gaf)) {
-        page.heading(ndfNames()[static_cast<size_t>(ndf)] + "+" + gafNames()[static_cast<size_t>(gaf)] + ": the white furnace");
+        page.heading(ndfNames()[static_cast<size_t>(ndf)] + "+" + gafNames()[static_cast<size_t>(gaf)] +
+                     ": the white furnace");
         figures.add(page, ndf, gaf);
       }
   return page.write(req.outDir + "/energy");

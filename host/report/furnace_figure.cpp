@@ -59,7 +59,8 @@ bool FurnaceFigures::add(ReportPage& page, int ndf, int gaf) {
     if (furnaceRowFits(k, ndf, gaf)) spec.rows.push_back(k);
   }
   if (isSheenNdf(ndf)) {
-    page.paragraph("Furnace render: not drawn for " + pair + " (a sheen layer, not a material: `brdfbake render` draws "
+    page.paragraph("Furnace render: not drawn for " + pair +
+                   " (a sheen layer, not a material: `brdfbake render` draws "
                    "charlie + charlie-smith's albedo in its sheen row).");
     return true;
   }
@@ -87,7 +88,8 @@ bool FurnaceFigures::add(ReportPage& page, int ndf, int gaf) {
   }
   std::string rowNames;
   for (int k : spec.rows) rowNames += (rowNames.empty() ? "" : ", ") + furnaceRows()[static_cast<size_t>(k)].name;
-  const std::string file = "render_" + ndfNames()[static_cast<size_t>(ndf)] + "_" + gafNames()[static_cast<size_t>(gaf)] + ".png";
+  const std::string file =
+      "render_" + ndfNames()[static_cast<size_t>(ndf)] + "_" + gafNames()[static_cast<size_t>(gaf)] + ".png";
   // the text chunks: what made it, without the scratch directory's name (the page's bytes repeat)
   std::vector<std::pair<std::string, std::string>> text = {
       {"render.kind", "white furnace: uniform environment of radiance 1, background 1"},
@@ -97,7 +99,8 @@ bool FurnaceFigures::add(ReportPage& page, int ndf, int gaf) {
       {"render.renderer", pic.renderer},
       {"render.generator", "brdfbake (report page)"}};
   std::vector<std::pair<std::string, std::string>> rowLabels;
-  for (int k : spec.rows) rowLabels.push_back({furnaceRows()[static_cast<size_t>(k)].name, furnaceRows()[static_cast<size_t>(k)].expect});
+  for (int k : spec.rows)
+    rowLabels.push_back({furnaceRows()[static_cast<size_t>(k)].name, furnaceRows()[static_cast<size_t>(k)].expect});
   LabelledPicture shown = labelFurnace(pic.rgb, pic.width, pic.height, spec.cell, spec.columns, rowLabels);
   const int W = shown.width, H = shown.height;
   page.image(file,
@@ -106,8 +109,9 @@ bool FurnaceFigures::add(ReportPage& page, int ndf, int gaf) {
              [W, H, rgb = std::move(shown.planes), text](const std::string& path) {
                writePng8SrgbTemporary(path, path, W, H, rgb, text);
              });
-  page.preformatted(furnaceTable(spec, pic) + (pic.fail ? "FAIL: a row's pixels are off by more than the tables predict\n"
-                                                        : "every measured pixel within its bound (docs/reports.md)\n"));
+  page.preformatted(furnaceTable(spec, pic) + (pic.fail
+                                                   ? "FAIL: a row's pixels are off by more than the tables predict\n"
+                                                   : "every measured pixel within its bound (docs/reports.md)\n"));
   return !pic.fail;
 }
 

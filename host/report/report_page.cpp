@@ -21,11 +21,16 @@ namespace {
 std::string escape(const std::string& s) {
   std::string o;
   for (char c : s) {
-    if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '&') o += "&amp;";
-    else if (c == '"') o += "&quot;";
-    else o += c;
+    if (c == '<')
+      o += "&lt;";
+    else if (c == '>')
+      o += "&gt;";
+    else if (c == '&')
+      o += "&amp;";
+    else if (c == '"')
+      o += "&quot;";
+    else
+      o += c;
   }
   return o;
 }
@@ -120,19 +125,26 @@ std::string ReportPage::write(const std::string& dirName) const {
                      "pre{background:#f4f4f4;padding:.5em;overflow-x:auto;font-size:.8em}img{max-width:100%}"
                      ".verdict{font-size:1.2em;padding:.4em .6em;border-left:.4em solid #888}"
                      ".verdict.pass{border-color:#2a2}.verdict.fail{border-color:#c22}</style></head>"
-                     "<body>\n<h1>" + escape(title_) + "</h1>\n";
+                     "<body>\n<h1>" +
+                     escape(title_) + "</h1>\n";
   if (!verdict_.empty()) {
     const char* cls = outcome_ == Outcome::Pass ? "pass" : outcome_ == Outcome::Fail ? "fail" : "measured";
     const char* word = outcome_ == Outcome::Pass ? "PASS: " : outcome_ == Outcome::Fail ? "FAIL: " : "";
-    html += std::string("<p class=\"verdict ") + cls + "\">" + (*word ? std::string("<strong>") + word + "</strong>" : "") +
-            escape(verdict_) + "</p>\n";
+    html += std::string("<p class=\"verdict ") + cls + "\">" +
+            (*word ? std::string("<strong>") + word + "</strong>" : "") + escape(verdict_) + "</p>\n";
   }
   try {
     for (const Item& it : items_) {
       switch (it.kind) {
-        case Item::Heading: html += "<h2>" + escape(it.a) + "</h2>\n"; break;
-        case Item::Paragraph: html += "<p>" + escape(it.a) + "</p>\n"; break;
-        case Item::Pre: html += "<pre>" + escape(it.a) + "</pre>\n"; break;
+        case Item::Heading:
+          html += "<h2>" + escape(it.a) + "</h2>\n";
+          break;
+        case Item::Paragraph:
+          html += "<p>" + escape(it.a) + "</p>\n";
+          break;
+        case Item::Pre:
+          html += "<pre>" + escape(it.a) + "</pre>\n";
+          break;
         case Item::Data:
           writeFile(tmp / it.a, it.b);
           html += "<p>data: <a href=\"" + escape(it.a) + "\">" + escape(it.a) + "</a></p>\n";
@@ -152,8 +164,8 @@ std::string ReportPage::write(const std::string& dirName) const {
             html += "<figure><img src=\"" + escape(it.a) + ".svg\" alt=\"" + escape(it.c) + "\"><figcaption>" +
                     escape(it.c) + "</figcaption></figure>\n";
           else
-            html += "<p>[plot " + escape(it.a) + " not drawn: run <code>gnuplot " + escape(it.a) +
-                    ".gp</code> here] " + escape(it.c) + "</p>\n";
+            html += "<p>[plot " + escape(it.a) + " not drawn: run <code>gnuplot " + escape(it.a) + ".gp</code> here] " +
+                    escape(it.c) + "</p>\n";
           break;
         }
       }

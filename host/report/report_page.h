@@ -19,7 +19,7 @@ class ReportPage {
   enum class Outcome { Pass, Fail, Measured };
   void verdict(Outcome outcome, const std::string& text);
   void heading(const std::string& text);
-  void paragraph(const std::string& text);    // HTML-escaped
+  void paragraph(const std::string& text);     // HTML-escaped
   void preformatted(const std::string& text);  // the terminal table, as printed
   // A data file (CSV) in the run's directory, linked from the page.
   void data(const std::string& fileName, const std::string& csv);

@@ -23,10 +23,13 @@ std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine
   size_t bad = 0;
   for (const StressPoint& p : pts) bad += !p.pass();
   page.verdict(bad ? ReportPage::Outcome::Fail : ReportPage::Outcome::Pass,
-               bad ? std::to_string(bad) + " of " + std::to_string(pts.size()) + " points fail (marked in the table and the plot)"
+               bad ? std::to_string(bad) + " of " + std::to_string(pts.size()) +
+                         " points fail (marked in the table and the plot)"
                    : "all " + std::to_string(pts.size()) + " points pass: finite, within their bounds, limits met");
-  page.paragraph("Each point: the kernel's value, its error against the independent reference (relative to "
-                 "max(1, |value|)), the claimed bound (the kernel's estimate + its float arithmetic, as the bake claims it), and the expected limit.");
+  page.paragraph(
+      "Each point: the kernel's value, its error against the independent reference (relative to "
+      "max(1, |value|)), the claimed bound (the kernel's estimate + its float arithmetic, as the bake claims it), and "
+      "the expected limit.");
   page.preformatted(formatStress(pts));
   std::string dat = "# index error bound pass\n";
   for (size_t i = 0; i < pts.size(); ++i)
@@ -35,19 +38,21 @@ std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine
   page.data("stress.dat", dat);
   std::string csv = "sweep,point,value,reference,error,bound,finite,within_bound,limit,limit_met\n";
   for (const auto& p : pts)
-    csv += "\"" + p.sweep + "\",\"" + p.label + "\"," + fmt4(p.value) + "," + fmt4(p.reference) + "," + fmt4(p.error) + "," +
-           fmt4(p.bound) + "," + (p.finite ? "1" : "0") + "," + (p.withinBound ? "1" : "0") + ",\"" + p.limit + "\"," +
-           (p.limitMet ? "1" : "0") + "\n";
+    csv += "\"" + p.sweep + "\",\"" + p.label + "\"," + fmt4(p.value) + "," + fmt4(p.reference) + "," + fmt4(p.error) +
+           "," + fmt4(p.bound) + "," + (p.finite ? "1" : "0") + "," + (p.withinBound ? "1" : "0") + ",\"" + p.limit +
+           "\"," + (p.limitMet ? "1" : "0") + "\n";
   page.data("stress.csv", csv);
-  page.plot("stress",
-            "set title 'stress: error against the reference, and the claimed bound, per point'\n"
-            "set logscale y\nset format y '10^{%L}'\nset xlabel 'point (see the table)'\nset ylabel 'relative error'\n"
-            "set key outside bottom center horizontal\nset grid\n"
-            "plot 'stress.dat' using 1:3 with steps lw 2 title 'claimed bound', "
-            "'' using 1:2 with points pt 7 title 'error'" +
-                std::string(bad ? ", '' using 1:($4 < 1 ? $2 : 1/0) with points pt 6 ps 2 lc rgb 'red' title 'failing point'" : ""),
-            bad ? "Errors below the steps are within their claim; red circles mark the failing points."
-                : "Errors below the steps are within their claim; no point fails.");
+  page.plot(
+      "stress",
+      "set title 'stress: error against the reference, and the claimed bound, per point'\n"
+      "set logscale y\nset format y '10^{%L}'\nset xlabel 'point (see the table)'\nset ylabel 'relative error'\n"
+      "set key outside bottom center horizontal\nset grid\n"
+      "plot 'stress.dat' using 1:3 with steps lw 2 title 'claimed bound', "
+      "'' using 1:2 with points pt 7 title 'error'" +
+          std::string(bad ? ", '' using 1:($4 < 1 ? $2 : 1/0) with points pt 6 ps 2 lc rgb 'red' title 'failing point'"
+                          : ""),
+      bad ? "Errors below the steps are within their claim; red circles mark the failing points."
+          : "Errors below the steps are within their claim; no point fails.");
   // the white furnace of the request's pairs, as `brdfbake render` draws it
   FurnaceFigures figures(req.device);
   for (int ndf : req.ndfs)

@@ -12,7 +12,6 @@
 
 namespace brdfbake {
 
-
 std::vector<StressPoint> runStress(const BakeRequest& req, std::string* pageLine);
 std::string formatStress(const std::vector<StressPoint>& pts);
 

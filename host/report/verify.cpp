@@ -25,9 +25,9 @@ namespace brdfbake {
 
 namespace {
 
-constexpr double kAllowance = 1e-6;       // the dielectric kernels' float arithmetic (host/bake)
-constexpr double kWeakFurnaceTol = 1e-6;  // |W(mu)/mu - 1| for an exact Smith pairing
-constexpr double kNormTol = 1e-6;         // |int D (n.h) dw - 1|
+constexpr double kAllowance = 1e-6;        // the dielectric kernels' float arithmetic (host/bake)
+constexpr double kWeakFurnaceTol = 1e-6;   // |W(mu)/mu - 1| for an exact Smith pairing
+constexpr double kNormTol = 1e-6;          // |int D (n.h) dw - 1|
 constexpr double kReciprocityTol = 1e-12;  // relative, in double
 constexpr int kReciprocityPairs = 2000;
 
@@ -75,12 +75,16 @@ VerifyCheck whiteFurnace(const Table& t, int n, bool node, ReportPage& page, int
                                     "title 'E > 1 + bound'";
   page.plot("furnace_" + stem,
             "set title '" + pairName(ndf, gaf) + ": directional albedo E(mu, r)" +
-                (c.pass ? "" : "; red: E > 1 + bound") + "'\n"
-            "set xlabel 'mu = n.o'\nset ylabel 'r (perceptual roughness)'\nset cblabel 'E'\n"
-            "set xrange [" + range + "]\nset yrange [" + range + "]\nset cbrange [0:" + fmt4(std::max(1.0, maxE)) + "]\n"
-            "set cbtics add ('E = 1' 1)\n"
-            "set palette defined (0 '#081d58', 0.4 '#225ea8', 0.7 '#41b6c4', 0.9 '#c7e9b4', 1 '#ffffd9')\n"
-            "plot 'furnace_" + stem + ".dat' using 1:2:3 with image notitle" + over,
+                (c.pass ? "" : "; red: E > 1 + bound") +
+                "'\n"
+                "set xlabel 'mu = n.o'\nset ylabel 'r (perceptual roughness)'\nset cblabel 'E'\n"
+                "set xrange [" +
+                range + "]\nset yrange [" + range + "]\nset cbrange [0:" + fmt4(std::max(1.0, maxE)) +
+                "]\n"
+                "set cbtics add ('E = 1' 1)\n"
+                "set palette defined (0 '#081d58', 0.4 '#225ea8', 0.7 '#41b6c4', 0.9 '#c7e9b4', 1 '#ffffd9')\n"
+                "plot 'furnace_" +
+                stem + ".dat' using 1:2:3 with image notitle" + over,
             "White furnace of " + pairName(ndf, gaf) + ": " + c.detail + ".");
   return c;
 }
@@ -101,11 +105,14 @@ void energyLoss(const Table& t, const Table& avg, int n, bool node, ReportPage& 
   std::string stem = fileStem(ndf, gaf);
   page.data("loss_" + stem + ".dat", csv);
   page.plot("loss_" + stem,
-            "set title '" + pairName(ndf, gaf) + ": energy lost by single scattering, 1 - E'\n"
-            "set xlabel 'r (perceptual roughness)'\nset ylabel '1 - E'\nset key outside right top\nset grid\n"
-            "plot 'loss_" + stem + ".dat' using 1:2 with lines lw 2 title '1 - E_{avg}', "
-            "'' using 1:3 with lines title 'mu = 1', '' using 1:4 with lines title 'mu = 1/2', "
-            "'' using 1:5 with lines title 'mu = 1/8'",
+            "set title '" + pairName(ndf, gaf) +
+                ": energy lost by single scattering, 1 - E'\n"
+                "set xlabel 'r (perceptual roughness)'\nset ylabel '1 - E'\nset key outside right top\nset grid\n"
+                "plot 'loss_" +
+                stem +
+                ".dat' using 1:2 with lines lw 2 title '1 - E_{avg}', "
+                "'' using 1:3 with lines title 'mu = 1', '' using 1:4 with lines title 'mu = 1/2', "
+                "'' using 1:5 with lines title 'mu = 1/8'",
             "Energy lost by " + pairName(ndf, gaf) + " (negative: the lobe gains energy it should not).");
 }
 
@@ -221,8 +228,10 @@ std::string VerifyResult::summary() const {
   std::string s = (pass() ? "pass  " : "FAIL  ") + pairName(ndf, gaf) + ":";
   for (const auto& c : checks) {
     if (!c.applies) continue;
-    if (c.pass) s += " " + c.name + " ok;";
-    else s += " " + c.name + " FAILS (" + c.detail + ");";
+    if (c.pass)
+      s += " " + c.name + " ok;";
+    else
+      s += " " + c.name + " FAILS (" + c.detail + ");";
   }
   s.pop_back();
   return s + "\n";
@@ -230,7 +239,8 @@ std::string VerifyResult::summary() const {
 
 std::vector<VerifyResult> runVerify(const BakeRequest& req, std::string* pageLine) {
   const int n = req.size ? *req.size : 33;
-  if (n < 2) throw Error(kExitUsage, "--size must be at least 2 for verify (grid nodes per axis), got " + std::to_string(n));
+  if (n < 2)
+    throw Error(kExitUsage, "--size must be at least 2 for verify (grid nodes per axis), got " + std::to_string(n));
   std::vector<std::pair<int, int>> pairs;
   for (int ndf : req.ndfs)
     for (int gaf : req.gafs) pairs.push_back({ndf, gaf});
@@ -257,11 +267,13 @@ std::vector<VerifyResult> runVerify(const BakeRequest& req, std::string* pageLin
   }
   std::unique_ptr<KernelRunner> runner;  // the rough dielectric's check, for the pairs that have one
   ReportPage page("brdfbake verify");
-  const std::string checksText = ("White furnace (E <= 1 + bound), weak white furnace for Smith GAFs (|W(mu)/mu - 1| <= 1e-6), "
-                 "NDF normalisation (|int D (n.h) dw - 1| <= 1e-6), reciprocity (relative 1e-12 at " +
-                 std::to_string(kReciprocityPairs) + " random pairs), energy lost (1 - E), the rough dielectric's E_R + E_T <= 1 + "
-                 "bound (ggx, beckmann with smith GAFs). Grid: " +
-                 std::to_string(n) + " x " + std::to_string(n) + " nodes of (mu, r), edges included.");
+  const std::string checksText =
+      ("White furnace (E <= 1 + bound), weak white furnace for Smith GAFs (|W(mu)/mu - 1| <= 1e-6), "
+       "NDF normalisation (|int D (n.h) dw - 1| <= 1e-6), reciprocity (relative 1e-12 at " +
+       std::to_string(kReciprocityPairs) +
+       " random pairs), energy lost (1 - E), the rough dielectric's E_R + E_T <= 1 + "
+       "bound (ggx, beckmann with smith GAFs). Grid: " +
+       std::to_string(n) + " x " + std::to_string(n) + " nodes of (mu, r), edges included.");
   // the checks first, then the page: the summary opens it, the pairs' sections follow
   std::vector<VerifyResult> out;
   ReportPage scratch("");  // whiteFurnace's plot goes to the page in the second pass
@@ -300,7 +312,8 @@ std::vector<VerifyResult> runVerify(const BakeRequest& req, std::string* pageLin
     for (const auto& c : res.checks)
       lines += (c.applies ? (c.pass ? "pass  " : "FAIL  ") : "n/a   ") + c.name + ": " + c.detail + "\n";
     page.preformatted(lines);
-    std::fprintf(stderr, "verify: rendering %s's white furnace (%zu/%zu)\n", pairName(res.ndf, res.gaf).c_str(), i + 1, out.size());
+    std::fprintf(stderr, "verify: rendering %s's white furnace (%zu/%zu)\n", pairName(res.ndf, res.gaf).c_str(), i + 1,
+                 out.size());
     figures.add(page, res.ndf, res.gaf);
   }
   std::string csv = "ndf,gaf,check,applies,pass,worst,where\n";

@@ -12,7 +12,7 @@
 namespace brdfbake {
 
 struct VerifyCheck {
-  std::string name;    // "white furnace", ...
+  std::string name;  // "white furnace", ...
   bool pass = true;
   bool applies = true;  // false: not meaningful for this pair (e.g. weak furnace of a non-Smith GAF)
   double worst = 0;     // the worst measured violation or deviation

@@ -85,8 +85,9 @@ std::string gltfJson(const std::string& path, bool glb) {
   const uint64_t len = u32(12);
   if (head.compare(16, 4, "JSON") != 0) bad(path, "chunk 0", "the first chunk is not JSON");
   if (len > kCapGltfJson || 20 + len > size)
-    bad(path, "chunk 0", "JSON chunk of " + std::to_string(len) + " bytes does not fit the file or the " +
-                             std::to_string(kCapGltfJson >> 20) + " MiB cap");
+    bad(path, "chunk 0",
+        "JSON chunk of " + std::to_string(len) + " bytes does not fit the file or the " +
+            std::to_string(kCapGltfJson >> 20) + " MiB cap");
   return readInputPrefix(path, "scene", 20 + len).substr(20);
 }
 
@@ -101,14 +102,17 @@ void checkJsonNesting(const std::string& text, const std::string& path) {
   for (size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (inString) {
-      if (c == '\\') ++i;
-      else if (c == '"') inString = false;
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        inString = false;
     } else if (c == '"') {
       inString = true;
     } else if (c == '[' || c == '{') {
       if (++depth > kMaxJsonNesting)
-        bad(path, "byte " + std::to_string(i), "arrays and objects nest deeper than " + std::to_string(kMaxJsonNesting) +
-                                                   " levels; a glTF's materials need at most 8");
+        bad(path, "byte " + std::to_string(i),
+            "arrays and objects nest deeper than " + std::to_string(kMaxJsonNesting) +
+                " levels; a glTF's materials need at most 8");
     } else if (c == ']' || c == '}') {
       depth = std::max(0, depth - 1);
     }
@@ -160,7 +164,8 @@ Scene parseGltf(const std::string& text, const std::string& path) {
     SceneMaterial m;
     auto name = gm.find("name");
     if (name != gm.end() && !name->is_string()) bad(path, at + ".name", "expected a string, got " + shown(*name));
-    m.name = name == gm.end() || name->get<std::string>().empty() ? "material_" + std::to_string(i) : name->get<std::string>();
+    m.name = name == gm.end() || name->get<std::string>().empty() ? "material_" + std::to_string(i)
+                                                                  : name->get<std::string>();
     m.pos = SourcePos{path, 0, 0};
     m.ndf = NDF_GGX;
     m.gaf = GAF_SMITH_CORRELATED;
@@ -181,7 +186,8 @@ Scene parseGltf(const std::string& text, const std::string& path) {
     if (exts.contains("KHR_materials_ior")) {
       const Json& e = object(path, exts, extAt, "KHR_materials_ior");
       ior = number(path, e, extAt + ".KHR_materials_ior", "ior", 1.5, 0, 1e300);
-      if (ior != 0 && ior < 1) bad(path, extAt + ".KHR_materials_ior.ior", "expected 0 or a number >= 1, got " + fmtG(ior));
+      if (ior != 0 && ior < 1)
+        bad(path, extAt + ".KHR_materials_ior.ior", "expected 0 or a number >= 1, got " + fmtG(ior));
       m.notes.push_back("KHR_materials_ior: ior " + fmtG(ior) + " -> Schlick F0 ((ior-1)/(ior+1))^2");
     }
     double f0 = ior > 0 ? std::pow((ior - 1) / (ior + 1), 2) : 0.04;
@@ -213,8 +219,9 @@ Scene parseGltf(const std::string& text, const std::string& path) {
     }
     for (const auto& [extName, v] : exts.items()) {
       (void)v;
-      if (extName != "KHR_materials_ior" && extName != "KHR_materials_specular" && extName != "KHR_materials_clearcoat" &&
-          extName != "KHR_materials_transmission" && extName != "KHR_materials_sheen")
+      if (extName != "KHR_materials_ior" && extName != "KHR_materials_specular" &&
+          extName != "KHR_materials_clearcoat" && extName != "KHR_materials_transmission" &&
+          extName != "KHR_materials_sheen")
         m.notes.push_back(extName + ": no table of its own (shaded analytically or not a BRDF extension)");
     }
     s.materials.push_back(m);

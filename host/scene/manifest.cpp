@@ -21,9 +21,7 @@
 
 namespace brdfbake {
 
-std::string SourcePos::str() const {
-  return file + ":" + std::to_string(line) + ":" + std::to_string(column);
-}
+std::string SourcePos::str() const { return file + ":" + std::to_string(line) + ":" + std::to_string(column); }
 
 namespace {
 
@@ -42,11 +40,11 @@ struct Reader {
       std::string key(k.str());
       if (std::find(valid.begin(), valid.end(), key) != valid.end()) continue;
       std::string near = closestName(key, valid);
-      throw Error(kExitDataErr, SourcePos{file, static_cast<int>(k.source().begin.line),
-                                          static_cast<int>(k.source().begin.column)}.str() +
-                                    ": unknown key '" + key + "' in " + where +
-                                    (near.empty() ? "" : " (did you mean '" + near + "'?)") + "; valid: " +
-                                    joinNames(valid));
+      throw Error(
+          kExitDataErr,
+          SourcePos{file, static_cast<int>(k.source().begin.line), static_cast<int>(k.source().begin.column)}.str() +
+              ": unknown key '" + key + "' in " + where + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+              "; valid: " + joinNames(valid));
     }
   }
   const toml::table& table(const toml::node& n, const std::string& what) const {
@@ -63,9 +61,12 @@ struct Reader {
   }
   double number(const toml::node& n, const std::string& what, double lo, double hi) const {
     double v;
-    if (n.is_integer()) v = static_cast<double>(n.as_integer()->get());
-    else if (n.is_floating_point()) v = n.as_floating_point()->get();
-    else fail(n, what + " must be a number in [" + fmtG(lo) + ", " + fmtG(hi) + "]");
+    if (n.is_integer())
+      v = static_cast<double>(n.as_integer()->get());
+    else if (n.is_floating_point())
+      v = n.as_floating_point()->get();
+    else
+      fail(n, what + " must be a number in [" + fmtG(lo) + ", " + fmtG(hi) + "]");
     if (!(v >= lo && v <= hi)) fail(n, what + " must be in [" + fmtG(lo) + ", " + fmtG(hi) + "], got " + fmtG(v));
     return v;
   }
@@ -81,7 +82,8 @@ struct Reader {
   std::vector<double> values(const toml::node& n, const std::string& what, double lo, double hi) const {
     if (!n.is_array()) return {number(n, what, lo, hi)};
     const toml::array& a = *n.as_array();
-    if (a.size() != 1 && a.size() != 3) fail(n, what + " must be one number or three (R, G, B), got " + std::to_string(a.size()));
+    if (a.size() != 1 && a.size() != 3)
+      fail(n, what + " must be one number or three (R, G, B), got " + std::to_string(a.size()));
     std::vector<double> v;
     for (const auto& x : a) v.push_back(number(x, what, lo, hi));
     return v;
@@ -92,8 +94,8 @@ struct Reader {
     for (size_t i = 0; i < names.size(); ++i)
       if (names[i] == s) return static_cast<int>(i);
     std::string near = closestName(s, names);
-    fail(n, "unknown " + what + " '" + s + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") + "; valid: " +
-                joinNames(names));
+    fail(n, "unknown " + what + " '" + s + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+                "; valid: " + joinNames(names));
   }
 };
 
@@ -110,7 +112,8 @@ void readOutput(const Reader& r, const toml::table& t, SceneOutput& out) {
   }
   if (auto* n = t.get("grid")) {
     std::string g = r.string(*n, "output.grid");
-    if (g != "texel-center" && g != "node") r.fail(*n, "output.grid must be \"texel-center\" or \"node\", got \"" + g + "\"");
+    if (g != "texel-center" && g != "node")
+      r.fail(*n, "output.grid must be \"texel-center\" or \"node\", got \"" + g + "\"");
     out.nodeGrid = g == "node";
   }
   if (auto* n = t.get("size")) {
@@ -146,8 +149,9 @@ void readLighting(const Reader& r, const toml::table& t, SceneLighting& l) {
 }
 
 SceneMaterial readMaterial(const Reader& r, const toml::table& t, int index) {
-  static const std::vector<std::string> keys = {"name", "ndf", "gaf", "fresnel", "f0", "eta", "k", "f82", "diffuse",
-                                                "sigma", "rho", "roughness", "coupling", "brdf3d", "transmission"};
+  static const std::vector<std::string> keys = {"name", "ndf",       "gaf",      "fresnel", "f0",
+                                                "eta",  "k",         "f82",      "diffuse", "sigma",
+                                                "rho",  "roughness", "coupling", "brdf3d",  "transmission"};
   r.keysIn(t, "[[material]]", keys);
   SceneMaterial m;
   m.pos = r.pos(t);
@@ -207,9 +211,11 @@ SceneMaterial readMaterial(const Reader& r, const toml::table& t, int index) {
   }
   if (auto* n = t.get("transmission")) {
     m.transmission = r.boolean(*n, "material.transmission");
-    if (m.transmission && ((m.ndf != NDF_GGX && m.ndf != NDF_BECKMANN) || (m.gaf != GAF_SMITH && m.gaf != GAF_SMITH_CORRELATED)))
-      r.fail(*n, "material '" + m.name + "': transmission = true needs ndf ggx or beckmann with gaf smith or "
-                 "smith-correlated (the rough-dielectric tables' models)");
+    if (m.transmission &&
+        ((m.ndf != NDF_GGX && m.ndf != NDF_BECKMANN) || (m.gaf != GAF_SMITH && m.gaf != GAF_SMITH_CORRELATED)))
+      r.fail(*n, "material '" + m.name +
+                     "': transmission = true needs ndf ggx or beckmann with gaf smith or "
+                     "smith-correlated (the rough-dielectric tables' models)");
   }
   if (auto* n = t.get("brdf3d")) {
     m.brdf3d = r.boolean(*n, "material.brdf3d");
@@ -241,7 +247,8 @@ void screenNonAscii(const std::string& text, const std::string& file) {
     }
     if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7F)
       throw Error(kExitDataErr, file + ":" + std::to_string(line) + ":" + std::to_string(col) +
-                                    ": TOML syntax: control character " + std::to_string(c) + " (TOML allows none but tab)");
+                                    ": TOML syntax: control character " + std::to_string(c) +
+                                    " (TOML allows none but tab)");
     if (c == '\r' && (i + 1 >= text.size() || text[i + 1] != '\n'))
       throw Error(kExitDataErr, file + ":" + std::to_string(line) + ":" + std::to_string(col) +
                                     ": TOML syntax: a carriage return not followed by a line feed");
@@ -261,25 +268,47 @@ void screenNonAscii(const std::string& text, const std::string& file) {
     }
     switch (st) {
       case Normal:
-        if (c == '#') st = Comment;
-        else if (at("\"\"\"")) { st = MlBasic; i += 2; col += 2; }
-        else if (at("'''")) { st = MlLiteral; i += 2; col += 2; }
-        else if (c == '"') st = Basic;
-        else if (c == '\'') st = Literal;
+        if (c == '#')
+          st = Comment;
+        else if (at("\"\"\"")) {
+          st = MlBasic;
+          i += 2;
+          col += 2;
+        } else if (at("'''")) {
+          st = MlLiteral;
+          i += 2;
+          col += 2;
+        } else if (c == '"')
+          st = Basic;
+        else if (c == '\'')
+          st = Literal;
         break;
       case Basic:
-        if (c == '\\') { ++i; ++col; }
-        else if (c == '"') st = Normal;
+        if (c == '\\') {
+          ++i;
+          ++col;
+        } else if (c == '"')
+          st = Normal;
         break;
       case MlBasic:
-        if (c == '\\') { ++i; ++col; }
-        else if (at("\"\"\"")) { st = Normal; i += 2; col += 2; }
+        if (c == '\\') {
+          ++i;
+          ++col;
+        } else if (at("\"\"\"")) {
+          st = Normal;
+          i += 2;
+          col += 2;
+        }
         break;
       case Literal:
         if (c == '\'') st = Normal;
         break;
       case MlLiteral:
-        if (at("'''")) { st = Normal; i += 2; col += 2; }
+        if (at("'''")) {
+          st = Normal;
+          i += 2;
+          col += 2;
+        }
         break;
       default:
         break;
@@ -351,9 +380,10 @@ Scene parseManifest(const std::string& text, const std::string& name) {
   try {
     root = toml::parse(text, name);
   } catch (const toml::parse_error& e) {
-    throw Error(kExitDataErr, SourcePos{name, static_cast<int>(e.source().begin.line),
-                                        static_cast<int>(e.source().begin.column)}.str() +
-                                  ": TOML syntax: " + std::string(e.description()));
+    throw Error(
+        kExitDataErr,
+        SourcePos{name, static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)}.str() +
+            ": TOML syntax: " + std::string(e.description()));
   }
   Scene s;
   r.keysIn(root, "the manifest", {"scene", "output", "lighting", "material"});
@@ -372,8 +402,8 @@ Scene parseManifest(const std::string& text, const std::string& name) {
       SceneMaterial m = readMaterial(r, *a[i].as_table(), static_cast<int>(i));
       auto [it, fresh] = seen.emplace(m.name, m.pos);
       if (!fresh)
-        throw Error(kExitDataErr, m.pos.str() + ": duplicate material name '" + m.name + "' (first at " +
-                                      it->second.str() + ")");
+        throw Error(kExitDataErr,
+                    m.pos.str() + ": duplicate material name '" + m.name + "' (first at " + it->second.str() + ")");
       s.materials.push_back(m);
     }
   }

@@ -35,8 +35,8 @@ void addTables(ScenePlan& sp, const BakeRequest& req, const SceneMaterial& m, co
   try {
     p = makePlan(req);
   } catch (const Error& e) {
-    throw Error(kExitDataErr, m.pos.str() + ": material '" + m.name + "': " + why + " needs a table that cannot be built: " +
-                                  e.what());
+    throw Error(kExitDataErr, m.pos.str() + ": material '" + m.name + "': " + why +
+                                  " needs a table that cannot be built: " + e.what());
   }
   std::string reason = m.name + ": " + why;
   for (Job j : p.jobs) {
@@ -89,7 +89,8 @@ SceneSizes checkSizes(const std::vector<SceneSize>& entries) {
     if (!k || !k->inScenes) {
       const std::string near = closestName(e.kind, valid);
       throw Error(kExitDataErr, e.keyPos.str() + ": unknown key '" + e.kind + "' in [output.size]" +
-                                    (near.empty() ? "" : " (did you mean '" + near + "'?)") + "; valid: " + joinNames(valid));
+                                    (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+                                    "; valid: " + joinNames(valid));
     }
     const std::string what = "output.size." + e.kind;
     auto integer = [&](const std::optional<int64_t>& v, const SourcePos& at, int lo, int hi) {
@@ -121,7 +122,8 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
   sp.scene = scene.name;
   std::string dir = outDir;
   if (dir.empty())
-    dir = scene.output.dir.front() == '/' || scene.baseDir == "." ? scene.output.dir : scene.baseDir + "/" + scene.output.dir;
+    dir = scene.output.dir.front() == '/' || scene.baseDir == "." ? scene.output.dir
+                                                                  : scene.baseDir + "/" + scene.output.dir;
   sp.plan.outDir = dir;
   const SceneLighting& L = scene.lighting;
   auto request = [&](const SceneMaterial& m, TableKind kind) {
@@ -155,16 +157,19 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
           validateFresnel(r.fresnel);
           r.fresnelGiven = true;
           if (m.diffuse == DIFFUSE_BURLEY) r.diffuse = DIFFUSE_BURLEY;
-          addTables(sp, r, m, std::string("image-based lighting (split-sum DFG") +
-                                  (m.diffuse == DIFFUSE_BURLEY ? ", burley's diffuse albedo in B" : "") + ")");
+          addTables(sp, r, m,
+                    std::string("image-based lighting (split-sum DFG") +
+                        (m.diffuse == DIFFUSE_BURLEY ? ", burley's diffuse albedo in B" : "") + ")");
         }
       } else {
         for (TableKind k : kindsServing(kUseIblFresnel)) {
           BakeRequest r = request(m, k);
           r.fresnel = m.fresnel;
           r.fresnelGiven = true;
-          addTables(sp, r, m, "image-based lighting (" + fresnelNames()[fm] + " has no Schlick split: its DFG is the "
-                              "Fresnel-weighted albedo)");
+          addTables(sp, r, m,
+                    "image-based lighting (" + fresnelNames()[fm] +
+                        " has no Schlick split: its DFG is the "
+                        "Fresnel-weighted albedo)");
         }
       }
     }
@@ -200,7 +205,8 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
     size_t reasonsAfter = 0;
     for (const auto& t : sp.tables) reasonsAfter += t.reasons.size();
     if (sp.tables.size() == before && reasonsAfter > reasonsBefore)
-      sp.notes.push_back("material '" + m.name + "' adds no table: it shares every table it needs with earlier materials "
+      sp.notes.push_back("material '" + m.name +
+                         "' adds no table: it shares every table it needs with earlier materials "
                          "(the tables do not depend on the parameters that differ)");
     else if (reasonsAfter == reasonsBefore)
       sp.notes.push_back("material '" + m.name + "' needs no table under this lighting");
@@ -208,8 +214,9 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
       // rough glass: E_R and E_T over (mu, r, eta), and their averages (Kulla-Conty for dielectrics)
       anyGlass = true;
       for (TableKind k : kindsServing(kUseTransmission))
-        addTables(sp, request(m, k), m, "transmission (rough glass: reflected and transmitted albedo" +
-                                            std::string(kindInfo(k).average ? ", their averages)" : ")"));
+        addTables(sp, request(m, k), m,
+                  "transmission (rough glass: reflected and transmitted albedo" +
+                      std::string(kindInfo(k).average ? ", their averages)" : ")"));
     }
     if (m.sheen) {
       // KHR_materials_sheen: the Charlie lobe's albedo (its albedo-scaling of the layers below, with
@@ -239,7 +246,8 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
                          (L.analytic ? ": every NDF lit by analytic lights has a closed-form normalisation (only the "
                                        "gaussian needs a k_p table)"
                                      : ": analytic lights are off (lighting.analytic = false)"));
-  if (!anyVolume) sp.leftOut.push_back(serving(kUseWholeMaterial, "and") + ": no material asks for a 3D table (brdf3d = true)");
+  if (!anyVolume)
+    sp.leftOut.push_back(serving(kUseWholeMaterial, "and") + ": no material asks for a 3D table (brdf3d = true)");
   if (!anyGlass) sp.leftOut.push_back(serving(kUseTransmission, ",") + ": no material transmits (transmission = true)");
   sp.byHash.clear();
   sp.byPath.clear();
@@ -249,7 +257,8 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
 
 ScenePlan shardOf(const ScenePlan& whole, int part, int parts) {
   if (parts < 1 || part < 1 || part > parts)
-    throw Error(kExitUsage, "--shard must be I/N with 1 <= I <= N, got " + std::to_string(part) + "/" + std::to_string(parts));
+    throw Error(kExitUsage,
+                "--shard must be I/N with 1 <= I <= N, got " + std::to_string(part) + "/" + std::to_string(parts));
   std::vector<size_t> order(whole.tables.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {

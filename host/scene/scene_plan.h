@@ -14,15 +14,15 @@
 namespace brdfbake {
 
 struct PlannedTable {
-  size_t index = 0;         // plan.jobs[index]
+  size_t index = 0;  // plan.jobs[index]
   std::string path;
-  std::string table;     // table kind name
-  std::string models;    // "ggx + smith-correlated, schlick"
-  std::string size;      // "128x128", "32x32x32"
+  std::string table;                 // table kind name
+  std::string models;                // "ggx + smith-correlated, schlick"
+  std::string size;                  // "128x128", "32x32x32"
   std::vector<std::string> reasons;  // "metal: image-based lighting (split-sum DFG)"
   double texels = 0;
-  double cost = 0;       // estimated seconds on PoCL with 2 cores (a guide, for shards)
-  std::string hash;      // content hash: kind, models, parameters, size, grid, precision, baker, kernels
+  double cost = 0;   // estimated seconds on PoCL with 2 cores (a guide, for shards)
+  std::string hash;  // content hash: kind, models, parameters, size, grid, precision, baker, kernels
 };
 
 struct ScenePlan {

@@ -118,7 +118,8 @@ int runScenePlan(const SceneOptions& o) {
   if (stale > static_cast<int>(kMaxFilesPerSet)) {
     const int parts = (stale + kMaxFilesPerSet - 1) / kMaxFilesPerSet * o.shards;
     std::cout << "note: " << stale << " tables to bake write more files than one set holds (" << kMaxFilesPerSet
-              << "): bake them in " << parts << " parts, --shard 1/" << parts << " ... --shard " << parts << "/" << parts << "\n";
+              << "): bake them in " << parts << " parts, --shard 1/" << parts << " ... --shard " << parts << "/"
+              << parts << "\n";
   }
   size_t wt = 5, wf = 4;
   for (const auto& t : p.tables) {
@@ -126,13 +127,13 @@ int runScenePlan(const SceneOptions& o) {
     wf = std::max(wf, t.path.size());
   }
   char line[1024];
-  std::snprintf(line, sizeof line, "  %-*s  %-12s  %10s  %7s  %-10s  %s\n", int(wt), "table", "size", "texels", "est. s",
-                "status", "file");
+  std::snprintf(line, sizeof line, "  %-*s  %-12s  %10s  %7s  %-10s  %s\n", int(wt), "table", "size", "texels",
+                "est. s", "status", "file");
   std::cout << line;
   for (size_t i = 0; i < p.tables.size(); ++i) {
     const auto& t = p.tables[i];
-    std::snprintf(line, sizeof line, "  %-*s  %-12s  %10.0f  %7s  %-10s  %s\n", int(wt), t.table.c_str(), t.size.c_str(),
-                  t.texels, fmtSeconds(t.cost).c_str(), statusName(st[i]), t.path.c_str());
+    std::snprintf(line, sizeof line, "  %-*s  %-12s  %10.0f  %7s  %-10s  %s\n", int(wt), t.table.c_str(),
+                  t.size.c_str(), t.texels, fmtSeconds(t.cost).c_str(), statusName(st[i]), t.path.c_str());
     std::cout << line << "    " << t.models << "\n";
     for (const auto& r : t.reasons) std::cout << "    for " << r << "\n";
   }
@@ -178,11 +179,11 @@ int runSceneBake(const SceneOptions& o) {
   }
   {
     const size_t parts = (todo.jobs.size() + kMaxFilesPerSet - 1) / kMaxFilesPerSet * o.shards;
-    todo.shardHint = "bake the scene in " + std::to_string(parts) + " parts: --shard 1/" + std::to_string(parts) + " ... --shard " +
-                     std::to_string(parts) + "/" + std::to_string(parts);
+    todo.shardHint = "bake the scene in " + std::to_string(parts) + " parts: --shard 1/" + std::to_string(parts) +
+                     " ... --shard " + std::to_string(parts) + "/" + std::to_string(parts);
   }
-  std::string label = "scene " + p.scene + (o.shards > 1 ? " (shard " + std::to_string(o.shard) + "/" +
-                                                               std::to_string(o.shards) + ")" : "");
+  std::string label = "scene " + p.scene +
+                      (o.shards > 1 ? " (shard " + std::to_string(o.shard) + "/" + std::to_string(o.shards) + ")" : "");
   if (todo.jobs.empty()) {
     std::cout << label << ": all " << upToDate << " table(s) up to date in " << p.plan.outDir << "/; nothing written\n";
   } else {

@@ -8,15 +8,15 @@
 namespace brdfbake {
 
 struct SceneOptions {
-  std::string file;        // .toml manifest or .gltf/.glb
-  std::string outDir;      // -o: overrides the scene's output.dir
+  std::string file;    // .toml manifest or .gltf/.glb
+  std::string outDir;  // -o: overrides the scene's output.dir
   int shard = 1, shards = 1;
-  bool force = false;      // rebake every table
-  bool prune = false;      // remove tables of this scene that it no longer needs
-  bool list = false;       // plan: only the output paths, absolute, one per line
-  std::string stamp;       // bake: written (atomically) after a successful bake, listing the outputs
+  bool force = false;  // rebake every table
+  bool prune = false;  // remove tables of this scene that it no longer needs
+  bool list = false;   // plan: only the output paths, absolute, one per line
+  std::string stamp;   // bake: written (atomically) after a successful bake, listing the outputs
   std::string device, cacheDir;
-  bool noWait = false;     // bake: exit 75 instead of waiting when another bake writes into the directory
+  bool noWait = false;  // bake: exit 75 instead of waiting when another bake writes into the directory
   std::shared_ptr<BakeObserver> observer;  // bake: stages and progress (brdfbake/observer.h), or none
 };
 

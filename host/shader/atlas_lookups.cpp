@@ -19,8 +19,8 @@ AtlasShape atlasShape(const std::string& path, const TableImage& h) {
   AtlasShape a;
   if (std::sscanf(attr(h, "brdf.size").c_str(), "%dx%dx%d", &a.nx, &a.ny, &a.nz) != 3 ||
       std::sscanf(attr(h, "brdf.atlas").c_str(), "%dx%d", &a.cols, &a.rows) != 2)
-    throw Error(kExitDataErr, path + ": brdf.size / brdf.atlas missing: not a " + attr(h, "brdf.table") +
-                                  " table brdfbake wrote");
+    throw Error(kExitDataErr,
+                path + ": brdf.size / brdf.atlas missing: not a " + attr(h, "brdf.table") + " table brdfbake wrote");
   return a;
 }
 
@@ -39,10 +39,12 @@ std::string atlasLookups(const Lang& L, const std::string& P, const std::string&
   s += L.f4() + " " + P + "_slice(" + L.texParam() + ", " + L.f2() + " p, float z) {\n";
   s += "  " + L.f2() + " tile = " + L.f2() + "(z - " + P + "_ATLAS.x * floor(z / " + P + "_ATLAS.x), floor(z / " + P +
        "_ATLAS.x));\n";
-  s += "  " + L.f2() + " q = clamp(p, " + L.f2() + "(0.0, 0.0), " + P + "_SIZE.xy - 1.0) + tile * " + P + "_SIZE.xy + 0.5;\n";
+  s += "  " + L.f2() + " q = clamp(p, " + L.f2() + "(0.0, 0.0), " + P + "_SIZE.xy - 1.0) + tile * " + P +
+       "_SIZE.xy + 0.5;\n";
   s += "  return " + L.sample("q / (" + P + "_ATLAS * " + P + "_SIZE.xy)") + ";\n}\n";
   s += L.f4() + " " + P + "_lookup(" + L.texParam() + ", " + args + ") {\n";
-  s += "  " + L.f3() + " p = clamp(" + P + "_index(" + call + "), " + L.f3() + "(0.0, 0.0, 0.0), " + P + "_SIZE - 1.0);\n";
+  s += "  " + L.f3() + " p = clamp(" + P + "_index(" + call + "), " + L.f3() + "(0.0, 0.0, 0.0), " + P +
+       "_SIZE - 1.0);\n";
   s += "  float z0 = floor(p.z);\n  float z1 = min(z0 + 1.0, " + P + "_SIZE.z - 1.0);\n";
   s += "  return " + L.mix() + "(" + P + "_slice(" + L.texArgs() + ", p.xy, z0), " + P + "_slice(" + L.texArgs() +
        ", p.xy, z1), p.z - z0);\n}\n";
@@ -50,16 +52,19 @@ std::string atlasLookups(const Lang& L, const std::string& P, const std::string&
   s += "  " + L.i2() + " tile = " + L.i2() + "(int(z) % int(" + P + "_ATLAS.x), int(z) / int(" + P + "_ATLAS.x));\n";
   s += "  return " + L.fetch("xy + tile * " + L.i2() + "(" + P + "_SIZE.xy)") + ";\n}\n";
   s += L.f4() + " " + P + "_lookupExact(" + L.texParam() + ", " + args + ") {\n";
-  s += "  " + L.f3() + " p = clamp(" + P + "_index(" + call + "), " + L.f3() + "(0.0, 0.0, 0.0), " + P + "_SIZE - 1.0);\n";
+  s += "  " + L.f3() + " p = clamp(" + P + "_index(" + call + "), " + L.f3() + "(0.0, 0.0, 0.0), " + P +
+       "_SIZE - 1.0);\n";
   s += "  " + L.f3() + " i0 = floor(p);\n  " + L.f3() + " f = p - i0;\n";
-  s += "  " + L.i2() + " a0 = " + L.i2() + "(i0.xy);\n  " + L.i2() + " a1 = min(a0 + 1, " + L.i2() + "(" + P + "_SIZE.xy) - 1);\n";
+  s += "  " + L.i2() + " a0 = " + L.i2() + "(i0.xy);\n  " + L.i2() + " a1 = min(a0 + 1, " + L.i2() + "(" + P +
+       "_SIZE.xy) - 1);\n";
   s += "  float z1 = min(i0.z + 1.0, " + P + "_SIZE.z - 1.0);\n";
-  s += "  " + L.f4() + " r0 = " + L.mix() + "(" + L.mix() + "(" + P + "_texel(" + L.texArgs() + ", a0, i0.z), " + P + "_texel(" +
-       L.texArgs() + ", " + L.i2() + "(a1.x, a0.y), i0.z), f.x), " + L.mix() + "(" + P + "_texel(" + L.texArgs() + ", " + L.i2() +
-       "(a0.x, a1.y), i0.z), " + P + "_texel(" + L.texArgs() + ", a1, i0.z), f.x), f.y);\n";
-  s += "  " + L.f4() + " r1 = " + L.mix() + "(" + L.mix() + "(" + P + "_texel(" + L.texArgs() + ", a0, z1), " + P + "_texel(" +
-       L.texArgs() + ", " + L.i2() + "(a1.x, a0.y), z1), f.x), " + L.mix() + "(" + P + "_texel(" + L.texArgs() + ", " + L.i2() +
-       "(a0.x, a1.y), z1), " + P + "_texel(" + L.texArgs() + ", a1, z1), f.x), f.y);\n";
+  s += "  " + L.f4() + " r0 = " + L.mix() + "(" + L.mix() + "(" + P + "_texel(" + L.texArgs() + ", a0, i0.z), " + P +
+       "_texel(" + L.texArgs() + ", " + L.i2() + "(a1.x, a0.y), i0.z), f.x), " + L.mix() + "(" + P + "_texel(" +
+       L.texArgs() + ", " + L.i2() + "(a0.x, a1.y), i0.z), " + P + "_texel(" + L.texArgs() +
+       ", a1, i0.z), f.x), f.y);\n";
+  s += "  " + L.f4() + " r1 = " + L.mix() + "(" + L.mix() + "(" + P + "_texel(" + L.texArgs() + ", a0, z1), " + P +
+       "_texel(" + L.texArgs() + ", " + L.i2() + "(a1.x, a0.y), z1), f.x), " + L.mix() + "(" + P + "_texel(" +
+       L.texArgs() + ", " + L.i2() + "(a0.x, a1.y), z1), " + P + "_texel(" + L.texArgs() + ", a1, z1), f.x), f.y);\n";
   s += "  return " + L.mix() + "(r0, r1, f.z);\n}\n";
   return s;
 }
@@ -80,21 +85,23 @@ std::string lookupsDielectric(const Lang& L, const std::string& P, const std::st
   const auto mu = range("brdf.mu.range"), r = range("brdf.r.range"), sr = range("brdf.s.range"),
              eta = range("brdf.eta.range");
   std::string s;
-  s += L.cst() + " " + L.f3() + " " + P + "_SIZE = " + L.f3() + "(" + lit(a.nx) + ", " + lit(a.ny) + ", " + lit(a.nz) + ");\n";
+  s += L.cst() + " " + L.f3() + " " + P + "_SIZE = " + L.f3() + "(" + lit(a.nx) + ", " + lit(a.ny) + ", " + lit(a.nz) +
+       ");\n";
   s += L.cst() + " " + L.f2() + " " + P + "_ATLAS = " + L.f2() + "(" + lit(a.cols) + ", " + lit(a.rows) + ");\n";
   s += "// texel index of (mu, r, eta): the " + attr(h, "brdf.grid") + " grid, eta by s = (eta - 1)/(eta + 1) in [" +
-       lit(sr[0]) + ", " + lit(sr[1]) + "] (eta " + fmtG(eta[0]) + " to " + fmtG(eta[1]) + "); outside it the edge slice\n";
+       lit(sr[0]) + ", " + lit(sr[1]) + "] (eta " + fmtG(eta[0]) + " to " + fmtG(eta[1]) +
+       "); outside it the edge slice\n";
   s += L.f3() + " " + P + "_index(float mu, float r, float eta) {\n";
   s += "  float s = (eta - 1.0) / (eta + 1.0);\n";
-  s += "  " + L.f3() + " t = " + L.f3() + "((mu - " + lit(mu[0]) + ") / " + lit(mu[1] - mu[0]) + ", (r - " + lit(r[0]) + ") / " +
-       lit(r[1] - r[0]) + ", (s - " + lit(sr[0]) + ") / " + lit(sr[1] - sr[0]) + ");\n";
+  s += "  " + L.f3() + " t = " + L.f3() + "((mu - " + lit(mu[0]) + ") / " + lit(mu[1] - mu[0]) + ", (r - " + lit(r[0]) +
+       ") / " + lit(r[1] - r[0]) + ", (s - " + lit(sr[0]) + ") / " + lit(sr[1] - sr[0]) + ");\n";
   s += gridIndex(P, attr(h, "brdf.grid"));
   s += "}\n";
   s += atlasLookups(L, P, "float mu, float r, float eta", "mu, r, eta");
   s += "// E_R (reflected albedo), E_T (transmitted: the fraction of energy that crosses), E_R + E_T\n";
   for (std::string variant : {"", "Exact"})
-    s += L.f3() + " " + P + "_albedos" + variant + "(" + L.texParam() + ", float mu, float r, float eta) {\n  return " + P +
-         "_lookup" + variant + "(" + L.texArgs() + ", mu, r, eta).rgb;\n}\n";
+    s += L.f3() + " " + P + "_albedos" + variant + "(" + L.texParam() + ", float mu, float r, float eta) {\n  return " +
+         P + "_lookup" + variant + "(" + L.texArgs() + ", mu, r, eta).rgb;\n}\n";
   return s;
 }
 
@@ -106,9 +113,11 @@ std::string lookups3d(const Lang& L, const std::string& P, const std::string& pa
   const bool sq = attr(h, "brdf.theta_h.index").rfind("sqrt", 0) == 0;
   const std::string grid = attr(h, "brdf.grid");
   std::string s;
-  s += L.cst() + " " + L.f3() + " " + P + "_SIZE = " + L.f3() + "(" + lit(a.nx) + ", " + lit(a.ny) + ", " + lit(a.nz) + ");\n";
+  s += L.cst() + " " + L.f3() + " " + P + "_SIZE = " + L.f3() + "(" + lit(a.nx) + ", " + lit(a.ny) + ", " + lit(a.nz) +
+       ");\n";
   s += L.cst() + " " + L.f2() + " " + P + "_ATLAS = " + L.f2() + "(" + lit(a.cols) + ", " + lit(a.rows) + ");\n";
-  s += "// texel index of each angle (radians): the " + grid + " grid" + (sq ? ", theta_h by MERL's sqrt index" : "") + "\n";
+  s += "// texel index of each angle (radians): the " + grid + " grid" + (sq ? ", theta_h by MERL's sqrt index" : "") +
+       "\n";
   s += L.f3() + " " + P + "_index(float a, float b, float c) {\n";
   s += "  " + L.f3() + " t = " + L.f3() + "(a / 1.5707963, b / 1.5707963, c / 3.14159265);\n";
   if (sq) s += "  t.x = sqrt(max(t.x, 0.0));\n";
@@ -130,7 +139,8 @@ std::string lookups3d(const Lang& L, const std::string& P, const std::string& pa
   } else {
     s += "  " + L.f3() + " h = normalize(l + v);\n";
     s += "  " + L.f3() + " b = cross(n, h);\n";
-    s += "  if (dot(b, b) < 1e-12) b = cross(n, abs(n.x) < 0.9 ? " + L.f3() + "(1.0, 0.0, 0.0) : " + L.f3() + "(0.0, 1.0, 0.0));\n";
+    s += "  if (dot(b, b) < 1e-12) b = cross(n, abs(n.x) < 0.9 ? " + L.f3() + "(1.0, 0.0, 0.0) : " + L.f3() +
+         "(0.0, 1.0, 0.0));\n";
     s += "  b = normalize(b);\n  " + L.f3() + " t = cross(b, h);\n";
     s += "  float phi = atan2(dot(l, b), dot(l, t));\n";
     if (!L.hlsl) s.replace(s.rfind("atan2("), 6, "atan(");

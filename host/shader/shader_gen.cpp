@@ -82,7 +82,8 @@ std::string mapped(const Lang& L, const TableImage& h, const std::string& v) {
 }
 
 // The coordinate maps and both lookup paths of a 2D (or 1D: height 1) table.
-std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, const std::vector<Axis>& ax, bool node) {
+std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, const std::vector<Axis>& ax,
+                      bool node) {
   const int w = h.width, hgt = h.height;
   const bool oneD = hgt == 1;
   // the fraction of axis a's range `v` lies at; on a sqrt(mu) axis the fraction of sqrt(mu)'s
@@ -98,19 +99,22 @@ std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, 
   s += "// fraction of each axis' range, clamped: quantities outside the table read its edge\n";
   for (size_t a = 0; a < ax.size() && a < 2; ++a)
     if (ax[a].sqrtIndex)
-      s += "// " + std::string(a ? "y" : "x") + " is spaced in sqrt(mu) (brdf.mu.index sqrt): texel i holds mu = u_i^2\n";
+      s += "// " + std::string(a ? "y" : "x") +
+           " is spaced in sqrt(mu) (brdf.mu.index sqrt): texel i holds mu = u_i^2\n";
   const std::string flip = attr(h, "brdf.layout.flip", "none");
   const bool fx = flip.find('x') != std::string::npos, fy = flip.find('y') != std::string::npos;
-  s += L.f2() + " " + P + "_t(" + args + ") {\n  " + L.f2() + " t = clamp(" + L.f2() + "(" + frac(ax[0], "x") + ", " + yExpr +
-       "), 0.0, 1.0);\n";
+  s += L.f2() + " " + P + "_t(" + args + ") {\n  " + L.f2() + " t = clamp(" + L.f2() + "(" + frac(ax[0], "x") + ", " +
+       yExpr + "), 0.0, 1.0);\n";
   if (fx) s += "  t.x = 1.0 - t.x;  // texel 0 holds the high end of x (brdf.layout.flip)\n";
   if (fy) s += "  t.y = 1.0 - t.y;  // texel 0 holds the high end of y (brdf.layout.flip)\n";
   s += "  return t;\n}\n";
-  s += "// texture coordinate for the hardware filter (" + std::string(node ? "node grid: texel i holds i/(n-1)" :
-                                                                        "texel-center grid: texel i holds (i+0.5)/n") + ")\n";
+  s += "// texture coordinate for the hardware filter (" +
+       std::string(node ? "node grid: texel i holds i/(n-1)" : "texel-center grid: texel i holds (i+0.5)/n") + ")\n";
   s += L.f2() + " " + P + "_uv(" + args + ") {\n";
-  if (node) s += "  return (0.5 + " + P + "_t(" + (oneD ? "x" : "x, y") + ") * (" + P + "_SIZE - 1.0)) / " + P + "_SIZE;\n";
-  else s += "  return " + P + "_t(" + (oneD ? "x" : "x, y") + ");\n";
+  if (node)
+    s += "  return (0.5 + " + P + "_t(" + (oneD ? "x" : "x, y") + ") * (" + P + "_SIZE - 1.0)) / " + P + "_SIZE;\n";
+  else
+    s += "  return " + P + "_t(" + (oneD ? "x" : "x, y") + ");\n";
   s += "}\n";
   s += L.f4() + " " + P + "_lookup(" + L.texParam() + ", " + args + ") {\n  return " +
        mapped(L, h, L.sample(P + "_uv(" + (oneD ? "x" : "x, y") + ")")) + ";\n}\n";
@@ -120,7 +124,8 @@ std::string lookups2d(const Lang& L, const std::string& P, const TableImage& h, 
        (node ? "(" + P + "_SIZE - 1.0)" : P + "_SIZE - 0.5") + ";\n";
   s += "  p = clamp(p, " + L.f2() + "(0.0, 0.0), " + P + "_SIZE - 1.0);\n";
   s += "  " + L.f2() + " i0 = floor(p);\n  " + L.f2() + " f = p - i0;\n";
-  s += "  " + L.i2() + " a = " + L.i2() + "(i0);\n  " + L.i2() + " b = min(a + 1, " + L.i2() + "(" + P + "_SIZE) - 1);\n";
+  s += "  " + L.i2() + " a = " + L.i2() + "(i0);\n  " + L.i2() + " b = min(a + 1, " + L.i2() + "(" + P +
+       "_SIZE) - 1);\n";
   s += "  " + L.f4() + " v00 = " + L.fetch("a") + ";\n";
   s += "  " + L.f4() + " v10 = " + L.fetch(L.i2() + "(b.x, a.y)") + ";\n";
   s += "  " + L.f4() + " v01 = " + L.fetch(L.i2() + "(a.x, b.y)") + ";\n";
@@ -151,18 +156,20 @@ std::string semantics2d(const Lang& L, const std::string& P, const TableImage& h
     return std::string();
   };
   const std::string sA = idx("A"), sB = idx("B"), sAB = idx("A+B");
-  const std::string exA = !sA.empty() ? sA : "(" + sAB + " - " + sB + ")", exB = !sB.empty() ? sB : "(" + sAB + " - " + sA + ")";
+  const std::string exA = !sA.empty() ? sA : "(" + sAB + " - " + sB + ")",
+                    exB = !sB.empty() ? sB : "(" + sAB + " - " + sA + ")";
   const bool plainLayout = stored == "A,B,A+B";
   std::string s;
   for (std::string variant : {"", "Exact"}) {
     std::string get = P + "_lookup" + variant + "(" + L.texArgs() + ", " + call + ")";
     auto fn = [&](const std::string& type, const std::string& name, const std::string& extra, const std::string& body) {
-      s += type + " " + P + "_" + name + variant + "(" + L.texParam() + (extra.empty() ? "" : ", " + extra) + ", " + args +
-           ") {\n" + body + "}\n";
+      s += type + " " + P + "_" + name + variant + "(" + L.texParam() + (extra.empty() ? "" : ", " + extra) + ", " +
+           args + ") {\n" + body + "}\n";
     };
     if (kind.shader == ShaderLookup::SplitSum) {
       fn(L.f2(), "AB", "", "  " + L.f4() + " v = " + get + ";\n  return " + L.f2() + "(" + exA + ", " + exB + ");\n");
-      fn(L.f3(), "Schlick", L.f3() + " f0", "  " + L.f4() + " v = " + get + ";\n  return f0 * " + exA + " + " + exB + ";\n");
+      fn(L.f3(), "Schlick", L.f3() + " f0",
+         "  " + L.f4() + " v = " + get + ";\n  return f0 * " + exA + " + " + exB + ";\n");
       if (!plainLayout) {
         // a layout's channels hold A, B and A + B only
       } else if (attr(h, "brdf.fresnel") == "f82-tint")
@@ -172,8 +179,10 @@ std::string semantics2d(const Lang& L, const std::string& P, const TableImage& h
         fn("float", "DiffuseAlbedo", "", "  return " + get + ".b;\n");
     } else if (kind.shader == ShaderLookup::Value) {
       const std::string& name = kind.shaderValue;
-      if (rgb) fn(L.f3(), name, "", "  return " + get + ".rgb;\n");
-      else fn("float", name, "", "  return " + get + ".r;\n");
+      if (rgb)
+        fn(L.f3(), name, "", "  return " + get + ".rgb;\n");
+      else
+        fn("float", name, "", "  return " + get + ".r;\n");
     } else if (kind.shader == ShaderLookup::EtaAverages) {
       // (r, s) stored; the eta a material has, mapped as the table's eta axis is
       s += "// E_R,avg, E_T,avg and their sum at (r, eta), eta by s = (eta - 1)/(eta + 1)\n";
@@ -204,22 +213,24 @@ std::string shaderForTable(const std::string& path, const TableImage& h, ShaderL
   std::string s = "// ---- " + path + ": " + table;
   if (!attr(h, "brdf.ndf").empty()) s += ", " + attr(h, "brdf.ndf") + " + " + attr(h, "brdf.gaf");
   s += "\n// axes " + attr(h, "brdf.axes") + ", " + attr(h, "brdf.grid") + " grid, " +
-       (attr(h, "brdf.mu.index").rfind("sqrt", 0) == 0 ? "mu index sqrt, " : "") + "channels " + attr(h, "brdf.channels") + "\n";
+       (attr(h, "brdf.mu.index").rfind("sqrt", 0) == 0 ? "mu index sqrt, " : "") + "channels " +
+       attr(h, "brdf.channels") + "\n";
   auto err = h.floats.find("brdf.error");
   if (err != h.floats.end())
     s += "// error budget (relative to max(1, |value|)): table " + fmtG(err->second) +
          " (integration, float arithmetic, storage); add the interpolation error of the resolution" +
-         (h.floats.count("brdf.interp-error") ? " (brdf.interp-error " + fmtG(h.floats.at("brdf.interp-error")) + ")" : "") +
+         (h.floats.count("brdf.interp-error") ? " (brdf.interp-error " + fmtG(h.floats.at("brdf.interp-error")) + ")"
+                                              : "") +
          " and, on the hardware path, the filter's (8-bit weights: up to ~1/512 of a texel step)\n";
   if (kind->shader == ShaderLookup::Volume) return s + shadergen::lookups3d(L, P, path, h);
   if (kind->shader == ShaderLookup::EtaVolume) return s + shadergen::lookupsDielectric(L, P, path, h);
   if (kind->shader == ShaderLookup::OwnShader)
-    throw Error(kExitDataErr, path + ": the Ashikhmin-Shirley textures come with their own shader "
-                                     "(shaders/ashikhmin_shirley.glsl)");
+    throw Error(kExitDataErr, path +
+                                  ": the Ashikhmin-Shirley textures come with their own shader "
+                                  "(shaders/ashikhmin_shirley.glsl)");
   std::vector<Axis> ax = axesOf(path, h);
   bool node = attr(h, "brdf.grid") == "node";
-  if (!node)
-    s += "// texel-center grid: within half a texel of an edge both paths return the edge texels (clamp)\n";
+  if (!node) s += "// texel-center grid: within half a texel of an edge both paths return the edge texels (clamp)\n";
   return s + lookups2d(L, P, h, ax, node) + semantics2d(L, P, h, *kind, h.height == 1);
 }
 

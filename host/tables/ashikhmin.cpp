@@ -66,7 +66,8 @@ class Ashikhmin final : public TableFamily {
   // double), relative to max(1, |v|). Points in [1/16, 1]^2, where every grid of the ladder has
   // texels (Tex1's upper-node grid starts at 1/N).
   Ladder convergence(BakeContext&, const BakeRequest& req, TableKind) const override {
-    if (!req.ndfs.empty() && req.ndfs.size() != 1) throw Error(kExitUsage, "--ndf: ashikhmin-shirley has its own model");
+    if (!req.ndfs.empty() && req.ndfs.size() != 1)
+      throw Error(kExitUsage, "--ndf: ashikhmin-shirley has its own model");
     const int points = 1024;
     auto radical = [](int i, int b) {
       double f = 1, r = 0;
@@ -94,19 +95,23 @@ class Ashikhmin final : public TableFamily {
             // grid coordinate: nodes i/(n-1), or Tex1's (i+1)/n
             double gx = ashikhminNodeGrid(t) ? p[0] * (n - 1) : p[0] * n - 1;
             double gy = ashikhminNodeGrid(t) ? p[1] * (n - 1) : p[1] * n - 1;
-            int x0 = std::clamp(static_cast<int>(std::floor(gx)), 0, n - 2), y0 = std::clamp(static_cast<int>(std::floor(gy)), 0, n - 2);
+            int x0 = std::clamp(static_cast<int>(std::floor(gx)), 0, n - 2),
+                y0 = std::clamp(static_cast<int>(std::floor(gy)), 0, n - 2);
             double fx = gx - x0, fy = gy - y0;
             auto at = [&](int x, int y) { return static_cast<double>(img.planes[c][static_cast<size_t>(y) * n + x]); };
-            v.push_back((1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1)));
+            v.push_back((1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
+                        fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1)));
           }
       }
       secs = ladder::now() - secs;
       const std::vector<double> e = ladder::changeFrom(prev, v);
       prev = v;
-      L.rungs.push_back(ladder::rung("bilinear lookup (float texels)", std::to_string(n) + " texels per axis", secs, v, e, ref));
+      L.rungs.push_back(
+          ladder::rung("bilinear lookup (float texels)", std::to_string(n) + " texels per axis", secs, v, e, ref));
     }
-    L.note = "The reference: the seed's formulas as printed, in long double (tables/ashikhmin_textures.cpp); a rung's "
-             "estimate is its change from the previous rung\n";
+    L.note =
+        "The reference: the seed's formulas as printed, in long double (tables/ashikhmin_textures.cpp); a rung's "
+        "estimate is its change from the previous rung\n";
     return L;
   }
 
@@ -119,8 +124,11 @@ class Ashikhmin final : public TableFamily {
       int t, c, i, j;
       const char* limit;
     };
-    const Case cases[] = {{0, 0, 0, 0, "Tex0(0, 0) = 0"}, {1, 2, 0, 0, "Tex1 B(1/n, 1/n) = n^2"}, {1, 0, 0, n - 1, ""},
-                          {2, 0, n - 1, 0, "Tex2(1, v) = exp(-v^2/2)"}, {2, 0, n - 1, n / 2, "Tex2(1, 0) = 1"},
+    const Case cases[] = {{0, 0, 0, 0, "Tex0(0, 0) = 0"},
+                          {1, 2, 0, 0, "Tex1 B(1/n, 1/n) = n^2"},
+                          {1, 0, 0, n - 1, ""},
+                          {2, 0, n - 1, 0, "Tex2(1, v) = exp(-v^2/2)"},
+                          {2, 0, n - 1, n / 2, "Tex2(1, 0) = 1"},
                           {2, 0, n - 2, n - 1, ""}};
     for (const Case& k : cases) {
       TableImage img = ashikhminTexture(k.t, n, false);

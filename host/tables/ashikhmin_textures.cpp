@@ -45,8 +45,7 @@ const char* const kFormula[kAsTextures] = {
     "Tex1(h.l, max(n.l,n.v)) Tex2(n.h, sqrt(n_u) h.x) Tex2(n.h, sqrt(n_v) h.y) (Ashikhmin and Shirley 2000, eq. 4)"};
 const char* const kAxes[kAsTextures] = {"n.l,n.v", "h.l,max(n.l,n.v)", "n.h,t"};
 const char* const kChannels[kAsTextures] = {
-    "R=G=B=Tex0",
-    "R=(1-(1-u)^5)/(u v),G=(1-u)^5/(u v),B=1/(u v) (Tex1 = R_s R + G; B = R + G, Tex1 at R_s = 1)",
+    "R=G=B=Tex0", "R=(1-(1-u)^5)/(u v),G=(1-u)^5/(u v),B=1/(u v) (Tex1 = R_s R + G; B = R + G, Tex1 at R_s = 1)",
     "R=G=B=Tex2"};
 
 }  // namespace
@@ -63,16 +62,18 @@ std::string ashikhminFileName(int texture) { return "as_tex" + std::to_string(te
 
 void checkAshikhminRequest(int size, bool half, bool nodeGrid) {
   if (nodeGrid)
-    throw Error(kExitUsage, "--grid node: --table ashikhmin-shirley sets its own grids (Tex0 and Tex2 node, so that "
-                            "u = 1 holds Tex2's limit; Tex1 upper-node, (i+1)/n, as it is infinite at u = 0 and v = 0); "
-                            "bake it without --grid");
+    throw Error(kExitUsage,
+                "--grid node: --table ashikhmin-shirley sets its own grids (Tex0 and Tex2 node, so that "
+                "u = 1 holds Tex2's limit; Tex1 upper-node, (i+1)/n, as it is infinite at u = 0 and v = 0); "
+                "bake it without --grid");
   if (size < 2)
-    throw Error(kExitUsage, "--size must be an integer in 2..8192 for --table ashikhmin-shirley, got " +
-                                std::to_string(size));
+    throw Error(kExitUsage,
+                "--size must be an integer in 2..8192 for --table ashikhmin-shirley, got " + std::to_string(size));
   if (half && size > kHalfMaxSize)
     throw Error(kExitUsage, "--size must be an integer in 2.." + std::to_string(kHalfMaxSize) +
                                 " for --table ashikhmin-shirley with --half (Tex1 = F/(u v) reaches n^2 at the corner "
-                                "texel, above half's 65504 from 256), got " + std::to_string(size));
+                                "texel, above half's 65504 from 256), got " +
+                                std::to_string(size));
 }
 
 TableImage ashikhminTexture(int t, int n, bool half) {
@@ -126,9 +127,10 @@ TableImage ashikhminTexture(int t, int n, bool half) {
     img.strings["brdf.lookup"] = t == 0 ? "texture(tex0, (0.5 + (n-1) vec2(n.l, n.v))/n).r"
                                         : "dot(texture(tex1, vec2(h.l, max(n.l, n.v)) - 0.5/n).rg, vec2(R_s, 1))";
   }
-  img.strings["brdf.method"] = "closed form in double (kernels/brdf/anisotropic.h), Tex2 without the seed's switch-over "
-                               "at u > 1-1/256, Tex1 without its epsilon; error: the largest difference of a stored "
-                               "value from the formula in long double, relative to max(1,|value|)";
+  img.strings["brdf.method"] =
+      "closed form in double (kernels/brdf/anisotropic.h), Tex2 without the seed's switch-over "
+      "at u > 1-1/256, Tex1 without its epsilon; error: the largest difference of a stored "
+      "value from the formula in long double, relative to max(1,|value|)";
   img.strings["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
   img.floats["brdf.error"] = static_cast<float>(worst);
   return img;

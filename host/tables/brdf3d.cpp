@@ -84,8 +84,10 @@ std::vector<Job> planVolumes(const TableFamily* family, const BakeRequest& req) 
         if (req.size && *req.size > kMaxVolumeSize)
           throw Error(kExitUsage, "--size: each axis of a brdf3d table must be an integer in 1.." +
                                       std::to_string(kMaxVolumeSize) + ", got " + std::to_string(*req.size));
-        std::array<int, 3> n = v.size ? *v.size : std::array<int, 3>{{req.size ? *req.size : 32, req.size ? *req.size : 32,
-                                                                      req.size ? *req.size : 32}};
+        std::array<int, 3> n =
+            v.size
+                ? *v.size
+                : std::array<int, 3>{{req.size ? *req.size : 32, req.size ? *req.size : 32, req.size ? *req.size : 32}};
         if (req.nodeGrid && std::min({n[0], n[1], n[2]}) < 2)
           throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
         s.nx = n[0];
@@ -97,8 +99,8 @@ std::vector<Job> planVolumes(const TableFamily* family, const BakeRequest& req) 
                                       std::to_string(job.cols * job.rows) + " slices, fewer than the table's " +
                                       std::to_string(s.nz));
         if (static_cast<long>(job.cols) * s.nx > 65536 || static_cast<long>(job.rows) * s.ny > 65536)
-          throw Error(kExitUsage, "--atlas: the atlas would be " + std::to_string(static_cast<long>(job.cols) * s.nx) + "x" +
-                                      std::to_string(static_cast<long>(job.rows) * s.ny) +
+          throw Error(kExitUsage, "--atlas: the atlas would be " + std::to_string(static_cast<long>(job.cols) * s.nx) +
+                                      "x" + std::to_string(static_cast<long>(job.rows) * s.ny) +
                                       " texels; at most 65536 per side (choose fewer columns or rows)");
       }
       job.path = req.outDir + "/" + volumeFileName(job);
@@ -161,8 +163,9 @@ class Brdf3d final : public TableFamily {
     const VolumeJob v = job.get<VolumeJob>();
     for (FileFormat f : v.formats)
       if (v.merl || f != FileFormat::Exr)
-        throw Error(kExitUsage, "write: " + v.path + ": a brdf3d table held in memory is written as its EXR atlas; "
-                                "for ktx2, dds, header or merl, bakeToDirectory streams it from the device");
+        throw Error(kExitUsage, "write: " + v.path +
+                                    ": a brdf3d table held in memory is written as its EXR atlas; "
+                                    "for ktx2, dds, header or merl, bakeToDirectory streams it from the device");
     TableReport r;
     r.path = v.path;
     r.table = "brdf3d";
@@ -268,16 +271,18 @@ class Brdf3d final : public TableFamily {
           ang[a] = ax[a].hi * (a == 0 && s.param == Brdf3dParam::Rusinkiewicz && s.thetaHSqrt ? t[a] * t[a] : t[a]);
           idx[a] = texelIndex(s, a, ang[a]);
         }
-        Directions d = s.param == Brdf3dParam::Angles ? fromAngles(ang.x, ang.y, ang.z) : fromRusinkiewicz(ang.x, ang.y, ang.z);
+        Directions d =
+            s.param == Brdf3dParam::Angles ? fromAngles(ang.x, ang.y, ang.z) : fromRusinkiewicz(ang.x, ang.y, ang.z);
         val.push_back(trilinear(s, planes[0], idx));
         ref.push_back(hostBrdf(s, d, 0));
         est.push_back(claim);
       }
-      L.rungs.push_back(ladder::rung("trilinear lookup (device table)", std::to_string(s.nx) + " texels per axis", secs, val,
-                                     est, ref));
+      L.rungs.push_back(ladder::rung("trilinear lookup (device table)", std::to_string(s.nx) + " texels per axis", secs,
+                                     val, est, ref));
     }
-    L.note = "The reference: f itself, evaluated in double on the host (common/brdf3d_grid.h hostBrdf); a rung's "
-             "estimate is the file's claim, brdf.interp-error (measured at 4096 other points) + brdf.error\n";
+    L.note =
+        "The reference: f itself, evaluated in double on the host (common/brdf3d_grid.h hostBrdf); a rung's "
+        "estimate is the file's claim, brdf.interp-error (measured at 4096 other points) + brdf.error\n";
     return L;
   }
 
@@ -296,7 +301,9 @@ class Brdf3d final : public TableFamily {
       KernelRunner& kr = ctx.runner();
       kr.prepare(KernelNeed{KernelNeed::Brdf3d, s.ndf, s.gaf});
       const std::vector<float> f = kr.brdf3dSlab(s, 0, s.nz).front();
-      auto at = [&](int x, int y, int z) { return static_cast<double>(f[(static_cast<size_t>(z) * s.ny + y) * s.nx + x]); };
+      auto at = [&](int x, int y, int z) {
+        return static_cast<double>(f[(static_cast<size_t>(z) * s.ny + y) * s.nx + x]);
+      };
       const int texels[][3] = {{2, 1, 0}, {1, 2, 1}, {2, 2, 0}, {2, 2, 2}, {0, 2, 1}};
       for (const auto& t : texels) {
         glm::dvec3 ang = texelAngles(s, t[0], t[1], t[2]);
@@ -316,11 +323,12 @@ class Brdf3d final : public TableFamily {
     const VolumeJob v = job.get<VolumeJob>();
     const Brdf3dSpec& s = v.spec;
     return "table=brdf3d;ndf=" + std::to_string(s.ndf) + ";gaf=" + std::to_string(s.gaf) + ";r=" + fmtG9(s.roughness) +
-           ";fresnel=" + s.fresnel.describe() + ";diffuse=" + std::to_string(s.diffuse) + ";dparam=" + fmtG9(s.diffuseParam) +
-           ";rho=" + vec(s.rho) + ";param=" + std::to_string(s.kernelParam()) + ";grid=" + std::to_string(s.kernelGrid()) +
-           ";cos=" + (s.timesCos ? "1" : "0") + ";size=" + std::to_string(s.nx) + "x" + std::to_string(s.ny) + "x" +
-           std::to_string(s.nz) + ";atlas=" + std::to_string(v.cols) + "x" + std::to_string(v.rows) + ";half=" +
-           (v.half ? "1" : "0") + ";merl=" + (v.merl ? "1" : "0");
+           ";fresnel=" + s.fresnel.describe() + ";diffuse=" + std::to_string(s.diffuse) +
+           ";dparam=" + fmtG9(s.diffuseParam) + ";rho=" + vec(s.rho) + ";param=" + std::to_string(s.kernelParam()) +
+           ";grid=" + std::to_string(s.kernelGrid()) + ";cos=" + (s.timesCos ? "1" : "0") +
+           ";size=" + std::to_string(s.nx) + "x" + std::to_string(s.ny) + "x" + std::to_string(s.nz) +
+           ";atlas=" + std::to_string(v.cols) + "x" + std::to_string(v.rows) + ";half=" + (v.half ? "1" : "0") +
+           ";merl=" + (v.merl ? "1" : "0");
   }
 
   JobSummary summary(const Job& job) const override {

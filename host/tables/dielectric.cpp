@@ -36,8 +36,10 @@ std::vector<Job> planDielectric(const TableFamily* family, const BakeRequest& re
                                   ndfNames()[ndf]);
   for (int gaf : req.gafs)
     if (gaf != GAF_SMITH && gaf != GAF_SMITH_CORRELATED)
-      throw Error(kExitUsage, t + ": the rough dielectric takes --gaf smith or smith-correlated (Smith's G for "
-                                  "reflection and transmission), not " + gafNames()[gaf]);
+      throw Error(kExitUsage, t +
+                                  ": the rough dielectric takes --gaf smith or smith-correlated (Smith's G for "
+                                  "reflection and transmission), not " +
+                                  gafNames()[gaf]);
   if (req.fresnelGiven || req.diffuse >= 0 || !req.fresnel.eta.empty() || !req.fresnel.f0.empty())
     throw Error(kExitUsage, t + ": the Fresnel is the exact dielectric one over the eta axis (--eta-range); leave "
                                 "--fresnel, --eta, --f0 and --diffuse out");
@@ -79,8 +81,9 @@ std::vector<Job> planDielectric(const TableFamily* family, const BakeRequest& re
 std::vector<double> ladderEtas(const BakeRequest& req) {
   if (req.etaRange) {
     if (req.etaRange->first == 1 || req.etaRange->second == 1)
-      throw Error(kExitUsage, "--eta-range: convergence measures at its ends, and at eta = 1 the transmitted lobe is a "
-                              "delta (no integral to converge); give ends other than 1");
+      throw Error(kExitUsage,
+                  "--eta-range: convergence measures at its ends, and at eta = 1 the transmitted lobe is a "
+                  "delta (no integral to converge); give ends other than 1");
     return {req.etaRange->first, req.etaRange->second};
   }
   return {1 / 1.5, 1.33, 1.5};
@@ -128,12 +131,14 @@ Ladder cubeLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
       // float, 2^-25 each below 1 (the sum's third rounding is not measured here), and the fp64 program's 1e-9
       e[k] = p[2][k] + 2 * std::ldexp(1.0, -25) + 1e-9;
     }
-    L.rungs.push_back(ladder::rung("quadrature (device)", (i + 1 == targets.size() ? "the bake's target " : "target ") +
-                                                              fmt3(targets[i]), secs, v, e, ref));
+    L.rungs.push_back(ladder::rung("quadrature (device)",
+                                   (i + 1 == targets.size() ? "the bake's target " : "target ") + fmt3(targets[i]),
+                                   secs, v, e, ref));
   }
-  L.note = "The reference (Walter et al.'s BSDF integrated over the scattered direction by nested adaptive Gauss-Kronrod "
-           "in double, host/reference/dielectric_reference.cpp) took " + fmt3(refSeconds) + " s for " +
-           std::to_string(texels) + " points\n";
+  L.note =
+      "The reference (Walter et al.'s BSDF integrated over the scattered direction by nested adaptive Gauss-Kronrod "
+      "in double, host/reference/dielectric_reference.cpp) took " +
+      fmt3(refSeconds) + " s for " + std::to_string(texels) + " points\n";
   return L;
 }
 
@@ -163,8 +168,10 @@ Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
       for (int g = 2; g <= 9; ++g) edges.push_back(b - (b - a) * std::ldexp(1.0, -g));
       edges.push_back(b);
     };
-    if (muc > 0) piece(0, muc), piece(muc, 1);
-    else piece(0, 1);
+    if (muc > 0)
+      piece(0, muc), piece(muc, 1);
+    else
+      piece(0, 1);
     double sum[2] = {0, 0};
     for (size_t e = 0; e + 1 < edges.size(); ++e)
       for (const ladder::Node& x : ladder::gaussLegendreNodes(edges[e], edges[e + 1], 1)) {
@@ -195,12 +202,14 @@ Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
       v[2 * k + 1] = a.et[k];
       e[k] = std::max(a.br[k], a.bt[k]);
     }
-    L.rungs.push_back(ladder::rung("the averages' rule (device E)", (i + 1 == targets.size() ? "the bake's target " : "target ") +
-                                                                      fmt3(targets[i].first), secs, v, e, ref));
+    L.rungs.push_back(ladder::rung(
+        "the averages' rule (device E)",
+        (i + 1 == targets.size() ? "the bake's target " : "target ") + fmt3(targets[i].first), secs, v, e, ref));
   }
-  L.note = "The reference (2 int E mu dmu by 8-point Gauss-Legendre on panels graded towards 0, the critical mu and 1, "
-           "of the o-space reference's E, host/reference/dielectric_reference.cpp) took " + fmt3(refSeconds) + " s for " +
-           std::to_string(entries) + " entries\n";
+  L.note =
+      "The reference (2 int E mu dmu by 8-point Gauss-Legendre on panels graded towards 0, the critical mu and 1, "
+      "of the o-space reference's E, host/reference/dielectric_reference.cpp) took " +
+      fmt3(refSeconds) + " s for " + std::to_string(entries) + " entries\n";
   return L;
 }
 
@@ -263,8 +272,10 @@ class Dielectric final : public TableFamily {
     table->cube = std::move(baked.volume);  // the set keeps `baked` only for its files; the writer reads `table`
     OutputFile f = dielectricOutput(d, *table);
     auto write = f.write;
-    if (write) f.write = [write, table](const std::string& tmp) { write(tmp); };
-    else f.image = &set.keep.emplace_back(table->image);
+    if (write)
+      f.write = [write, table](const std::string& tmp) { write(tmp); };
+    else
+      f.image = &set.keep.emplace_back(table->image);
     set.files.push_back(std::move(f));
   }
 
@@ -304,10 +315,10 @@ class Dielectric final : public TableFamily {
       for (int lobe = 0; lobe < 2; ++lobe) {
         // the node's bound (absolute, E <= 1), the fp64 program's 1e-9 (tables/dielectric_bake.cpp), and
         // the reference's own accuracy near its limits (1e-8, as the averages' tests allow it)
-        StressPoint s = stressPoint(cases[k].sweep,
-                                    std::string(lobe ? "E_T" : "E_R") + " mu=" + fmt4(mus[k]) + " r=" + fmt4(rs[k]) +
-                                        " eta=" + fmtG(etas[k]),
-                                    lobe ? p[1][k] : p[0][k], lobe ? a.t : a.r, p[2 + lobe][k] + 1e-9, 1e-8);
+        StressPoint s = stressPoint(
+            cases[k].sweep,
+            std::string(lobe ? "E_T" : "E_R") + " mu=" + fmt4(mus[k]) + " r=" + fmt4(rs[k]) + " eta=" + fmtG(etas[k]),
+            lobe ? p[1][k] : p[0][k], lobe ? a.t : a.r, p[2 + lobe][k] + 1e-9, 1e-8);
         if (nearOne) {
           s.limit = lobe ? "E_T -> (1 + L) G_T(L, L) as eta -> 1" : "E_R -> 0 as eta -> 1";
           s.limitMet = s.finite && std::fabs(s.value - (lobe ? eta1.t : 0.0)) <= 1e-3;
@@ -321,8 +332,8 @@ class Dielectric final : public TableFamily {
     const DielectricJob d = job.get<DielectricJob>();
     return std::string("table=") + (d.avg ? "dielectric-avg" : "dielectric") + ";ndf=" + std::to_string(d.ndf) +
            ";gaf=" + std::to_string(d.gaf) + ";size=" + std::to_string(d.nx) + "x" + std::to_string(d.ny) + "x" +
-           std::to_string(d.nz) + ";eta=" + fmtG9(d.etaLo) + "," + fmtG9(d.etaHi) + ";grid=" + (d.nodeGrid ? "node" : "texel") +
-           ";half=" + (d.half ? "1" : "0");
+           std::to_string(d.nz) + ";eta=" + fmtG9(d.etaLo) + "," + fmtG9(d.etaHi) +
+           ";grid=" + (d.nodeGrid ? "node" : "texel") + ";half=" + (d.half ? "1" : "0");
   }
 
   JobSummary summary(const Job& job) const override {

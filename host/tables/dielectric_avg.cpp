@@ -56,7 +56,8 @@ void node(const Panel& p, int m, double* mu, double* w) {
 double dielectricCriticalMu(double eta) { return eta < 1 ? std::sqrt((1 - eta) * (1 + eta)) : -1; }
 
 DielectricAverages dielectricAverages(const DielectricEval& eval, const std::vector<double>& r,
-                                      const std::vector<double>& eta, double target, std::function<void(double, double)> progress) {
+                                      const std::vector<double>& eta, double target,
+                                      std::function<void(double, double)> progress) {
   const size_t n = r.size();
   std::vector<std::vector<Panel>> panels(n);
   std::vector<std::vector<size_t>> fresh(n);  // panels whose nodes are still to be evaluated

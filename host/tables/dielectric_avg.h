@@ -39,6 +39,7 @@ constexpr float kDielectricAvgNodeTarget = 1e-7f;
 double dielectricCriticalMu(double eta);
 
 DielectricAverages dielectricAverages(const DielectricEval& eval, const std::vector<double>& r,
-                                      const std::vector<double>& eta, double target = kDielectricAvgTarget, std::function<void(double settled, double total)> progress = {});
+                                      const std::vector<double>& eta, double target = kDielectricAvgTarget,
+                                      std::function<void(double settled, double total)> progress = {});
 
 }  // namespace brdfbake

@@ -21,7 +21,8 @@ namespace {
 // The device program runs in double (cl_khr_fp64; PoCL has it). Its arithmetic, measured: the
 // device's float values equal the host's double rule rounded to float at every one of 2048 texels
 // (16^2 at 8 etas from 0.4 to 2.5), so the two differ by far less than a float's
-// half-ulp; 1e-9 covers that with room. Without fp64 it runs in float, for which the 2D tables' unmeasured 1e-6 allowance is kept.
+// half-ulp; 1e-9 covers that with room. Without fp64 it runs in float, for which the 2D tables' unmeasured 1e-6
+// allowance is kept.
 constexpr double kDoubleAllowance = 1e-9, kFloatAllowance = 1e-6;
 // The 3D table's storage: the device rounds E_R and E_T to float, 2^-25 for values below 1, and
 // E_R + E_T is summed from those in float: three roundings. Half rounds each float once more, 2^-12
@@ -64,7 +65,8 @@ std::vector<double> dielectricEtas(const DielectricJob& job, int z0, int n) {
   for (int k = 0; k < n; ++k) {
     int z = z0 + k;
     double t = job.nodeGrid ? (nz > 1 ? static_cast<double>(z) / (nz - 1) : 0.0) : (z + 0.5) / nz;
-    etas[k] = z == 0 && job.nodeGrid ? job.etaLo : (job.nodeGrid && z == nz - 1 ? job.etaHi : dielectricEta(s0 + (s1 - s0) * t));
+    etas[k] = z == 0 && job.nodeGrid ? job.etaLo
+                                     : (job.nodeGrid && z == nz - 1 ? job.etaHi : dielectricEta(s0 + (s1 - s0) * t));
   }
   return etas;
 }
@@ -90,11 +92,9 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
         rs.push_back(job.nodeGrid ? (job.nx > 1 ? static_cast<double>(x) / (job.nx - 1) : 0.0) : (x + 0.5) / job.nx);
         es.push_back(etas[y]);
       }
-    DielectricAverages av =
-        dielectricAverages(dielectricDeviceEval(runner, job.ndf, job.gaf, kDielectricAvgNodeTarget), rs, es,
-                           kDielectricAvgTarget, [&runner](double settled, double total) {
-                             runner.progress("entries settled", settled, total);
-                           });
+    DielectricAverages av = dielectricAverages(
+        dielectricDeviceEval(runner, job.ndf, job.gaf, kDielectricAvgNodeTarget), rs, es, kDielectricAvgTarget,
+        [&runner](double settled, double total) { runner.progress("entries settled", settled, total); });
     // The averages are formed in double from the nodes' unrounded values (in float without fp64:
     // the float allowance covers that) and rounded once as stored, so each entry's storage term
     // is its own rounding, known exactly: a channel's claim is its bound plus that.
@@ -132,14 +132,16 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
     img.height = job.ny * job.rows;
   }
   if (seconds) *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const std::string what = std::string(job.avg ? "dielectric-avg " : "dielectric ") + ndfNames()[job.ndf] + "+" +
-                           gafNames()[job.gaf];
+  const std::string what =
+      std::string(job.avg ? "dielectric-avg " : "dielectric ") + ndfNames()[job.ndf] + "+" + gafNames()[job.gaf];
   for (const auto& p : job.avg ? img.planes : out.cube)
     for (float v : p)
-      if (!std::isfinite(v)) throw Error(kExitSoftware, "internal error: " + what + " has a value that is not finite; nothing was written");
+      if (!std::isfinite(v))
+        throw Error(kExitSoftware, "internal error: " + what + " has a value that is not finite; nothing was written");
   double maxClaim = 0;
   for (size_t t = 0; t < claims.size(); ++t) {
-    if (!std::isfinite(claims[t])) throw Error(kExitSoftware, "internal error: " + what + " has a bound that is not finite; nothing was written");
+    if (!std::isfinite(claims[t]))
+      throw Error(kExitSoftware, "internal error: " + what + " has a bound that is not finite; nothing was written");
     out.maxBound = std::max(out.maxBound, quadrature[t]);
     maxClaim = std::max(maxClaim, claims[t]);
   }
@@ -157,7 +159,8 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
   str["brdf.axes"] = job.avg ? "r,s" : "mu,r,s";
   str["brdf.eta.coordinate"] = coordText();
   img.v2f["brdf.eta.range"] = {static_cast<float>(job.etaLo), static_cast<float>(job.etaHi)};
-  img.v2f["brdf.s.range"] = {static_cast<float>(dielectricCoord(job.etaLo)), static_cast<float>(dielectricCoord(job.etaHi))};
+  img.v2f["brdf.s.range"] = {static_cast<float>(dielectricCoord(job.etaLo)),
+                             static_cast<float>(dielectricCoord(job.etaHi))};
   img.v2f["brdf.r.range"] = {0.0f, 1.0f};
   if (!job.avg) img.v2f["brdf.mu.range"] = {0.0f, 1.0f};
   str["brdf.grid"] = job.nodeGrid ? "node" : "texel-center";
@@ -168,7 +171,8 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
     img.floats["brdf.depth"] = static_cast<float>(job.nz);
     str["brdf.atlas.order"] = "slice z (eta axis) at column z % " + std::to_string(job.cols) + ", row z / " +
                               std::to_string(job.cols) + "; texel (x = mu, y = r) of a slice at pixel (column * " +
-                              std::to_string(job.nx) + " + x, row * " + std::to_string(job.ny) + " + y); unused slots hold 0";
+                              std::to_string(job.nx) + " + x, row * " + std::to_string(job.ny) +
+                              " + y); unused slots hold 0";
   }
   str["brdf.channels"] = job.avg ? "R = E_R,avg, G = E_T,avg (2 int E mu dmu), B = E_R,avg + E_T,avg"
                                  : "R = E_R (reflected albedo), G = E_T (transmitted albedo: the fraction of energy "

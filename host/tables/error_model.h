@@ -44,7 +44,6 @@ namespace brdfbake {
 
 constexpr double kUnitRoundoff = 0x1p-24;
 
-
 struct FloatModel {
   double k1, k0;  // error <= (k1 min(1, |v|) + k0) u
 };
@@ -94,10 +93,14 @@ inline FloatModel hemiFloatModel(int ndf, int gaf, bool weighted = false) {
     return sheenGBounded(gaf) ? kSheenFloatBounded : gaf == GAF_CHARLIE_SMITH ? kCharlieSmithFloat : kSheenFloatNone;
   if (weighted) return kFresnelFloat;
   switch (ndf) {
-    case NDF_GGX: return kHemiFloatGgx;
-    case NDF_BECKMANN: return kHemiFloatBeckmann;
-    case NDF_BLINN_PHONG: return kHemiFloatBlinnPhong;
-    default: return kHemiFloat;
+    case NDF_GGX:
+      return kHemiFloatGgx;
+    case NDF_BECKMANN:
+      return kHemiFloatBeckmann;
+    case NDF_BLINN_PHONG:
+      return kHemiFloatBlinnPhong;
+    default:
+      return kHemiFloat;
   }
 }
 
@@ -117,7 +120,8 @@ inline double fresnelKinkFloat(int model, double eta, double mu, double r) {
   const double alpha = r * r, w = std::max(alpha * std::sqrt(std::max(0.0, 1 - mu * mu)) + alpha * alpha, 1e-7);
   const double lo = std::max(0.0, mu - w), hi = std::min(1.0, mu + w);
   if (!(hi > lo)) return 0;
-  const double slope = std::fabs(brdf64::fresnel_F(model, eta, 0.0, hi) - brdf64::fresnel_F(model, eta, 0.0, lo)) / (hi - lo);
+  const double slope =
+      std::fabs(brdf64::fresnel_F(model, eta, 0.0, hi) - brdf64::fresnel_F(model, eta, 0.0, lo)) / (hi - lo);
   return kUnitRoundoff * mu * slope;
 }
 

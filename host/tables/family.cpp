@@ -90,7 +90,8 @@ void TableFamily::addBakedFiles(const Job& job, BakedTable& t, FileSet& set) con
     for (const auto& [k, v] : it->second) t.image.strings[k] = v;
   TableReport r = reportOf(tj);
   r.seconds = t.seconds;
-  for (PlannedFile& pf : tableOutputs(FileSpec{tj.path, tj.formats, tj.precision, tj.half, tj.layout, tj.layoutName}, t.image, set.keep)) {
+  for (PlannedFile& pf : tableOutputs(FileSpec{tj.path, tj.formats, tj.precision, tj.half, tj.layout, tj.layoutName},
+                                      t.image, set.keep)) {
     r.path = pf.file.path;
     r.errorBound = pf.errorBound;
     set.reports.push_back(r);
@@ -107,8 +108,9 @@ void applyFormats(const BakeRequest& req, TableJob& job) {
 
 std::string tableJobKey(const TableJob& j) {
   return "table=" + tableName(j.kind) + ";ndf=" + std::to_string(j.ndf) + ";gaf=" + std::to_string(j.gaf) +
-         ";size=" + std::to_string(j.width) + "x" + std::to_string(j.height) + ";grid=" + (j.nodeGrid ? "node" : "texel") +
-         ";half=" + (j.half ? "1" : "0") + ";fresnel=" + j.fresnel.describe() + ";diffuse=" + std::to_string(j.diffuse) +
+         ";size=" + std::to_string(j.width) + "x" + std::to_string(j.height) +
+         ";grid=" + (j.nodeGrid ? "node" : "texel") + ";half=" + (j.half ? "1" : "0") +
+         ";fresnel=" + j.fresnel.describe() + ";diffuse=" + std::to_string(j.diffuse) +
          ";texture=" + std::to_string(j.texture);
 }
 

@@ -24,14 +24,13 @@
 
 namespace brdfbake {
 
-
 // A table computed in memory.
 struct BakedTable {
-  TableImage image;                         // values and metadata (3D tables: the header, planes empty)
-  std::vector<double> texelBounds;          // each texel's claim (2D tables), in texel order
-  std::vector<std::vector<float>> volume;   // 3D tables: one plane per channel, [(z * ny + y) * nx + x]
+  TableImage image;                        // values and metadata (3D tables: the header, planes empty)
+  std::vector<double> texelBounds;         // each texel's claim (2D tables), in texel order
+  std::vector<std::vector<float>> volume;  // 3D tables: one plane per channel, [(z * ny + y) * nx + x]
   int depth = 1;
-  double seconds = 0;                       // compute time
+  double seconds = 0;  // compute time
 };
 
 // Data a family keeps for the length of a bake (BakeContext::cache).
@@ -71,8 +70,8 @@ class BakeContext {
 
 // The files a bake lands together, and their report lines.
 struct FileSet {
-  std::deque<TableImage> keep;         // images and per-format metadata the files point into
-  std::deque<BakedTable> baked;        // tables the files point into
+  std::deque<TableImage> keep;   // images and per-format metadata the files point into
+  std::deque<BakedTable> baked;  // tables the files point into
   std::vector<OutputFile> files;
   std::vector<TableReport> reports;
   std::vector<std::function<void()>> afterCommit;  // e.g. streamed tables' kernel time into their reports
@@ -92,7 +91,7 @@ struct Rung {
 struct Ladder {
   std::string table;  // what was measured: the table, models, points
   std::vector<Rung> rungs;
-  std::string note;   // the reference: what it is, its time, how it agrees with the finest rung
+  std::string note;  // the reference: what it is, its time, how it agrees with the finest rung
 };
 
 // One point of `brdfbake stress`: a table's value at a stiff or extreme case against the independent
@@ -117,7 +116,7 @@ struct JobSummary {
   std::string models;  // "ggx + smith-correlated, Schlick split (...)"
   std::string size;    // "128x128"
   double texels = 0;
-  double cost = 0;     // estimated seconds on PoCL, 2 cores (a guide for shards, not a promise)
+  double cost = 0;  // estimated seconds on PoCL, 2 cores (a guide for shards, not a promise)
 };
 
 class TableFamily {
@@ -136,7 +135,8 @@ class TableFamily {
   virtual std::vector<KernelNeed> kernels(const Job&) const { return {}; }
   // Whether a job runs on the OpenCL device at all (host-only families: false).
   virtual bool usesDevice(const Job& job) const { return !kernels(job).empty(); }
-  // Checks over all of the plan's jobs of this family before anything runs, or data read once (a MERL file) into ctx.cache.
+  // Checks over all of the plan's jobs of this family before anything runs, or data read once (a MERL file) into
+  // ctx.cache.
   virtual void preflight(BakeContext& /*ctx*/, const std::string& /*outDir*/,
                          const std::vector<const Job*>& /*jobs*/) const {}
   // The job's table in memory.

@@ -35,9 +35,10 @@ class FresnelAvg final : public TableFamily {
     if (!req.merl.empty() || !req.preset.empty()) return {};
     if (std::find(req.tables.begin(), req.tables.end(), TableKind::FresnelAvg) == req.tables.end()) return {};
     if (req.fresnel.model != FRESNEL_DIELECTRIC && req.fresnel.model != FRESNEL_SCHLICK_TIR)
-      throw Error(kExitUsage, "--table fresnel-avg runs over eta: it takes --fresnel dielectric or schlick-tir (for "
-                              "other models brdfbake energy prints F_avg, and every Fresnel table records it as "
-                              "brdf.fresnel.avg)");
+      throw Error(kExitUsage,
+                  "--table fresnel-avg runs over eta: it takes --fresnel dielectric or schlick-tir (for "
+                  "other models brdfbake energy prints F_avg, and every Fresnel table records it as "
+                  "brdf.fresnel.avg)");
     int n = req.size ? *req.size : brdfbake::defaultSize(TableKind::FresnelAvg);
     if (n < 2) throw Error(kExitUsage, "--size must be at least 2 for fresnel-avg, got " + std::to_string(n));
     TableJob job = tableJob(TableKind::FresnelAvg, -1, -1, n, 1, req.nodeGrid, req.half);
@@ -69,10 +70,11 @@ class FresnelAvg final : public TableFamily {
     t.img.strings["brdf.channels"] = "R=G=B=F_avg (2 int F(mu) mu dmu)";
     t.img.strings["brdf.fresnel"] = fresnelNames()[fc.model];
     t.img.v2f["brdf.eta.range"] = {static_cast<float>(kEtaLo), static_cast<float>(kEtaHi)};
-    t.img.strings["brdf.method"] = fc.model == FRESNEL_SCHLICK_TIR
-                                       ? "closed form: (20 F0 + 1)/21, and (1 - eta^2) + eta^2 (20 F0 + 1)/21 for eta < 1"
-                                       : "adaptive Gauss-Kronrod 31 in double on [sqrt(1-eta^2) or 0, 1], F = 1 below "
-                                         "the critical angle; error: its estimate + storage rounding";
+    t.img.strings["brdf.method"] =
+        fc.model == FRESNEL_SCHLICK_TIR
+            ? "closed form: (20 F0 + 1)/21, and (1 - eta^2) + eta^2 (20 F0 + 1)/21 for eta < 1"
+            : "adaptive Gauss-Kronrod 31 in double on [sqrt(1-eta^2) or 0, 1], F = 1 below "
+              "the critical angle; error: its estimate + storage rounding";
     BakedTable out;
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.image = finishTable2d(nullptr, job, std::move(t), &out.texelBounds);
@@ -109,15 +111,20 @@ class FresnelAvg final : public TableFamily {
       std::vector<double> v(n);
       double secs = ladder::best3([&] {
         for (int i = 0; i < n; ++i)
-          v[i] = ladder::gaussLegendre([&](double mu) { return 2 * mu * brdf64::fresnel_F(model, eta[i], 0, mu); }, 0, 1, panels);
+          v[i] = ladder::gaussLegendre([&](double mu) { return 2 * mu * brdf64::fresnel_F(model, eta[i], 0, mu); }, 0,
+                                       1, panels);
       });
       const std::vector<double> e = ladder::changeFrom(prev, v);
       prev = v;
-      L.rungs.push_back(ladder::rung("Gauss-Legendre in mu (host, double)", std::to_string(panels) + " x 8 nodes", secs, v, e, ref));
+      L.rungs.push_back(
+          ladder::rung("Gauss-Legendre in mu (host, double)", std::to_string(panels) + " x 8 nodes", secs, v, e, ref));
     }
-    L.note = "The reference (F from complex amplitudes, 2 int F mu dmu by adaptive Gauss-Kronrod in double, host/reference) "
-             "took " + fmt3(refSeconds) + " s for " + std::to_string(n) + " values; a Gauss-Legendre rung's estimate is its "
-             "change from the previous rung\n";
+    L.note =
+        "The reference (F from complex amplitudes, 2 int F mu dmu by adaptive Gauss-Kronrod in double, host/reference) "
+        "took " +
+        fmt3(refSeconds) + " s for " + std::to_string(n) +
+        " values; a Gauss-Legendre rung's estimate is its "
+        "change from the previous rung\n";
     return L;
   }
 

@@ -30,21 +30,21 @@ struct JobSpec {
 struct TableJob : JobSpec {
   TableKind kind = TableKind::SplitSum;
   int ndf = -1;
-  int gaf = -1;          // GAF_NONE for kp, which depends on the NDF only
+  int gaf = -1;               // GAF_NONE for kp, which depends on the NDF only
   int width = 0, height = 1;  // x = mu (2D tables) or r (1D), y = r (2D) or 1
   bool nodeGrid = false;
   bool half = false;
   FresnelChoice fresnel = {};  // albedo, albedo-avg: the model in B (one: F = 1); splitsum: schlick or f82-tint
-  int diffuse = -1;       // albedo: a diffuse model's albedo (ndf, gaf unused); splitsum: burley in B
-  int texture = -1;       // ashikhmin-shirley: Tex0, Tex1 or Tex2 (one file each)
+  int diffuse = -1;            // albedo: a diffuse model's albedo (ndf, gaf unused); splitsum: burley in B
+  int texture = -1;            // ashikhmin-shirley: Tex0, Tex1 or Tex2 (one file each)
   // the files written (path's extension replaced per format) and the precision of their channels;
   // half == (precision == float16), what the EXR file stores
   std::vector<FileFormat> formats = {FileFormat::Exr};
   Precision precision = Precision::Float32;
-  TableLayout layout = {};  // splitsum: axis order, flips, channels (formats/layout.h)
+  TableLayout layout = {};      // splitsum: axis order, flips, channels (formats/layout.h)
   std::string layoutName = {};  // --layout NAME, or a name for --axes/--flip/--channels; "" as baked
-  bool muSqrt = false;      // splitsum, albedo: x holds u = sqrt(mu), texel i at mu = u_i^2 (--mu-axis sqrt)
-  std::string merl = {};    // a measured material's MERL file (tables/measured.cpp), or ""
+  bool muSqrt = false;          // splitsum, albedo: x holds u = sqrt(mu), texel i at mu = u_i^2 (--mu-axis sqrt)
+  std::string merl = {};        // a measured material's MERL file (tables/measured.cpp), or ""
 };
 
 // A table of `kind` for the pair (ndf, gaf), width x height texels, the other fields at their defaults.
@@ -64,8 +64,8 @@ inline TableJob tableJob(TableKind kind, int ndf, int gaf, int width, int height
 struct VolumeJob : JobSpec {
   Brdf3dSpec spec;
   bool half = false;
-  bool merl = false;      // MERL's binary layout instead of an EXR atlas
-  int cols = 1, rows = 1; // the EXR atlas: slices left to right, then top to bottom
+  bool merl = false;                                    // MERL's binary layout instead of an EXR atlas
+  int cols = 1, rows = 1;                               // the EXR atlas: slices left to right, then top to bottom
   std::vector<FileFormat> formats = {FileFormat::Exr};  // ktx2, dds: 3D textures; header; exr: the atlas
   Precision precision = Precision::Float32;
 };
@@ -74,17 +74,17 @@ struct VolumeJob : JobSpec {
 // eta slices; dielectric-avg: 2D over (r, eta coordinate)). tables/dielectric_bake.h.
 struct DielectricJob : JobSpec {
   int ndf = 0, gaf = 0;
-  bool avg = false;          // dielectric-avg
+  bool avg = false;               // dielectric-avg
   int nx = 32, ny = 32, nz = 32;  // mu, r, eta (avg: nx = r, ny = eta, nz = 1)
   bool nodeGrid = false, half = false;
   double etaLo = 0.4, etaHi = 2.5;
-  int cols = 1, rows = 1;    // the atlas (3D)
+  int cols = 1, rows = 1;  // the atlas (3D)
 };
 
 struct Job {
   const TableFamily* family = nullptr;
   TableKind kind = TableKind::SplitSum;
-  std::string path;  // the output file (its extension replaced per format); scenes may rename it
+  std::string path;                     // the output file (its extension replaced per format); scenes may rename it
   std::shared_ptr<const JobSpec> spec;  // the family's own: TableJob, VolumeJob, DielectricJob or its own type
 
   // Whether the spec is a T.

@@ -10,12 +10,12 @@ namespace brdfbake {
 
 // Which lookup code `brdfbake shader` writes for a table of the kind.
 enum class ShaderLookup {
-  Value,             // one value per (mu, r), (r) or (eta): P_<shaderValue>(tex, ...)
-  SplitSum,          // A, B and the Fresnel forms built on them (P_AB, P_Schlick, ...)
-  EtaAverages,       // E_R,avg, E_T,avg and their sum over (r, eta)
-  Volume,            // a 3D texture over the BRDF's angles (brdf3d)
-  EtaVolume,         // an atlas of eta slices over (mu, r) (dielectric)
-  OwnShader,         // textures that come with their own shader (ashikhmin-shirley): none written
+  Value,        // one value per (mu, r), (r) or (eta): P_<shaderValue>(tex, ...)
+  SplitSum,     // A, B and the Fresnel forms built on them (P_AB, P_Schlick, ...)
+  EtaAverages,  // E_R,avg, E_T,avg and their sum over (r, eta)
+  Volume,       // a 3D texture over the BRDF's angles (brdf3d)
+  EtaVolume,    // an atlas of eta slices over (mu, r) (dielectric)
+  OwnShader,    // textures that come with their own shader (ashikhmin-shirley): none written
 };
 
 // What a scene's shading reads a kind for: scene/scene_plan.cpp plans, for each material, the
@@ -34,22 +34,23 @@ enum SceneUse : unsigned {
 
 struct KindInfo {
   TableKind kind;
-  int defaultSize = 32;      // --size's default
-  int sizeAxes = 1;          // 3: --size takes NX,NY,NZ (brdf3d, dielectric)
-  bool volume = false;       // a 3D texture written slab by slab, with brdf3d's options; [output.size] takes N or [X, Y, Z]
-  bool inDefaultSet = false; // `brdfbake` with no --table bakes it
-  bool albedo = false;       // a hemispherical albedo or its average: what a Fresnel model or a measured material enters by default
-  bool average = false;      // an average over mu of another kind (albedo-avg, dielectric-avg)
-  unsigned sceneUses = 0;    // SceneUse bits
+  int defaultSize = 32;  // --size's default
+  int sizeAxes = 1;      // 3: --size takes NX,NY,NZ (brdf3d, dielectric)
+  bool volume = false;   // a 3D texture written slab by slab, with brdf3d's options; [output.size] takes N or [X, Y, Z]
+  bool inDefaultSet = false;  // `brdfbake` with no --table bakes it
+  bool albedo =
+      false;  // a hemispherical albedo or its average: what a Fresnel model or a measured material enters by default
+  bool average = false;    // an average over mu of another kind (albedo-avg, dielectric-avg)
+  unsigned sceneUses = 0;  // SceneUse bits
   // the quantity a lossless surface keeps at or below 1, and the channel that holds it ("" when the
   // kind has none): `info` and bakes warn when it exceeds 1
   std::string energy = {}, energyChannel = {};
   ShaderLookup shader = ShaderLookup::Value;
   std::string shaderValue = {};  // ShaderLookup::Value: the accessor's name ("E" -> P_E(tex, mu, r))
-  bool inScenes = false;     // a scene manifest names it ([output.size] keys) and plans it
-  bool furnace = false;      // the furnace render and the report pages' renders read it
-  bool muRAxes = false;      // x = mu, y = r: --mu-axis sqrt spaces its x texels in sqrt(mu)
-  bool layouts = false;      // --layout presets and --axes/--flip/--channels arrange it
+  bool inScenes = false;         // a scene manifest names it ([output.size] keys) and plans it
+  bool furnace = false;          // the furnace render and the report pages' renders read it
+  bool muRAxes = false;          // x = mu, y = r: --mu-axis sqrt spaces its x texels in sqrt(mu)
+  bool layouts = false;          // --layout presets and --axes/--flip/--channels arrange it
 };
 
 }  // namespace brdfbake

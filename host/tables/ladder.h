@@ -12,7 +12,9 @@
 namespace brdfbake::ladder {
 
 inline double rel(double a, double b) { return std::fabs(a - b) / std::max(1.0, std::fabs(b)); }
-inline double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+inline double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 // The best of three runs' wall time (a rung's time on a shared machine).
 template <class F>

@@ -20,7 +20,9 @@ namespace {
 class Measured final : public TableFamily {
  public:
   std::string name() const override { return "measured"; }
-  std::vector<TableKind> kinds() const override { return {TableKind::Albedo, TableKind::AlbedoAvg, TableKind::SplitSum}; }
+  std::vector<TableKind> kinds() const override {
+    return {TableKind::Albedo, TableKind::AlbedoAvg, TableKind::SplitSum};
+  }
 
   bool takes(const BakeRequest& req) const override { return !req.merl.empty(); }
 
@@ -67,8 +69,11 @@ class Measured final : public TableFamily {
       const std::string what = "merl:" + merlMaterialName(job.merl) + " " + tableName(job.kind);
       ProgressFn progress;
       if (obs)
-        progress = [obs, what](double done, double total, double seconds) { obs->progress(what, "texels", done, total, seconds); };
-      t.image = merlTable(data(ctx, job.merl), merlMaterialName(job.merl), job.kind, job.width, job.nodeGrid, job.half, progress);
+        progress = [obs, what](double done, double total, double seconds) {
+          obs->progress(what, "texels", done, total, seconds);
+        };
+      t.image = merlTable(data(ctx, job.merl), merlMaterialName(job.merl), job.kind, job.width, job.nodeGrid, job.half,
+                          progress);
       ctx.cache[key] = std::make_shared<const ComputedTable>(t.image);
     }
     t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -97,10 +102,11 @@ class Measured final : public TableFamily {
         std::vector<double> vals(v.begin(), v.end());
         const std::vector<double> e = ladder::changeFrom(prev, vals);
         prev = vals;
-        L.rungs.push_back(ladder::rung("direct rule (host, double)", std::to_string(nodes) + " nodes per piece", secs, vals, e, ref));
+        L.rungs.push_back(
+            ladder::rung("direct rule (host, double)", std::to_string(nodes) + " nodes per piece", secs, vals, e, ref));
       }
-      L.note = "The reference: the same coordinates' rule at 10 nodes per bin and piece, above the ladder (" + fmt3(refSeconds) +
-               " s)\n";
+      L.note = "The reference: the same coordinates' rule at 10 nodes per bin and piece, above the ladder (" +
+               fmt3(refSeconds) + " s)\n";
       return L;
     }
     const int n = ladder::pointsPerAxis(req, 6, 1, 64, "a measured albedo");
@@ -125,8 +131,8 @@ class Measured final : public TableFamily {
       secs = ladder::now() - secs;
       const std::vector<double> e = ladder::changeFrom(prev, v);
       prev = v;
-      L.rungs.push_back(ladder::rung("h-space rule (host, double)", "(" + std::to_string(k) + ", " + std::to_string(k - 1) + ")",
-                                     secs, v, e, ref));
+      L.rungs.push_back(ladder::rung("h-space rule (host, double)",
+                                     "(" + std::to_string(k) + ", " + std::to_string(k - 1) + ")", secs, v, e, ref));
     }
     {
       std::vector<double> v(ref.size()), e(ref.size());
@@ -137,7 +143,8 @@ class Measured final : public TableFamily {
       });
       L.rungs.push_back(ladder::rung("the bake's climb (host, double)", "adaptive", ladder::now() - secs, v, e, ref));
     }
-    L.note = "The reference: the (30, 29) rule, above the ladder (" + fmt3(refSeconds) + " s); a fixed rule's estimate is "
+    L.note = "The reference: the (30, 29) rule, above the ladder (" + fmt3(refSeconds) +
+             " s); a fixed rule's estimate is "
              "its change from the previous rung\n";
     return L;
   }

@@ -1,6 +1,5 @@
 #include "tables/merl_bake.h"
 
-
 namespace brdfbake {
 
 std::string merlMaterialName(const std::string& path) {

@@ -11,10 +11,9 @@
 
 namespace brdf64 {
 const double kPhiGrow = HEMI_PHI_GROW, kPhiGrowOwn = HEMI_PHI_GROW_OWN;  // RC() needs brdf64::real
-const double kGkSharpC = GK_SHARP_C, kFloorSharp = HEMI_ERR_FLOOR_SHARP,
-             kFloorRefined = HEMI_ERR_FLOOR_REFINED;
+const double kGkSharpC = GK_SHARP_C, kFloorSharp = HEMI_ERR_FLOOR_SHARP, kFloorRefined = HEMI_ERR_FLOOR_REFINED;
 const double kAvgLayerAlpha = AVG_LAYER_ALPHA, kAvgLayerBreak = AVG_LAYER_BREAK, kAvgFloor = AVG_ERR_FLOOR;
-}
+}  // namespace brdf64
 namespace brdfbake {
 namespace {
 
@@ -31,12 +30,14 @@ std::string hemisphereMethod() {
          "-interval trapezoid on the full circle or GK15 per smooth arc (graded x" + fmtG(brdf64::kPhiGrow) +
          " towards the horizon from n.i = mu; Smith and Schlick GAFs x" + fmtG(brdf64::kPhiGrowOwn) +
          " from n.i = 2 alpha; none, implicit, neumann and cook-torrance, polynomial in cos phi between their kinks, "
-         "ungraded under Schlick's and F82's weights); texels estimated above " + fmtG(HEMI_BAKE_TARGET) +
-         " redone with each outer panel cut at " + cuts + ", " + std::to_string(2 * HEMI_TRAP_N) +
-         " trapezoid intervals, grading halved" +
+         "ungraded under Schlick's and F82's weights); texels estimated above " +
+         fmtG(HEMI_BAKE_TARGET) + " redone with each outer panel cut at " + cuts + ", " +
+         std::to_string(2 * HEMI_TRAP_N) + " trapezoid intervals, grading halved" +
          " and every arc panel halved; error: per texel, the rules' estimates (GK15: |K15-G7| rescaled as QUADPACK's "
-         "qk15 with C=" + fmtG(brdf64::kGkSharpC) + " on panels split at the GAF's kinks; trapezoid: |T16-T8|^3/|T8-T4|) + a floor of " +
-         fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorRefined) + " at the refined budget) of the value + float arithmetic (K1 min(1,|value|) + K0) u (u = 2^-24; " +
+         "qk15 with C=" +
+         fmtG(brdf64::kGkSharpC) + " on panels split at the GAF's kinks; trapezoid: |T16-T8|^3/|T8-T4|) + a floor of " +
+         fmtG(brdf64::kFloorSharp) + " (" + fmtG(brdf64::kFloorRefined) +
+         " at the refined budget) of the value + float arithmetic (K1 min(1,|value|) + K0) u (u = 2^-24; " +
          "(K1, K0) = " + model(kHemiFloatGgx) + " ggx, " + model(kHemiFloatBeckmann) + " beckmann, " +
          model(kHemiFloatBlinnPhong) + " blinn-phong, " + model(kHemiFloat) + " gaussian, " + model(kFresnelFloat) +
          " every Fresnel-weighted moment, next to a total-internal-reflection kink plus u mu times F's slope over the "
@@ -73,11 +74,14 @@ std::string methodText(TableKind kind) {
              hemisphereMethod();
     case TableKind::Kp:
       return "k_p = int e^-v p/D_grid dv by GK15 panels on v in [0," + fmtG(brdf64::HEMI_BREAKS[HEMI_NBREAKS - 1]) +
-             "] (breaks " + [] {
+             "] (breaks " +
+             [] {
                std::string b;
                for (int k = 0; k < HEMI_NBREAKS; ++k) b += (k ? "," : "") + fmtG(brdf64::HEMI_BREAKS[k]);
                return b;
-             }() + "); error |K15-G7| + float arithmetic " + fmtG(kKpFloat.k1) + " u min(1,|value|) (u = 2^-24) + storage rounding";
+             }() +
+             "); error |K15-G7| + float arithmetic " + fmtG(kKpFloat.k1) +
+             " u min(1,|value|) (u = 2^-24) + storage rounding";
     default:
       return hemisphereMethod();
   }

@@ -28,7 +28,9 @@ std::vector<KernelNeed> kernelsOf(const TableJob& job) {
   return {{KernelNeed::Hemisphere, job.ndf, job.gaf}};
 }
 
-bool asks(const BakeRequest& req, TableKind k) { return std::find(req.tables.begin(), req.tables.end(), k) != req.tables.end(); }
+bool asks(const BakeRequest& req, TableKind k) {
+  return std::find(req.tables.begin(), req.tables.end(), k) != req.tables.end();
+}
 
 }  // namespace
 
@@ -104,8 +106,9 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
         // sheen has no Fresnel to split (F = 1): the split sum's second factor is the albedo itself
         img.planes = {kt.planes[2], kt.planes[2], kt.planes[2]};
         fresnel = "one";
-        channels = "R=G=B=E (sheen, F = 1: the split sum's second factor is the albedo; Filament's cloth DFG "
-                   "channel dfg.z, the glTF Sample Viewer's charlie LUT .b)";
+        channels =
+            "R=G=B=E (sheen, F = 1: the split sum's second factor is the albedo; Filament's cloth DFG "
+            "channel dfg.z, the glTF Sample Viewer's charlie LUT .b)";
       } else if (job.diffuse >= 0) {
         // the diffuse albedo over (mu, r) in B, as HDRP's pre-integrated FGD table keeps it
         KernelTable d = runner.diffuseAlbedo(job.diffuse, job.width, job.height, 0.0f, 1.0f, job.nodeGrid);
@@ -246,8 +249,10 @@ class Microfacet final : public TableFamily {
       const std::string f = "--fresnel " + fresnelNames()[req.fresnel.model];
       for (TableKind kind : req.tables) {
         if (kind == TableKind::Kp)
-          throw Error(kExitUsage, f + ": --table kp is the NDF's normalisation, which has no Fresnel; bake it without --fresnel");
-        if (kind == TableKind::SplitSum && req.fresnel.model != FRESNEL_SCHLICK && req.fresnel.model != FRESNEL_F82_TINT)
+          throw Error(kExitUsage,
+                      f + ": --table kp is the NDF's normalisation, which has no Fresnel; bake it without --fresnel");
+        if (kind == TableKind::SplitSum && req.fresnel.model != FRESNEL_SCHLICK &&
+            req.fresnel.model != FRESNEL_F82_TINT)
           throw Error(kExitUsage, f + ": --table splitsum is Schlick's split (F0 A + B); it takes --fresnel schlick or "
                                       "f82-tint (a third channel); bake --table albedo for this model");
       }
@@ -256,7 +261,8 @@ class Microfacet final : public TableFamily {
       const std::string d = "--diffuse " + diffuseNames()[req.diffuse];
       for (TableKind kind : req.tables) {
         if (kind == TableKind::AlbedoAvg || kind == TableKind::Kp)
-          throw Error(kExitUsage, d + ": --table " + tableName(kind) + " has no diffuse form; a diffuse model bakes "
+          throw Error(kExitUsage, d + ": --table " + tableName(kind) +
+                                      " has no diffuse form; a diffuse model bakes "
                                       "--table albedo (its albedo) or splitsum (burley in channel B)");
         if (kind == TableKind::SplitSum && req.diffuse != DIFFUSE_BURLEY)
           throw Error(kExitUsage, d + ": --table splitsum takes --diffuse burley only (its parameter is the table's "
@@ -276,7 +282,7 @@ class Microfacet final : public TableFamily {
     for (int ndf : req.ndfs) {
       for (TableKind kind : req.tables) {
         if (req.diffuse >= 0 && kind == TableKind::Albedo) continue;  // baked once above
-        if (!mine(kind)) continue;  // another family's
+        if (!mine(kind)) continue;                                    // another family's
         int n = req.size ? *req.size : defaultSize(kind);
         if (req.nodeGrid && n < 2) throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
         bool twoD = kind == TableKind::SplitSum || kind == TableKind::Albedo;
@@ -284,13 +290,16 @@ class Microfacet final : public TableFamily {
         std::vector<int> gafs = kind == TableKind::Kp ? std::vector<int>{gafNone} : req.gafs;
         for (int gaf : gafs) {
           if (twoD && req.nodeGrid && gaf == gafNone)
-            throw Error(kExitUsage, "--grid node: gaf 'none' (G = 1) has infinite albedo at mu = 0, the grid's first "
-                                    "column; use --grid texel-center for " + tableName(kind));
+            throw Error(kExitUsage,
+                        "--grid node: gaf 'none' (G = 1) has infinite albedo at mu = 0, the grid's first "
+                        "column; use --grid texel-center for " +
+                            tableName(kind));
           if (twoD && req.nodeGrid && isSheenGaf(gaf))
-            throw Error(kExitUsage, "--grid node: charlie + " + gafNames()[gaf] + " has infinite albedo at mu = 0 (" +
-                                        (gaf == GAF_NEUBELT ? "at the corner r = 0: E(0, r) grows like 1/(r sqrt(2 pi))"
-                                                            : "its fitted Lambda is finite at grazing, so G/(n.o) is not") +
-                                        "), the grid's first column; use --grid texel-center for " + tableName(kind));
+            throw Error(kExitUsage,
+                        "--grid node: charlie + " + gafNames()[gaf] + " has infinite albedo at mu = 0 (" +
+                            (gaf == GAF_NEUBELT ? "at the corner r = 0: E(0, r) grows like 1/(r sqrt(2 pi))"
+                                                : "its fitted Lambda is finite at grazing, so G/(n.o) is not") +
+                            "), the grid's first column; use --grid texel-center for " + tableName(kind));
           TableJob job = tableJob(kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, req.half);
           job.fresnel = req.fresnel;
           job.diffuse = kind == TableKind::SplitSum ? req.diffuse : -1;
@@ -332,9 +341,12 @@ class Microfacet final : public TableFamily {
     s.models = m;
     // Estimated seconds (PoCL, 2 cores; measured on ggx and beckmann tables of 64^2)
     double perTexel = j.ndf == NDF_GGX ? 4e-6 : 1.5e-5;
-    if (j.kind == TableKind::AlbedoAvg) s.cost = s.texels * 31 * perTexel * 0.5;
-    else if (j.kind == TableKind::Kp) s.cost = s.texels * 1e-6;
-    else s.cost = s.texels * perTexel * (j.fresnel.channels() == 3 ? 3 : 1);
+    if (j.kind == TableKind::AlbedoAvg)
+      s.cost = s.texels * 31 * perTexel * 0.5;
+    else if (j.kind == TableKind::Kp)
+      s.cost = s.texels * 1e-6;
+    else
+      s.cost = s.texels * perTexel * (j.fresnel.channels() == 3 ? 3 : 1);
     return s;
   }
 
@@ -362,9 +374,10 @@ class Microfacet final : public TableFamily {
     for (const auto& [kind, ndf, gaf] : tables) {
       int n = req.size ? *req.size : defaultSize(kind);
       if (req.nodeGrid)
-        throw Error(kExitUsage, "--preset gltf --grid node: the sheen tables are infinite at mu = 0 (charlie-smith's "
-                                "Lambda is finite at grazing; neubelt's corner mu = r = 0), the node grid's first column; "
-                                "the preset bakes texel centres, which texture(lut, vec2(NdotV, roughness)) samples");
+        throw Error(kExitUsage,
+                    "--preset gltf --grid node: the sheen tables are infinite at mu = 0 (charlie-smith's "
+                    "Lambda is finite at grazing; neubelt's corner mu = r = 0), the node grid's first column; "
+                    "the preset bakes texel centres, which texture(lut, vec2(NdotV, roughness)) samples");
       TableJob job = tableJob(kind, ndf, gaf, n, n, false, req.half);
       jobs.push_back(add(req, job));
     }

@@ -80,14 +80,16 @@ Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
   const FresnelChoice& fc = req.fresnel;
   const bool split = kind == TableKind::SplitSum;
   if (split && !fc.isOne() && fc.model != FRESNEL_SCHLICK)
-    throw Error(kExitUsage, "--fresnel: convergence of splitsum measures Schlick's split (A, B); give --table albedo "
-                            "for the albedo with " + fresnelNames()[fc.model]);
+    throw Error(kExitUsage,
+                "--fresnel: convergence of splitsum measures Schlick's split (A, B); give --table albedo "
+                "for the albedo with " +
+                    fresnelNames()[fc.model]);
   const Weights w = weightsOf(split ? FresnelChoice{} : fc);
   const bool weighted = w.hw.moments == HEMI_FRESNEL;
   Ladder L;
   L.table = tableName(kind) + " of " + ndfNames()[ndf] + "+" + gafNames()[gaf] +
-            (split ? " (A and B)" : ", fresnel " + fc.describe()) + ", " + std::to_string(n) + "x" +
-            std::to_string(n) + " texel centres";
+            (split ? " (A and B)" : ", fresnel " + fc.describe()) + ", " + std::to_string(n) + "x" + std::to_string(n) +
+            " texel centres";
   // the values measured per texel: A and B, or E (E_F)
   const size_t nv = split ? 2 : 1, texels = static_cast<size_t>(n) * n;
   auto pick = [&](double a, double b) -> std::array<double, 2> {
@@ -98,7 +100,8 @@ Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
   std::vector<double> ref(texels * nv);
   double t0 = now();
   ladder::onTwoThreads(texels, [&](size_t k) {
-    reference::Moments m = reference::albedo(ndf, gaf, centre(static_cast<int>(k / n), n), centre(static_cast<int>(k % n), n), w.rw);
+    reference::Moments m =
+        reference::albedo(ndf, gaf, centre(static_cast<int>(k / n), n), centre(static_cast<int>(k % n), n), w.rw);
     auto v = pick(m.a, m.b);
     for (size_t c = 0; c < nv; ++c) ref[k * nv + c] = v[c];
   });
@@ -135,7 +138,8 @@ Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
       for (size_t c = 0; c < nv; ++c) v[k * nv + c] = x[c];
       e[k] = brdf64::hemi_rel_error(h);
     });
-    L.rungs.push_back(ladder::rung("quadrature (host, double)", "level " + std::to_string(level), now() - s0, v, e, ref));
+    L.rungs.push_back(
+        ladder::rung("quadrature (host, double)", "level " + std::to_string(level), now() - s0, v, e, ref));
   }
   for (int ns : req.samples) {
     std::fprintf(stderr, "convergence: Monte Carlo %d samples\n", ns);
@@ -151,14 +155,17 @@ Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
         e[k] = std::max(e[k], 3 * s[c] / std::max(1.0, std::fabs(x[c])));
       }
     });
-    L.rungs.push_back(ladder::rung("Monte Carlo (Hammersley, float)", std::to_string(ns) + " samples", now() - s0, v, e, ref));
+    L.rungs.push_back(
+        ladder::rung("Monte Carlo (Hammersley, float)", std::to_string(ns) + " samples", now() - s0, v, e, ref));
   }
   double agree = 0;
   for (const Rung& r : L.rungs)
     if (r.method == "quadrature (host, double)") agree = r.error;
-  L.note = "The reference (adaptive Gauss-Kronrod in double in the plain angles, host/reference) took " + fmt3(refSeconds) +
-           " s for " + std::to_string(texels) + " texels; the finest double quadrature, another method, agrees with it "
-           "to " + fmt3(agree) + "\n";
+  L.note = "The reference (adaptive Gauss-Kronrod in double in the plain angles, host/reference) took " +
+           fmt3(refSeconds) + " s for " + std::to_string(texels) +
+           " texels; the finest double quadrature, another method, agrees with it "
+           "to " +
+           fmt3(agree) + "\n";
   return L;
 }
 
@@ -176,7 +183,8 @@ Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
   std::fprintf(stderr, "convergence: reference at %d roughnesses\n", n);
   std::vector<double> ref(n);
   double t0 = now();
-  ladder::onTwoThreads(ref.size(), [&](size_t j) { ref[j] = reference::albedoAvg(ndf, gaf, centre(static_cast<int>(j), n), w.rw); });
+  ladder::onTwoThreads(
+      ref.size(), [&](size_t j) { ref[j] = reference::albedoAvg(ndf, gaf, centre(static_cast<int>(j), n), w.rw); });
   const double refSeconds = now() - t0;
   KernelRunner& kr = ctx.runner();
   kr.prepare(KernelNeed{KernelNeed::Hemisphere, ndf, gaf});
@@ -189,8 +197,8 @@ Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
       v[j] = t.planes[0][j];
       e[j] = t.err[j] + avgFloatArithmeticError(std::fabs(v[j]), ndf, gaf, weighted);
     }
-    L.rungs.push_back(ladder::rung("the bake's rule (device E, double sums)", "goal " + fmt3(KernelRunner::kAvgGoal), secs, v,
-                                   e, ref));
+    L.rungs.push_back(ladder::rung("the bake's rule (device E, double sums)", "goal " + fmt3(KernelRunner::kAvgGoal),
+                                   secs, v, e, ref));
   }
   std::vector<double> prev;
   for (int level : req.levels) {
@@ -200,7 +208,8 @@ Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
     std::vector<cl_float4> nodes;
     for (int j = 0; j < n; ++j)
       for (const ladder::Node& x : gl)
-        nodes.push_back(cl_float4{{static_cast<float>(x.x), static_cast<float>(centre(j, n)), static_cast<float>(HEMI_BAKE_TARGET), 0}});
+        nodes.push_back(cl_float4{
+            {static_cast<float>(x.x), static_cast<float>(centre(j, n)), static_cast<float>(HEMI_BAKE_TARGET), 0}});
     std::vector<std::vector<float>> out;
     double secs = best3([&] { out = kr.hemisphereNodes(ndf, gaf, nodes, w.hw); });
     std::vector<double> v(n), e(n);
@@ -215,11 +224,15 @@ Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
       e[j] = bound + (prev.empty() ? 0 : std::fabs(v[j] - prev[j]));
     }
     prev = v;
-    L.rungs.push_back(ladder::rung("Gauss-Legendre in mu (device E)", std::to_string(panels) + " x 8 nodes", secs, v, e, ref));
+    L.rungs.push_back(
+        ladder::rung("Gauss-Legendre in mu (device E)", std::to_string(panels) + " x 8 nodes", secs, v, e, ref));
   }
-  L.note = "The reference (E_avg = 2 int E mu dmu by adaptive Gauss-Kronrod in double over the reference's E, "
-           "host/reference) took " + fmt3(refSeconds) + " s for " + std::to_string(n) + " roughnesses; a Gauss-Legendre "
-           "rung's estimate is its nodes' bounds plus its change from the previous rung\n";
+  L.note =
+      "The reference (E_avg = 2 int E mu dmu by adaptive Gauss-Kronrod in double over the reference's E, "
+      "host/reference) took " +
+      fmt3(refSeconds) + " s for " + std::to_string(n) +
+      " roughnesses; a Gauss-Legendre "
+      "rung's estimate is its nodes' bounds plus its change from the previous rung\n";
   return L;
 }
 
@@ -265,12 +278,15 @@ Ladder kpLadder(BakeContext& ctx, const BakeRequest& req, int ndf) {
     });
     const std::vector<double> e = ladder::changeFrom(prev, v);
     prev = v;
-    L.rungs.push_back(ladder::rung("Gauss-Legendre in theta (host, double)", std::to_string(panels) + " x 8 nodes", secs, v,
-                                   e, ref));
+    L.rungs.push_back(
+        ladder::rung("Gauss-Legendre in theta (host, double)", std::to_string(panels) + " x 8 nodes", secs, v, e, ref));
   }
-  L.note = "The reference (k_p = 2 pi int p(theta) cos sin dtheta by adaptive Gauss-Kronrod in double, panels graded on "
-           "the lobe, host/reference) took " + fmt3(refSeconds) + " s; a Gauss-Legendre rung's estimate is its change from "
-           "the previous rung\n";
+  L.note =
+      "The reference (k_p = 2 pi int p(theta) cos sin dtheta by adaptive Gauss-Kronrod in double, panels graded on "
+      "the lobe, host/reference) took " +
+      fmt3(refSeconds) +
+      " s; a Gauss-Legendre rung's estimate is its change from "
+      "the previous rung\n";
   return L;
 }
 
@@ -280,8 +296,10 @@ Ladder microfacetLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
   if (req.ndfs.size() != 1 || req.gafs.size() != 1)
     throw Error(kExitUsage, "convergence measures one pair: give one --ndf and one --gaf");
   if (req.diffuse >= 0)
-    throw Error(kExitUsage, "--diffuse: convergence measures the specular estimators (the diffuse albedo has one budget)");
-  if (req.fresnel.channels() != 1) throw Error(kExitUsage, "convergence takes one value per Fresnel parameter, not R,G,B");
+    throw Error(kExitUsage,
+                "--diffuse: convergence measures the specular estimators (the diffuse albedo has one budget)");
+  if (req.fresnel.channels() != 1)
+    throw Error(kExitUsage, "convergence takes one value per Fresnel parameter, not R,G,B");
   const int ndf = req.ndfs[0], gaf = req.gafs[0];
   if (kind == TableKind::Kp) {
     if (req.fresnelGiven) throw Error(kExitUsage, "--fresnel: --table kp has no Fresnel");

@@ -39,8 +39,9 @@ const TableFamily& familyFor(const BakeRequest& req, TableKind kind) {
     std::vector<TableKind> k = f->kinds();
     if (f->takes(req) && std::find(k.begin(), k.end(), kind) != k.end()) return *f;
   }
-  throw Error(kExitUsage, "--table " + tableName(kind) + ": no table family bakes it for this request" +
-                              (req.merl.empty() ? "" : " (a measured material bakes " + kindNames(kindsFor(req)) + ")"));
+  throw Error(kExitUsage,
+              "--table " + tableName(kind) + ": no table family bakes it for this request" +
+                  (req.merl.empty() ? "" : " (a measured material bakes " + kindNames(kindsFor(req)) + ")"));
 }
 
 std::vector<TableKind> kindsFor(const BakeRequest& req) {

@@ -26,13 +26,27 @@ void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int nd
     for (const auto& p : t.planes) scale = std::max(scale, std::fabs(static_cast<double>(p[x])));
     double arith = 0;
     switch (a) {
-      case Arith::Hemisphere: arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf)); break;
-      case Arith::HemiWeighted: arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf, true)); break;
-      case Arith::HemiAvg: arith = avgFloatArithmeticError(scale, ndf, gaf); break;
-      case Arith::HemiAvgFresnel: arith = avgFloatArithmeticError(scale, ndf, gaf, true); break;
-      case Arith::Kp: arith = floatArithmeticError(scale, kKpFloat); break;
-      case Arith::HostDouble: arith = floatArithmeticError(scale, kRoundToFloat); break;
-      case Arith::Diffuse: arith = floatArithmeticError(scale, diffuseFloatModel(diffuse)); break;
+      case Arith::Hemisphere:
+        arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf));
+        break;
+      case Arith::HemiWeighted:
+        arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf, true));
+        break;
+      case Arith::HemiAvg:
+        arith = avgFloatArithmeticError(scale, ndf, gaf);
+        break;
+      case Arith::HemiAvgFresnel:
+        arith = avgFloatArithmeticError(scale, ndf, gaf, true);
+        break;
+      case Arith::Kp:
+        arith = floatArithmeticError(scale, kKpFloat);
+        break;
+      case Arith::HostDouble:
+        arith = floatArithmeticError(scale, kRoundToFloat);
+        break;
+      case Arith::Diffuse:
+        arith = floatArithmeticError(scale, diffuseFloatModel(diffuse));
+        break;
     }
     if (extra) arith += (*extra)[x];
     claim[x] = std::max(claim[x], static_cast<double>(t.err[x]) + arith);
@@ -63,7 +77,8 @@ TableImage finishTable2d(KernelRunner* runner, const TableJob& job, Table2d t, s
   // table; 0 in float32, which holds the kernels' floats exactly, and whose rounding to float every
   // claim above already holds); the file's brdf.error is the largest
   double storage = 0;
-  for (auto& p : img.planes) storage = std::max(storage, storageError(p, job.half ? Precision::Float16 : Precision::Float32));
+  for (auto& p : img.planes)
+    storage = std::max(storage, storageError(p, job.half ? Precision::Float16 : Precision::Float32));
   double bound = 0;
   for (double& c : claim) {
     c += storage;

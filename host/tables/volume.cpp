@@ -68,28 +68,31 @@ TableImage volumeHeader(const VolumeJob& job) {
   str["brdf.axes"] = ax[0].name + "," + ax[1].name + "," + ax[2].name;
   for (const auto& a : ax) img.v2f["brdf." + a.name + ".range"] = {static_cast<float>(a.lo), static_cast<float>(a.hi)};
   if (s.param == Brdf3dParam::Rusinkiewicz)
-    str["brdf.theta_h.index"] = s.thetaHSqrt ? "sqrt (x = sqrt(theta_h/(pi/2)), MERL's)" : "linear (x = theta_h/(pi/2))";
+    str["brdf.theta_h.index"] =
+        s.thetaHSqrt ? "sqrt (x = sqrt(theta_h/(pi/2)), MERL's)" : "linear (x = theta_h/(pi/2))";
   str["brdf.grid"] = gridName(s.grid);
   str["brdf.size"] = std::to_string(s.nx) + "x" + std::to_string(s.ny) + "x" + std::to_string(s.nz);
   str["brdf.atlas"] = std::to_string(job.cols) + "x" + std::to_string(job.rows);
   img.floats["brdf.depth"] = static_cast<float>(s.nz);
   str["brdf.atlas.order"] = "slice z (third axis) at column z % " + std::to_string(job.cols) + ", row z / " +
-                            std::to_string(job.cols) + " (left to right, then top to bottom); texel (x, y) of a slice at "
-                            "pixel (column * " + std::to_string(s.nx) + " + x, row * " + std::to_string(s.ny) +
-                            " + y); unused slots hold 0";
+                            std::to_string(job.cols) +
+                            " (left to right, then top to bottom); texel (x, y) of a slice at "
+                            "pixel (column * " +
+                            std::to_string(s.nx) + " + x, row * " + std::to_string(s.ny) + " + y); unused slots hold 0";
   str["brdf.value"] = s.timesCos ? "f cos(theta_i)" : "f";
-  str["brdf.channels"] = s.channels() == 3 ? "R,G,B = " + str["brdf.value"] + " per colour channel"
-                                           : "R=G=B=" + str["brdf.value"];
+  str["brdf.channels"] =
+      s.channels() == 3 ? "R,G,B = " + str["brdf.value"] + " per colour channel" : "R=G=B=" + str["brdf.value"];
   str["brdf.grazing"] =
       "n.i and n.o floored at 1e-6 (a sample at theta = 90 deg is f at cos = 1e-6): the limit from inside for GAFs "
       "whose f stays bounded at grazing (smith family, schlick-*, implicit, kelemen, cook-torrance), large but finite "
       "where it grows as 1/cos (none; neumann and ashikhmin-premoze with both directions grazing); f = 0 below the "
       "horizon";
-  str["brdf.method"] = "f(i, o) = F D G/(4 (n.i)(n.o)) + rho f_d, evaluated in float at each grid point from directions "
-                       "formed in double (cospi/sinpi of exact grid fractions); brdf.error: float evaluation + storage "
-                       "rounding; brdf.interp-error: trilinear lookup against f at 4096 Halton points, relative to "
-                       "max(1, |f|), max and rms, over the table and over its interior (both directions within 80 "
-                       "deg of the normal)";
+  str["brdf.method"] =
+      "f(i, o) = F D G/(4 (n.i)(n.o)) + rho f_d, evaluated in float at each grid point from directions "
+      "formed in double (cospi/sinpi of exact grid fractions); brdf.error: float evaluation + storage "
+      "rounding; brdf.interp-error: trilinear lookup against f at 4096 Halton points, relative to "
+      "max(1, |f|), max and rms, over the table and over its interior (both directions within 80 "
+      "deg of the normal)";
   str["brdf.generator"] = std::string("brdfbake ") + BRDFBAKE_VERSION + " (git " + BRDFBAKE_GIT_REV + ")";
   InterpError ie = interpolationError(s);
   img.floats["brdf.interp-error"] = static_cast<float>(ie.max);
@@ -126,8 +129,9 @@ void checkVolumeSpace(const std::string& dir, const std::vector<VolumeJob>& volu
   const uint64_t free = freeBytesAt(dir, &cur);  // UINT64_MAX when unknown: checkOutputDir reports what is wrong
   if (need > free) {
     char msg[512];
-    std::snprintf(msg, sizeof msg, "not enough space for the brdf3d table(s) in %s: they may need up to %.1f MB, %.1f MB free "
-                                   "on %s; choose a smaller --size, --half, or another -o",
+    std::snprintf(msg, sizeof msg,
+                  "not enough space for the brdf3d table(s) in %s: they may need up to %.1f MB, %.1f MB free "
+                  "on %s; choose a smaller --size, --half, or another -o",
                   dir.c_str(), need / 1e6, free / 1e6, cur.c_str());
     throw Error(kExitIoErr, msg);  // short of space: 74, as for the 2D tables (formats/output_set.cpp)
   }
@@ -157,7 +161,8 @@ void writeAtlasTemporary(const std::string& tmp, const std::string& path, const 
     for (const auto& p : out)
       for (float v : p)
         if (!std::isfinite(v))
-          throw Error(kExitSoftware, "internal error: " + what + " has a value that is not finite; nothing was written");
+          throw Error(kExitSoftware,
+                      "internal error: " + what + " has a value that is not finite; nothing was written");
   });
 }
 
@@ -216,8 +221,10 @@ Brdf3dSpec specFromHeader(const std::string& path, const TableImage& img, int* c
   for (const char* p : {"f0", "eta", "k", "f82"}) {
     auto it = img.strings.find(std::string("brdf.fresnel.") + p);
     if (it == img.strings.end()) continue;
-    std::vector<double>& slot = std::string(p) == "f0" ? s.fresnel.f0 : std::string(p) == "eta" ? s.fresnel.eta
-                                : std::string(p) == "k" ? s.fresnel.k : s.fresnel.f82;
+    std::vector<double>& slot = std::string(p) == "f0"    ? s.fresnel.f0
+                                : std::string(p) == "eta" ? s.fresnel.eta
+                                : std::string(p) == "k"   ? s.fresnel.k
+                                                          : s.fresnel.f82;
     slot = parseValues(path + ": brdf.fresnel." + p, it->second);
   }
   validateFresnel(s.fresnel);
@@ -233,8 +240,8 @@ Brdf3dSpec specFromHeader(const std::string& path, const TableImage& img, int* c
   s.grid = g == "node" ? Brdf3dGrid::Node : g == "cell-start" ? Brdf3dGrid::CellStart : Brdf3dGrid::TexelCenter;
   s.timesCos = need(path, img, "brdf.value") != "f";
   if (std::sscanf(need(path, img, "brdf.size").c_str(), "%dx%dx%d", &s.nx, &s.ny, &s.nz) != 3 ||
-      std::sscanf(need(path, img, "brdf.atlas").c_str(), "%dx%d", cols, rows) != 2 || s.nx < 1 || s.ny < 1 || s.nz < 1 ||
-      *cols < 1 || *rows < 1 || static_cast<long>(*cols) * *rows < s.nz || img.width != s.nx * *cols ||
+      std::sscanf(need(path, img, "brdf.atlas").c_str(), "%dx%d", cols, rows) != 2 || s.nx < 1 || s.ny < 1 ||
+      s.nz < 1 || *cols < 1 || *rows < 1 || static_cast<long>(*cols) * *rows < s.nz || img.width != s.nx * *cols ||
       img.height != s.ny * *rows)
     throw Error(kExitDataErr, path + ": brdf.size / brdf.atlas do not match the image's " + std::to_string(img.width) +
                                   "x" + std::to_string(img.height) + " texels");
@@ -261,30 +268,34 @@ std::string sampleReport(const std::string& path, const std::array<double, 3>& a
   std::vector<std::vector<float>> planes = volumeFromAtlas(img, s, cols);
   glm::dvec3 rad(at[0] / kRadToDeg, at[1] / kRadToDeg, at[2] / kRadToDeg);
   glm::dvec3 idx(texelIndex(s, 0, rad.x), texelIndex(s, 1, rad.y), texelIndex(s, 2, rad.z));
-  Directions d = s.param == Brdf3dParam::Angles ? fromAngles(rad.x, rad.y, rad.z) : fromRusinkiewicz(rad.x, rad.y, rad.z);
+  Directions d =
+      s.param == Brdf3dParam::Angles ? fromAngles(rad.x, rad.y, rad.z) : fromRusinkiewicz(rad.x, rad.y, rad.z);
   auto ax = s.axes();
   char line[512];
-  std::string out = path + ": " + need(path, img, "brdf.ndf") + " + " + need(path, img, "brdf.gaf") + ", r = " +
-                    fmtG(s.roughness) + ", " + need(path, img, "brdf.param") + " " + need(path, img, "brdf.size") + ", " +
-                    need(path, img, "brdf.grid") + " grid, value " + need(path, img, "brdf.value") + "\n";
-  std::snprintf(line, sizeof line, "at %s = %g, %s = %g, %s = %g deg (texel index %.4f, %.4f, %.4f)\n", ax[0].name.c_str(),
-                at[0], ax[1].name.c_str(), at[1], ax[2].name.c_str(), at[2], idx.x, idx.y, idx.z);
+  std::string out = path + ": " + need(path, img, "brdf.ndf") + " + " + need(path, img, "brdf.gaf") +
+                    ", r = " + fmtG(s.roughness) + ", " + need(path, img, "brdf.param") + " " +
+                    need(path, img, "brdf.size") + ", " + need(path, img, "brdf.grid") + " grid, value " +
+                    need(path, img, "brdf.value") + "\n";
+  std::snprintf(line, sizeof line, "at %s = %g, %s = %g, %s = %g deg (texel index %.4f, %.4f, %.4f)\n",
+                ax[0].name.c_str(), at[0], ax[1].name.c_str(), at[1], ax[2].name.c_str(), at[2], idx.x, idx.y, idx.z);
   out += line;
-  std::snprintf(line, sizeof line, "%-8s %16s %16s %12s %12s\n", "channel", "trilinear", "exact", "abs error", "rel error");
+  std::snprintf(line, sizeof line, "%-8s %16s %16s %12s %12s\n", "channel", "trilinear", "exact", "abs error",
+                "rel error");
   out += line;
   const char* names[3] = {"R", "G", "B"};
   int nchan = s.channels();
   for (int c = 0; c < (nchan == 3 ? 3 : 1); ++c) {
     double lookup = trilinear(s, planes[c], idx), exact = hostBrdf(s, d, c);
     double abs = std::fabs(lookup - exact);
-    std::snprintf(line, sizeof line, "%-8s %16.9g %16.9g %12.3e %12.3e\n", nchan == 3 ? names[c] : "R=G=B", lookup, exact,
-                  abs, abs / std::max(std::fabs(exact), 1e-300));
+    std::snprintf(line, sizeof line, "%-8s %16.9g %16.9g %12.3e %12.3e\n", nchan == 3 ? names[c] : "R=G=B", lookup,
+                  exact, abs, abs / std::max(std::fabs(exact), 1e-300));
     out += line;
   }
   auto ie = img.floats.find("brdf.interp-error");
   if (ie != img.floats.end())
-    out += "the file's interpolation-error estimate, relative to max(1, |f|) over 4096 points: max " + fmtG(ie->second) +
-           " (brdf.interp-error), " + fmtG(img.floats.count("brdf.interp-error.interior") ? img.floats.at("brdf.interp-error.interior") : 0.0f) +
+    out += "the file's interpolation-error estimate, relative to max(1, |f|) over 4096 points: max " +
+           fmtG(ie->second) + " (brdf.interp-error), " +
+           fmtG(img.floats.count("brdf.interp-error.interior") ? img.floats.at("brdf.interp-error.interior") : 0.0f) +
            " with both directions within 80 deg of the normal (brdf.interp-error.interior)\n";
   return out;
 }
@@ -318,8 +329,9 @@ std::vector<PlannedFile> volumeFormatOutputs(KernelRunner& runner, const VolumeJ
   for (FileFormat f : job.formats) {
     if (f == FileFormat::Exr) continue;  // the atlas, volumeOutput
     if (f == FileFormat::Png16)
-      throw Error(kExitUsage, "--format png16: a 3D table has no PNG form (PNG is 2D); use ktx2 or dds (3D "
-                              "textures), exr (an atlas) or header");
+      throw Error(kExitUsage,
+                  "--format png16: a 3D table has no PNG form (PNG is 2D); use ktx2 or dds (3D "
+                  "textures), exr (an atlas) or header");
     const Precision p = job.precision;
     TableImage meta = formatMetadata(base, f, p, computeError, storageErrorBound(p), 3);
     meta.strings["brdf.error.storage"] = fmtG(storageErrorBound(p), 3) + " (" + precisionName(p) +

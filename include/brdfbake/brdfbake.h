@@ -27,13 +27,13 @@ struct TablePlanRecord;  // defined inside the library (host/api/library.cpp)
 
 // One baked table in memory.
 struct Table {
-  std::string path;   // where write() puts it (under the request's outDir), e.g. out/splitsum_ggx_smith-correlated.exr
-  std::string kind;   // --table name: "splitsum", "albedo", ...
+  std::string path;  // where write() puts it (under the request's outDir), e.g. out/splitsum_ggx_smith-correlated.exr
+  std::string kind;  // --table name: "splitsum", "albedo", ...
   int width = 0, height = 0, depth = 1;
-  std::vector<std::string> channels;       // "R", "G", "B" (what each plane holds: metadata["brdf.channels"])
-  std::vector<std::vector<float>> planes;  // one per channel, [(z * height + y) * width + x]
-  std::vector<double> texelBounds;         // 2D tables: each texel's claimed error (relative to max(1, |v|))
-  double errorBound = 0;                   // the largest claim (brdf.error)
+  std::vector<std::string> channels;            // "R", "G", "B" (what each plane holds: metadata["brdf.channels"])
+  std::vector<std::vector<float>> planes;       // one per channel, [(z * height + y) * width + x]
+  std::vector<double> texelBounds;              // 2D tables: each texel's claimed error (relative to max(1, |v|))
+  double errorBound = 0;                        // the largest claim (brdf.error)
   std::map<std::string, std::string> metadata;  // every attribute, numbers as text (brdf.ndf, brdf.axes, ...)
 
   float at(int x, int y, int channel, int z = 0) const {

@@ -19,47 +19,47 @@
 namespace brdfbake {
 
 struct BakeRequest {
-  std::vector<int> ndfs;             // NDF_* ids; their product with gafs is baked
-  std::vector<int> gafs;             // GAF_* ids
+  std::vector<int> ndfs;  // NDF_* ids; their product with gafs is baked
+  std::vector<int> gafs;  // GAF_* ids
   std::vector<TableKind> tables;
-  std::optional<int> size;           // texels per axis; default per table (defaultSize)
+  std::optional<int> size;  // texels per axis; default per table (defaultSize)
   std::string outDir = "out";
-  bool half = false;                 // HALF instead of FLOAT channels (precision float16)
-  std::optional<Precision> precision;  // --precision (--half: float16); unset: float32
-  std::vector<FileFormat> formats;   // --format (merl apart: volume.merl); empty: exr
-  TableLayout layout;                // --layout preset / --axes, --flip-x, --flip-y, --channels
+  bool half = false;                        // HALF instead of FLOAT channels (precision float16)
+  std::optional<Precision> precision;       // --precision (--half: float16); unset: float32
+  std::vector<FileFormat> formats;          // --format (merl apart: volume.merl); empty: exr
+  TableLayout layout;                       // --layout preset / --axes, --flip-x, --flip-y, --channels
   std::optional<std::string> layoutPreset;  // --layout NAME: its format, precision and size unless given
-  bool nodeGrid = false;             // samples at i/(n-1) instead of texel centres (i+0.5)/n
+  bool nodeGrid = false;                    // samples at i/(n-1) instead of texel centres (i+0.5)/n
   // --mu-axis sqrt: splitsum and albedo space their x texels in u = sqrt(mu) (texel i holds mu = u_i^2);
   // unset: linear, or the layout preset's (cli/layout_args.h validateMuAxis sets it)
   std::optional<bool> muSqrt;
-  std::string device;                // substring of the device (or platform) name; "" = first CPU
-  std::string cacheDir;              // PoCL kernel cache (POCL_CACHE_DIR); "" = PoCL's default
-  bool noWait = false;               // another bake writing into outDir: Error(kExitTempFail) instead of waiting
+  std::string device;                      // substring of the device (or platform) name; "" = first CPU
+  std::string cacheDir;                    // PoCL kernel cache (POCL_CACHE_DIR); "" = PoCL's default
+  bool noWait = false;                     // another bake writing into outDir: Error(kExitTempFail) instead of waiting
   std::shared_ptr<BakeObserver> observer;  // stages and progress as the bake runs (brdfbake/observer.h); optional
-  FresnelChoice fresnel;             // --fresnel and its parameters (validated)
+  FresnelChoice fresnel;                   // --fresnel and its parameters (validated)
   bool fresnelGiven = false;
-  int diffuse = -1;                  // --diffuse: DIFFUSE_* id, or -1
-  std::string merl;                  // --brdf merl:FILE: a measured material's MERL file, or ""
-  std::string preset;                // --preset gltf: glTF's reference-shading tables (plan/plan.cpp), or ""
-  std::optional<double> sigma;       // energy: --sigma for oren-nayar (else swept)
-  std::string coupling = "sum";      // energy: --coupling sum | albedo-scaling
-  bool transmission = false;         // energy: --transmission (rough glass: E_R + E_T, --fresnel dielectric)
+  int diffuse = -1;              // --diffuse: DIFFUSE_* id, or -1
+  std::string merl;              // --brdf merl:FILE: a measured material's MERL file, or ""
+  std::string preset;            // --preset gltf: glTF's reference-shading tables (plan/plan.cpp), or ""
+  std::optional<double> sigma;   // energy: --sigma for oren-nayar (else swept)
+  std::string coupling = "sum";  // energy: --coupling sum | albedo-scaling
+  bool transmission = false;     // energy: --transmission (rough glass: E_R + E_T, --fresnel dielectric)
   // --table dielectric, dielectric-avg: the eta axis's range (--eta-range LO,HI)
   std::optional<std::pair<double, double>> etaRange;
-  std::vector<int> levels = {0, 1, 2, 3};                           // convergence: quadrature levels
+  std::vector<int> levels = {0, 1, 2, 3};                              // convergence: quadrature levels
   std::vector<int> samples = {16, 64, 256, 1024, 4096, 16384, 65536};  // convergence: MC samples
   // --table brdf3d (the others ignore these; given without it, they are a usage error)
   struct Volume {
-    Brdf3dParam param = Brdf3dParam::Angles;  // --param
-    bool thetaHSqrt = false;                  // --theta-h sqrt
-    bool timesCos = false;                    // --value f-cos
-    double roughness = 0.5;                   // --roughness
-    std::vector<double> rho;                  // --rho (diffuse albedo; default 1)
-    std::optional<std::array<int, 3>> size;   // --size NX,NY,NZ (or N: N each)
-    std::optional<std::pair<int, int>> atlas; // --atlas CxR
-    bool merl = false;                        // --format merl
-    std::vector<std::string> flags;           // brdf3d-only flags given
+    Brdf3dParam param = Brdf3dParam::Angles;   // --param
+    bool thetaHSqrt = false;                   // --theta-h sqrt
+    bool timesCos = false;                     // --value f-cos
+    double roughness = 0.5;                    // --roughness
+    std::vector<double> rho;                   // --rho (diffuse albedo; default 1)
+    std::optional<std::array<int, 3>> size;    // --size NX,NY,NZ (or N: N each)
+    std::optional<std::pair<int, int>> atlas;  // --atlas CxR
+    bool merl = false;                         // --format merl
+    std::vector<std::string> flags;            // brdf3d-only flags given
   } volume;
 };
 

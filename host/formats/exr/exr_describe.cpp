@@ -33,26 +33,41 @@ using exr::Window;
 
 const char* pixelTypeName(Imf::PixelType t) {
   switch (t) {
-    case Imf::UINT: return "UINT";
-    case Imf::HALF: return "HALF";
-    case Imf::FLOAT: return "FLOAT";
-    default: return "UNKNOWN";
+    case Imf::UINT:
+      return "UINT";
+    case Imf::HALF:
+      return "HALF";
+    case Imf::FLOAT:
+      return "FLOAT";
+    default:
+      return "UNKNOWN";
   }
 }
 
 const char* compressionName(Imf::Compression c) {
   switch (c) {
-    case Imf::NO_COMPRESSION: return "NONE";
-    case Imf::RLE_COMPRESSION: return "RLE";
-    case Imf::ZIPS_COMPRESSION: return "ZIPS";
-    case Imf::ZIP_COMPRESSION: return "ZIP";
-    case Imf::PIZ_COMPRESSION: return "PIZ";
-    case Imf::PXR24_COMPRESSION: return "PXR24";
-    case Imf::B44_COMPRESSION: return "B44";
-    case Imf::B44A_COMPRESSION: return "B44A";
-    case Imf::DWAA_COMPRESSION: return "DWAA";
-    case Imf::DWAB_COMPRESSION: return "DWAB";
-    default: return "UNKNOWN";
+    case Imf::NO_COMPRESSION:
+      return "NONE";
+    case Imf::RLE_COMPRESSION:
+      return "RLE";
+    case Imf::ZIPS_COMPRESSION:
+      return "ZIPS";
+    case Imf::ZIP_COMPRESSION:
+      return "ZIP";
+    case Imf::PIZ_COMPRESSION:
+      return "PIZ";
+    case Imf::PXR24_COMPRESSION:
+      return "PXR24";
+    case Imf::B44_COMPRESSION:
+      return "B44";
+    case Imf::B44A_COMPRESSION:
+      return "B44A";
+    case Imf::DWAA_COMPRESSION:
+      return "DWAA";
+    case Imf::DWAB_COMPRESSION:
+      return "DWAB";
+    default:
+      return "UNKNOWN";
   }
 }
 
@@ -65,10 +80,8 @@ std::string attributeValue(const Imf::Attribute& a) {
     return buf;
   }
   if (auto i = as<Imf::IntAttribute>(a)) return std::to_string(i->value());
-  if (auto v = as<Imf::V2fAttribute>(a))
-    return "(" + fmtG9(v->value().x) + ", " + fmtG9(v->value().y) + ")";
-  if (auto v = as<Imf::V2dAttribute>(a))
-    return "(" + fmtG9(v->value().x) + ", " + fmtG9(v->value().y) + ")";
+  if (auto v = as<Imf::V2fAttribute>(a)) return "(" + fmtG9(v->value().x) + ", " + fmtG9(v->value().y) + ")";
+  if (auto v = as<Imf::V2dAttribute>(a)) return "(" + fmtG9(v->value().x) + ", " + fmtG9(v->value().y) + ")";
   if (auto v = as<Imf::V2iAttribute>(a))
     return "(" + std::to_string(v->value().x) + ", " + std::to_string(v->value().y) + ")";
   if (auto v = as<Imf::V3fAttribute>(a))
@@ -78,13 +91,12 @@ std::string attributeValue(const Imf::Attribute& a) {
            std::to_string(v->value().z) + ")";
   if (auto b = as<Imf::Box2iAttribute>(a)) {
     const Imath::Box2i& v = b->value();
-    return "(" + std::to_string(v.min.x) + ", " + std::to_string(v.min.y) + ") - (" +
-           std::to_string(v.max.x) + ", " + std::to_string(v.max.y) + ")";
+    return "(" + std::to_string(v.min.x) + ", " + std::to_string(v.min.y) + ") - (" + std::to_string(v.max.x) + ", " +
+           std::to_string(v.max.y) + ")";
   }
   if (auto b = as<Imf::Box2fAttribute>(a)) {
     const Imath::Box2f& v = b->value();
-    return "(" + fmtG9(v.min.x) + ", " + fmtG9(v.min.y) + ") - (" + fmtG9(v.max.x) + ", " +
-           fmtG9(v.max.y) + ")";
+    return "(" + fmtG9(v.min.x) + ", " + fmtG9(v.min.y) + ") - (" + fmtG9(v.max.x) + ", " + fmtG9(v.max.y) + ")";
   }
   if (auto sv = as<Imf::StringVectorAttribute>(a)) {
     std::string out = "[";
@@ -135,8 +147,7 @@ std::string describeTableExr(const std::string& path) {
   // Header iteration is in name order already.
   for (Imf::Header::ConstIterator it = h.begin(); it != h.end(); ++it) {
     if (isStandardAttribute(it.name())) continue;
-    out << "  " << it.name() << " (" << it.attribute().typeName()
-        << "): " << attributeValue(it.attribute()) << "\n";
+    out << "  " << it.name() << " (" << it.attribute().typeName() << "): " << attributeValue(it.attribute()) << "\n";
   }
 
   const std::vector<std::vector<float>> planes = readPlanes(path, *file, win, names);

@@ -17,9 +17,9 @@ namespace exr {
 
 // The eight attributes every EXR header has; `info` does not list them.
 inline bool isStandardAttribute(const std::string& name) {
-  static const std::set<std::string> kStandard = {
-      "channels",         "compression",        "dataWindow",        "displayWindow",
-      "lineOrder",        "pixelAspectRatio",   "screenWindowCenter", "screenWindowWidth"};
+  static const std::set<std::string> kStandard = {"channels",           "compression",      "dataWindow",
+                                                  "displayWindow",      "lineOrder",        "pixelAspectRatio",
+                                                  "screenWindowCenter", "screenWindowWidth"};
   return kStandard.count(name) != 0;
 }
 // Attributes that describe the file's structure rather than the table; they are
@@ -52,8 +52,7 @@ std::unique_ptr<Imf::InputFile> openExr(const std::string& path);
 // The data window of `h`, checked to be non-empty and to fit int sizes.
 Window dataWindowOf(const std::string& path, const Imf::Header& h);
 // Reads the named (unsubsampled) channels as float planes.
-std::vector<std::vector<float>> readPlanes(const std::string& path, Imf::InputFile& file,
-                                           const Window& win,
+std::vector<std::vector<float>> readPlanes(const std::string& path, Imf::InputFile& file, const Window& win,
                                            const std::vector<std::string>& names);
 
 }  // namespace exr

@@ -110,7 +110,8 @@ Window dataWindowOf(const std::string& path, const Imf::Header& h) {
   const int64_t width = int64_t{w.box.max.x} - w.box.min.x + 1;
   const int64_t height = int64_t{w.box.max.y} - w.box.min.y + 1;
   if (width < 1 || height < 1 || width > (1 << 16) || height > (1 << 16))
-    readError(path, "data window " + std::to_string(width) + " x " + std::to_string(height) + " is outside [1, 65536] on an axis");
+    readError(path, "data window " + std::to_string(width) + " x " + std::to_string(height) +
+                        " is outside [1, 65536] on an axis");
   // the texels the window declares must fit in the file's bytes: whole when uncompressed, and at
   // most deflate's 1032:1 (with room) when compressed; checked before a byte is allocated for them
   struct stat st {};
@@ -130,16 +131,14 @@ Window dataWindowOf(const std::string& path, const Imf::Header& h) {
   return w;
 }
 
-std::vector<std::vector<float>> readPlanes(const std::string& path, Imf::InputFile& file,
-                                           const Window& win,
+std::vector<std::vector<float>> readPlanes(const std::string& path, Imf::InputFile& file, const Window& win,
                                            const std::vector<std::string>& names) {
   const size_t count = static_cast<size_t>(win.width) * static_cast<size_t>(win.height);
   std::vector<std::vector<float>> planes(names.size());
   Imf::FrameBuffer fb;
   for (size_t i = 0; i < names.size(); ++i) {
     const Imf::Channel* ch = file.header().channels().findChannel(names[i]);
-    if (ch->xSampling != 1 || ch->ySampling != 1)
-      readError(path, "channel " + names[i] + " is subsampled");
+    if (ch->xSampling != 1 || ch->ySampling != 1) readError(path, "channel " + names[i] + " is subsampled");
     planes[i].assign(count, 0.0f);
     fb.insert(names[i], Imf::Slice::Make(Imf::FLOAT, planes[i].data(), win.box, sizeof(float),
                                          sizeof(float) * static_cast<size_t>(win.width)));

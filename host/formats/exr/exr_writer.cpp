@@ -217,8 +217,7 @@ void writeTableExrRowsTemporary(const std::string& tmp, const std::string& path,
   } while (fd < 0 && errno == EINTR);
   if (fd < 0) {
     const int err = errno;
-    throw Error(kExitCantCreat,
-                "cannot create " + path + ": " + errnoText(err) + " (temporary file " + tmp + ")");
+    throw Error(kExitCantCreat, "cannot create " + path + ": " + errnoText(err) + " (temporary file " + tmp + ")");
   }
   TempFileGuard guard(tmp, fd);
 
@@ -265,8 +264,7 @@ void writeTableExrRowsTemporary(const std::string& tmp, const std::string& path,
     const int err = errno;
     throw Error(kExitIoErr, "cannot write " + path + ": fsync: " + errnoText(err));
   }
-  if (const int err = guard.close())
-    throw Error(kExitIoErr, "cannot write " + path + ": close: " + errnoText(err));
+  if (const int err = guard.close()) throw Error(kExitIoErr, "cannot write " + path + ": close: " + errnoText(err));
   guard.release();
 }
 

@@ -34,18 +34,21 @@ void readDds(const std::string& bytes, bool pixels, TableFile& t) {
   const uint32_t pfFlags = f.u32(80, "DDS_PIXELFORMAT.dwFlags");
   f.need(88, "DDS_PIXELFORMAT.dwFourCC");
   if (!(pfFlags & 0x4) || bytes.compare(84, 4, "DX10") != 0)
-    refuse("has no DX10 header (DDS_PIXELFORMAT FourCC 'DX10'): brdfbake reads DX10 files, whose DXGI_FORMAT names "
-           "the texels");
+    refuse(
+        "has no DX10 header (DDS_PIXELFORMAT FourCC 'DX10'): brdfbake reads DX10 files, whose DXGI_FORMAT names "
+        "the texels");
   const uint32_t dxgi = f.u32(128, "DDS_HEADER_DXT10.dxgiFormat"), dimension = f.u32(132, "resourceDimension");
   const uint32_t miscFlag = f.u32(136, "miscFlag"), arraySize = f.u32(140, "arraySize");
   f.need(148, "DDS_HEADER_DXT10");
   TexelLayout layout{};
   if (!findLayout(dxgiFormats(), dxgi, &layout))
-    refuse("DXGI_FORMAT " + std::to_string(dxgi) + " is not one brdfbake reads: R/RG/RGBA 8- or 16-bit UNORM, 16- or "
+    refuse("DXGI_FORMAT " + std::to_string(dxgi) +
+           " is not one brdfbake reads: R/RG/RGBA 8- or 16-bit UNORM, 16- or "
            "32-bit FLOAT, RGB 32-bit FLOAT (2, 6, 10, 11, 16, 28, 34, 35, 41, 49, 54, 56, 61)");
   if (dimension < 2 || dimension > 4)
     refuse("resourceDimension " + std::to_string(dimension) + ": brdfbake reads 2, 3 or 4 (TEXTURE1D, 2D, 3D)");
-  if (miscFlag & 0x4) refuse("miscFlag says a cube map (DDS_RESOURCE_MISC_TEXTURECUBE): brdfbake reads 2D and 3D textures");
+  if (miscFlag & 0x4)
+    refuse("miscFlag says a cube map (DDS_RESOURCE_MISC_TEXTURECUBE): brdfbake reads 2D and 3D textures");
   if (arraySize != 1) refuse("arraySize " + std::to_string(arraySize) + ": brdfbake reads 1 (not an array)");
   const bool volume = dimension == 4;
   const uint32_t depth = volume ? depthField : 1;
@@ -62,7 +65,9 @@ void readDds(const std::string& bytes, bool pixels, TableFile& t) {
                          (volume ? "x" + std::to_string(depth) : std::string()) + ")");
   t.precision = layout.precision;
   t.storage = "DXGI_FORMAT_" + componentsName(layout.components, layout.precision, false) +
-              (volume ? ", TEXTURE3D" : dimension == 2 ? ", TEXTURE1D" : ", TEXTURE2D");
+              (volume           ? ", TEXTURE3D"
+               : dimension == 2 ? ", TEXTURE1D"
+                                : ", TEXTURE2D");
   t.depth = static_cast<int>(depth);
   t.table.width = static_cast<int>(width);
   t.table.height = static_cast<int>(h);

@@ -13,11 +13,16 @@ namespace {
 
 std::string container(FileFormat f) {
   switch (f) {
-    case FileFormat::Exr: return "OpenEXR";
-    case FileFormat::Ktx2: return "KTX 2.0";
-    case FileFormat::Dds: return "DDS, DX10 header";
-    case FileFormat::Png16: return "PNG";
-    case FileFormat::Header: return "brdfbake's header format";
+    case FileFormat::Exr:
+      return "OpenEXR";
+    case FileFormat::Ktx2:
+      return "KTX 2.0";
+    case FileFormat::Dds:
+      return "DDS, DX10 header";
+    case FileFormat::Png16:
+      return "PNG";
+    case FileFormat::Header:
+      return "brdfbake's header format";
   }
   return "";
 }
@@ -38,8 +43,10 @@ void channelRanges(const TableFile& f, std::ostringstream& out) {
       any = true;
     }
     out << "  channel " << f.table.channels[c] << ":";
-    if (any) out << " min " << fmtG9(lo) << " max " << fmtG9(hi);
-    else out << " no finite values";
+    if (any)
+      out << " min " << fmtG9(lo) << " max " << fmtG9(hi);
+    else
+      out << " no finite values";
     if (nonFinite) out << " (" << nonFinite << " non-finite values)";
     out << "\n";
   }
@@ -65,7 +72,8 @@ std::string describeTableFile(const TableFile& f) {
       return it == f.table.strings.end() ? std::string(fallback) : it->second;
     };
     out << "  values: png / 65535 * scale + offset, scale " << num("brdf.mapping.scale", "1 (no brdf.mapping.scale)")
-        << ", offset " << num("brdf.mapping.offset", "0 (no brdf.mapping.offset)") << " (the channel ranges below are values)\n";
+        << ", offset " << num("brdf.mapping.offset", "0 (no brdf.mapping.offset)")
+        << " (the channel ranges below are values)\n";
   }
   if (f.format == FileFormat::Dds) {
     TableImage meta;

@@ -133,8 +133,11 @@ void readHeader(const std::string& text, bool js, bool pixels, TableFile& t) {
           const std::string name = trim(part.substr(0, eq));
           std::string v = trim(part.substr(eq + 1));
           if (endsWith(v, ";")) v.pop_back();
-          long long* dst = name == "width" ? &width : name == "height" ? &height : name == "depth" ? &depth
-                         : name == "channels" ? &channels : nullptr;
+          long long* dst = name == "width"      ? &width
+                           : name == "height"   ? &height
+                           : name == "depth"    ? &depth
+                           : name == "channels" ? &channels
+                                                : nullptr;
           if (dst) *dst = integer(v);
         }
       } else if (startsWith(s, "export const precision = ")) {
@@ -153,10 +156,14 @@ void readHeader(const std::string& text, bool js, bool pixels, TableFile& t) {
       const size_t sp = s.find(' ', 8);
       if (sp == std::string::npos) continue;
       const std::string name = s.substr(8, sp - 8), v = s.substr(sp + 1);
-      if (endsWith(name, "_WIDTH")) width = integer(v);
-      else if (endsWith(name, "_HEIGHT")) height = integer(v);
-      else if (endsWith(name, "_DEPTH")) depth = integer(v);
-      else if (endsWith(name, "_CHANNELS")) channels = integer(v);
+      if (endsWith(name, "_WIDTH"))
+        width = integer(v);
+      else if (endsWith(name, "_HEIGHT"))
+        height = integer(v);
+      else if (endsWith(name, "_DEPTH"))
+        depth = integer(v);
+      else if (endsWith(name, "_CHANNELS"))
+        channels = integer(v);
       else if (endsWith(name, "_PRECISION")) {
         size_t at = 0;
         precision = p.literal(v, &at);
@@ -169,11 +176,14 @@ void readHeader(const std::string& text, bool js, bool pixels, TableFile& t) {
   }
   if (!complete)
     bad(t.path, p.format, std::string("ends before its last line (") + (js ? "]);" : "#endif") + "): truncated");
-  if (in != In::Top) p.fail("the " + std::string(in == In::Data ? "data" : "attribute") + " list does not end (truncated?)");
+  if (in != In::Top)
+    p.fail("the " + std::string(in == In::Data ? "data" : "attribute") + " list does not end (truncated?)");
   auto need = [&](long long v, const char* what, long long lo, long long hi) {
     if (v < lo || v > hi)
-      bad(t.path, p.format, std::string(what) + (v < 0 ? " is missing or not a number" : " " + std::to_string(v) + " is outside [" +
-                                                 std::to_string(lo) + ", " + std::to_string(hi) + "]"));
+      bad(t.path, p.format,
+          std::string(what) + (v < 0 ? " is missing or not a number"
+                                     : " " + std::to_string(v) + " is outside [" + std::to_string(lo) + ", " +
+                                           std::to_string(hi) + "]"));
   };
   need(width, js ? "width" : "<ID>_WIDTH", 1, 65536);
   need(height, js ? "height" : "<ID>_HEIGHT", 1, 65536);
@@ -186,8 +196,9 @@ void readHeader(const std::string& text, bool js, bool pixels, TableFile& t) {
   }
   const uint64_t texels = static_cast<uint64_t>(width) * height * depth;
   if (values.size() != texels * channels)
-    bad(t.path, p.format, "holds " + std::to_string(values.size()) + " values; width * height * depth * channels is " +
-                              std::to_string(texels * channels) + " (truncated?)");
+    bad(t.path, p.format,
+        "holds " + std::to_string(values.size()) + " values; width * height * depth * channels is " +
+            std::to_string(texels * channels) + " (truncated?)");
   t.storage = precisionName(t.precision) + (js ? " values (ECMAScript module)" : " literals (C header)");
   t.depth = static_cast<int>(depth);
   t.table.width = static_cast<int>(width);
@@ -201,12 +212,16 @@ void readHeader(const std::string& text, bool js, bool pixels, TableFile& t) {
     char* end = nullptr;
     const bool hex = t.precision == Precision::Float16;
     const double x = hex ? static_cast<double>(std::strtoul(v.c_str(), &end, 16)) : std::strtod(v.c_str(), &end);
-    if (end == v.c_str() || *end != '\0' || (t.precision != Precision::Float32 && x < 0) || (hex && x > 0xFFFF) || (isUnorm(t.precision) && x > (t.precision == Precision::Unorm8 ? 255 : 65535)))
-      bad(t.path, p.format, "value " + std::to_string(i) + " '" + values[i] + "' is not a " + precisionName(t.precision) + " " +
-                                (hex ? "bit pattern" : isUnorm(t.precision) ? "code" : "number"));
+    if (end == v.c_str() || *end != '\0' || (t.precision != Precision::Float32 && x < 0) || (hex && x > 0xFFFF) ||
+        (isUnorm(t.precision) && x > (t.precision == Precision::Unorm8 ? 255 : 65535)))
+      bad(t.path, p.format,
+          "value " + std::to_string(i) + " '" + values[i] + "' is not a " + precisionName(t.precision) + " " +
+              (hex                    ? "bit pattern"
+               : isUnorm(t.precision) ? "code"
+                                      : "number"));
     if (pixels)
-      t.table.planes[i % channels][i / channels] =
-          static_cast<float>(t.precision == Precision::Float32 ? x : decodeStored(static_cast<uint32_t>(x), t.precision));
+      t.table.planes[i % channels][i / channels] = static_cast<float>(
+          t.precision == Precision::Float32 ? x : decodeStored(static_cast<uint32_t>(x), t.precision));
   }
 }
 

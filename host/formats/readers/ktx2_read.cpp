@@ -16,11 +16,11 @@ namespace {
 // VkFormat enumerant values (Vulkan registry) of the uncompressed UNORM / SFLOAT formats.
 const std::map<uint32_t, TexelLayout>& vkFormats() {
   static const std::map<uint32_t, TexelLayout> kFormats = {
-      {9, {1, Precision::Unorm8}},     {16, {2, Precision::Unorm8}},    {23, {3, Precision::Unorm8}},
-      {37, {4, Precision::Unorm8}},    {70, {1, Precision::Unorm16}},   {77, {2, Precision::Unorm16}},
-      {84, {3, Precision::Unorm16}},   {91, {4, Precision::Unorm16}},   {76, {1, Precision::Float16}},
-      {83, {2, Precision::Float16}},   {90, {3, Precision::Float16}},   {97, {4, Precision::Float16}},
-      {100, {1, Precision::Float32}},  {103, {2, Precision::Float32}},  {106, {3, Precision::Float32}},
+      {9, {1, Precision::Unorm8}},    {16, {2, Precision::Unorm8}},   {23, {3, Precision::Unorm8}},
+      {37, {4, Precision::Unorm8}},   {70, {1, Precision::Unorm16}},  {77, {2, Precision::Unorm16}},
+      {84, {3, Precision::Unorm16}},  {91, {4, Precision::Unorm16}},  {76, {1, Precision::Float16}},
+      {83, {2, Precision::Float16}},  {90, {3, Precision::Float16}},  {97, {4, Precision::Float16}},
+      {100, {1, Precision::Float32}}, {103, {2, Precision::Float32}}, {106, {3, Precision::Float32}},
       {109, {4, Precision::Float32}}};
   return kFormats;
 }
@@ -37,16 +37,18 @@ void readKtx2(const std::string& bytes, bool pixels, TableFile& t) {
   const uint32_t scheme = f.u32(44, "supercompressionScheme");
   TexelLayout layout{};
   if (!findLayout(vkFormats(), vk, &layout))
-    refuse("vkFormat " + std::to_string(vk) + " is not one brdfbake reads: R/RG/RGB/RGBA 8- or 16-bit UNORM, 16- or "
+    refuse("vkFormat " + std::to_string(vk) +
+           " is not one brdfbake reads: R/RG/RGB/RGBA 8- or 16-bit UNORM, 16- or "
            "32-bit SFLOAT (VkFormat 9, 16, 23, 37, 70, 77, 84, 91, 76, 83, 90, 97, 100, 103, 106, 109)");
   const uint32_t component = static_cast<uint32_t>(bytesPerChannel(layout.precision));
   if (typeSize != component)
-    refuse("typeSize " + std::to_string(typeSize) + " is not the size of a component of vkFormat " + std::to_string(vk) +
-           " (" + std::to_string(component) + ")");
+    refuse("typeSize " + std::to_string(typeSize) + " is not the size of a component of vkFormat " +
+           std::to_string(vk) + " (" + std::to_string(component) + ")");
   if (width < 1 || width > (1u << 16)) refuse("pixelWidth " + std::to_string(width) + " is outside [1, 65536]");
   if (height > (1u << 16)) refuse("pixelHeight " + std::to_string(height) + " is outside [0, 65536]");
   if (depth > (1u << 16)) refuse("pixelDepth " + std::to_string(depth) + " is outside [0, 65536]");
-  if (depth > 0 && height == 0) refuse("pixelDepth " + std::to_string(depth) + " with pixelHeight 0 (a 3D texture needs both)");
+  if (depth > 0 && height == 0)
+    refuse("pixelDepth " + std::to_string(depth) + " with pixelHeight 0 (a 3D texture needs both)");
   if (layers > 1) refuse("layerCount " + std::to_string(layers) + ": an array texture (brdfbake reads 0 or 1)");
   if (faces != 1) refuse("faceCount " + std::to_string(faces) + ": brdfbake reads 1 (not a cube map)");
   if (scheme != 0) refuse("supercompressionScheme " + std::to_string(scheme) + ": brdfbake reads 0 (none)");

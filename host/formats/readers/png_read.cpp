@@ -44,7 +44,8 @@ struct PngHeader {
 // channels * 2 bytes each) is filled when not null; `text` gets the text chunks (key, value) through
 // the callback. Returns false with src->message set on a libpng error.
 bool decode(png_structp png, png_infop info, png_infop endInfo, PngSource* src, PngHeader* h,
-            std::vector<unsigned char>* pixels, void (*addText)(void*, const char*, const char*, size_t), void* textSink) {
+            std::vector<unsigned char>* pixels, void (*addText)(void*, const char*, const char*, size_t),
+            void* textSink) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_set_read_fn(png, src, pngReadBytes);
   png_read_info(png, info);
@@ -59,7 +60,8 @@ bool decode(png_structp png, png_infop info, png_infop endInfo, PngSource* src, 
   if ((stride + 1) * h->height > src->bytes->size() * 1100 + 65536) {
     std::snprintf(src->message, sizeof src->message,
                   "IHDR declares %u x %u, %zu bytes of rows, more than the file's %zu bytes can hold (damaged header?)",
-                  static_cast<unsigned>(h->width), static_cast<unsigned>(h->height), (stride + 1) * h->height, src->bytes->size());
+                  static_cast<unsigned>(h->width), static_cast<unsigned>(h->height), (stride + 1) * h->height,
+                  src->bytes->size());
     return false;
   }
   pixels->resize(stride * h->height);
@@ -68,7 +70,8 @@ bool decode(png_structp png, png_infop info, png_infop endInfo, PngSource* src, 
   for (png_infop i : {info, endInfo}) {
     png_textp chunks = nullptr;
     const int n = png_get_text(png, i, &chunks, nullptr);
-    for (int k = 0; k < n; ++k) addText(textSink, chunks[k].key, chunks[k].text, chunks[k].text ? std::strlen(chunks[k].text) : 0);
+    for (int k = 0; k < n; ++k)
+      addText(textSink, chunks[k].key, chunks[k].text, chunks[k].text ? std::strlen(chunks[k].text) : 0);
   }
   return true;
 }
@@ -102,15 +105,18 @@ void readPng(const std::string& bytes, bool pixels, TableFile& t) {
   png_set_crc_action(png, PNG_CRC_ERROR_QUIT, PNG_CRC_ERROR_QUIT);
   const bool ok = info && endInfo && decode(png, info, endInfo, &src, &h, &samples, addText, &t);
   png_destroy_read_struct(&png, &info, &endInfo);
-  if (!ok) bad(t.path, "PNG", std::string("is damaged or truncated: ") + (src.message[0] ? src.message : "libpng failed"));
+  if (!ok)
+    bad(t.path, "PNG", std::string("is damaged or truncated: ") + (src.message[0] ? src.message : "libpng failed"));
   if (h.depth != 16 || (h.colour != PNG_COLOR_TYPE_RGB && h.colour != PNG_COLOR_TYPE_RGB_ALPHA))
-    bad(t.path, "PNG", "has bit depth " + std::to_string(h.depth) + " and colour type " + std::to_string(h.colour) +
-                           ": brdfbake reads 16-bit RGB (colour type 2) or RGBA (6), as it writes them");
+    bad(t.path, "PNG",
+        "has bit depth " + std::to_string(h.depth) + " and colour type " + std::to_string(h.colour) +
+            ": brdfbake reads 16-bit RGB (colour type 2) or RGBA (6), as it writes them");
   if (h.interlace != PNG_INTERLACE_NONE) bad(t.path, "PNG", "is interlaced: brdfbake reads non-interlaced files");
 
   const int n = h.colour == PNG_COLOR_TYPE_RGB ? 3 : 4;
   double scale = 1, offset = 0;
-  const bool hasScale = numberText(t, "brdf.mapping.scale", &scale), hasOffset = numberText(t, "brdf.mapping.offset", &offset);
+  const bool hasScale = numberText(t, "brdf.mapping.scale", &scale),
+             hasOffset = numberText(t, "brdf.mapping.offset", &offset);
   if (!hasScale) scale = 1;
   if (!hasOffset) offset = 0;
   t.precision = Precision::Unorm16;

@@ -57,8 +57,9 @@ void bad(const std::string& path, const std::string& format, const std::string& 
 
 void Fields::need(uint64_t end, const std::string& what) const {
   if (end > bytes.size())
-    bad(path, format, "is truncated: " + what + " would end at byte " + std::to_string(end) + ", the file has " +
-                          std::to_string(bytes.size()) + " bytes");
+    bad(path, format,
+        "is truncated: " + what + " would end at byte " + std::to_string(end) + ", the file has " +
+            std::to_string(bytes.size()) + " bytes");
 }
 
 uint32_t Fields::u32(uint64_t at, const char* what) const {
@@ -82,9 +83,12 @@ double decodeStored(uint32_t bits, Precision p) {
       std::memcpy(&f, &bits, 4);
       return f;
     }
-    case Precision::Float16: return static_cast<float>(Imath::half(Imath::half::FromBits, static_cast<uint16_t>(bits)));
-    case Precision::Unorm16: return bits / 65535.0;
-    case Precision::Unorm8: return bits / 255.0;
+    case Precision::Float16:
+      return static_cast<float>(Imath::half(Imath::half::FromBits, static_cast<uint16_t>(bits)));
+    case Precision::Unorm16:
+      return bits / 65535.0;
+    case Precision::Unorm8:
+      return bits / 255.0;
   }
   return 0;
 }
