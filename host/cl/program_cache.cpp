@@ -14,8 +14,10 @@
 #include <cstring>
 
 #include "cl/programs.h"
+#include "common/errors.h"
 #include "common/hash.h"
 #include "formats/commit_record.h"
+#include "formats/storage.h"
 
 #ifndef BRDFBAKE_PROGRAMS_BUILD_DIR
 #define BRDFBAKE_PROGRAMS_BUILD_DIR ""
@@ -59,9 +61,6 @@ uint64_t entryHash(const std::string& s) {
 
 std::string hex64(uint64_t v) { return hex16(v); }
 
-void putU64(std::string& out, uint64_t v) {
-  for (int i = 0; i < 8; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
-}
 bool getU64(const std::string& in, size_t* at, uint64_t* v) {
   if (in.size() < *at + 8) return false;
   *v = 0;
@@ -226,27 +225,18 @@ std::string storeProgram(const std::string& identity, const ProgramBinary& binar
   if (DIR* d = ::opendir(dir.c_str())) {
     std::vector<std::string> gone;
     while (dirent* e = ::readdir(d))
-      if (std::string(e->d_name).rfind(".program.", 0) == 0 && ownerIsGone(temporaryOwner(e->d_name)))
-        gone.push_back(e->d_name);
+      if (ownerIsGone(temporaryOwner(e->d_name))) gone.push_back(e->d_name);
     ::closedir(d);
     for (const std::string& g : gone) ::unlink((dir + "/" + g).c_str());
   }
-  std::string tmp = dir + "/.program" + temporaryMarker() + "XXXXXX";
-  int fd = ::mkstemp(&tmp[0]);
-  if (fd < 0) return dir + ": " + std::strerror(errno);
-  size_t put = 0;
-  while (put < data.size()) {
-    ssize_t n = ::write(fd, data.data() + put, data.size() - put);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    put += static_cast<size_t>(n);
-  }
-  const int err = put == data.size() ? 0 : errno;
-  ::fchmod(fd, 0644);
-  if (::close(fd) != 0 || err != 0 || ::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::string why = path + ": " + std::strerror(err ? err : errno);
-    ::unlink(tmp.c_str());
-    return why;
+  try {
+    replaceWhole(path, [&](const std::string& tmp) {
+      TempFileWriter out(tmp, path);
+      out.write(data);
+      out.finish();
+    });
+  } catch (const Error& e) {
+    return e.what();  // a cache that cannot be written costs the next run a build, never a failure
   }
   return "";
 }

@@ -73,6 +73,21 @@ unsigned currentUmask() {
   return mask;
 }
 
+void replaceWhole(const std::string& path, const std::function<void(const std::string& tmp)>& writeTemporary) {
+  const std::string tmp = makeTemporaryFor(path);
+  try {
+    writeTemporary(tmp);
+  } catch (...) {
+    ::unlink(tmp.c_str());
+    throw;
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    throw Error(kExitCantCreat, "cannot create " + path + ": " + std::strerror(err));
+  }
+}
+
 std::string makeTemporaryFor(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);

@@ -8,6 +8,7 @@
 //    temporaries were synced before the record was written), then removes the temporaries and
 //    backups this tool can prove its own: its marker and the PID of a process that is gone.
 #pragma once
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,6 +23,11 @@ inline const char* const kCommitRecordName = ".brdfbake-commit";  // a commit in
 // The file exists (empty) when this returns. Error(kExitCantCreat), or kExitIoErr when the file
 // system is full (no space, quota or inodes).
 std::string makeTemporaryFor(const std::string& path);
+// Writes `path` whole or not at all, the one temporary-write sequence of every single-file writer:
+// `writeTemporary(tmp)` fills a fresh temporary next to it (makeTemporaryFor), which is renamed onto
+// `path`. On any failure the temporary is removed and the error goes on; a failed rename is
+// Error(kExitCantCreat) naming `path`.
+void replaceWhole(const std::string& path, const std::function<void(const std::string& tmp)>& writeTemporary);
 // The process's umask (read once, at the first call).
 unsigned currentUmask();
 // The marker a temporary's name carries after `.<name>`: ".brdfbake-tmp-<pid>-".

@@ -14,8 +14,8 @@
 #include "common/errors.h"
 #include "common/format.h"
 #include "common/input_file.h"
-#include "formats/exr/table_file.h"  // temporaryPathFor
-#include "formats/storage.h"         // TempFileWriter
+#include "formats/commit_record.h"  // replaceWhole
+#include "formats/storage.h"        // TempFileWriter
 
 namespace brdfbake {
 
@@ -102,18 +102,7 @@ void writeMerlTemporary(const std::string& tmp, const std::string& path,
 }
 
 void writeMerl(const std::string& path, const std::vector<std::vector<float>>& planes) {
-  const std::string tmp = temporaryPathFor(path);
-  try {
-    writeMerlTemporary(tmp, path, planes);
-  } catch (...) {
-    ::unlink(tmp.c_str());  // temporaryPathFor created it
-    throw;
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    throw Error(kExitCantCreat, "cannot create " + path + ": " + errnoText(err));
-  }
+  replaceWhole(path, [&](const std::string& tmp) { writeMerlTemporary(tmp, path, planes); });
 }
 
 std::vector<std::vector<float>> merlPlanesFromSpec(const Brdf3dSpec& material) {

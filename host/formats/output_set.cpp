@@ -17,6 +17,7 @@
 #include "common/errors.h"
 #include "common/input_file.h"
 #include "formats/commit_record.h"
+#include "formats/storage.h"
 
 namespace brdfbake {
 
@@ -412,38 +413,11 @@ void writeTextFile(const std::string& path, const std::string& text) {
   // under the directory's lock, as every writer there: a bake's sweep never meets it half written
   const std::string parent = parentOf(path);
   DirLock lock(parent.empty() ? "." : parent, true);
-  std::string tmp = temporaryPathFor(path);
-  int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    throw Error(kExitCantCreat, "cannot create " + path + ": " + errnoText(err));
-  }
-  size_t done = 0;
-  bool ok = true;
-  while (ok && done < text.size()) {
-    ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    ok = n > 0;
-    if (ok) done += static_cast<size_t>(n);
-  }
-  int err = ok ? 0 : errno;
-  if (ok && ::fsync(fd) != 0) {
-    ok = false;
-    err = errno;
-  }
-  if (::close(fd) != 0 && ok) {
-    ok = false;
-    err = errno;
-  }
-  if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) {
-    ok = false;
-    err = errno;
-  }
-  if (!ok) {
-    ::unlink(tmp.c_str());
-    throw Error(kExitIoErr, "cannot write " + path + ": " + errnoText(err));
-  }
+  replaceWhole(path, [&](const std::string& tmp) {
+    TempFileWriter out(tmp, path);
+    out.write(text);
+    out.finish();
+  });
 }
 
 }  // namespace brdfbake

@@ -126,18 +126,7 @@ uint64_t tableExrBytesBound(uint64_t width, uint64_t height, uint64_t channels, 
 }
 
 void writeTableExr(const std::string& path, const TableImage& img, bool half) {
-  const std::string tmp = temporaryPathFor(path);
-  try {
-    writeTableExrTemporary(tmp, path, img, half);
-  } catch (...) {
-    ::unlink(tmp.c_str());  // temporaryPathFor created it
-    throw;
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    throw Error(kExitCantCreat, "cannot create " + path + ": " + errnoText(err));
-  }
+  replaceWhole(path, [&](const std::string& tmp) { writeTableExrTemporary(tmp, path, img, half); });
 }
 
 std::string texelsHash(const std::vector<std::vector<float>>& planes, bool half) {
