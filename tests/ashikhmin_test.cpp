@@ -1,5 +1,5 @@
 // The anisotropic Ashikhmin-Shirley BRDF and its factorised textures (seed 001,
-// kernels/brdf/anisotropic.h, host/tables/ashikhmin_textures.cpp, shaders/ashikhmin_shirley.glsl):
+// kernels/brdf/anisotropic.h, host/tables/ashikhmin/ashikhmin_textures.cpp, shaders/ashikhmin_shirley.glsl):
 // Tex2's u -> 1 limit, the corrected Fresnel, the direct formula against an independent form, the
 // shader's recombination from the baked textures against the direct formula, and the CLI.
 #include <gtest/gtest.h>
@@ -15,7 +15,7 @@
 #include <string>
 
 #include "cli_run.h"
-#include "tables/ashikhmin_textures.h"
+#include "tables/ashikhmin/ashikhmin_textures.h"
 #include "common/brdf_host.h"
 #include "formats/exr/table_file.h"
 #include "materials/multiscatter.h"

@@ -24,7 +24,7 @@
 #include "common/errors.h"
 #include "formats/exr/table_file.h"
 #include "formats/merl.h"
-#include "tables/brdf3d.h"
+#include "tables/brdf3d/brdf3d.h"
 #include "test_device.h"
 
 namespace fs = std::filesystem;

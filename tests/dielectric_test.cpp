@@ -17,7 +17,7 @@
 
 #include "cli_run.h"
 #include "tables/dielectric_avg.h"
-#include "tables/dielectric_bake.h"
+#include "tables/dielectric/dielectric_bake.h"
 #include "common/brdf_host.h"
 #include "formats/exr/table_file.h"
 #include "reference/dielectric_reference.h"

@@ -119,7 +119,7 @@ Worst checkTable(int ndf, int gaf, const Edge& e, int n, bool strictReference = 
     double got = t.planes[1][k];
     double scale = 0;
     for (int p = 0; p < 3; ++p) scale = std::max(scale, std::fabs(static_cast<double>(t.planes[p][k])));
-    // the bake's claim (host/tables/microfacet.cpp): the estimate, the Fresnel-weighted float model
+    // the bake's claim (host/tables/microfacet/microfacet.cpp): the estimate, the Fresnel-weighted float model
     // and the float term next to a kink
     double claim =
         t.err[k] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf, true)) + fresnelKinkFloat(e.model, e.x, mu, r);

@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "tables/microfacet.h"
+#include "tables/microfacet/microfacet.h"
 #include "tables/interp_estimate.h"
 #include "cli_run.h"
 #include "common/brdf_host.h"

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "tables/microfacet.h"
+#include "tables/microfacet/microfacet.h"
 #include "bench/bench_util.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "tables/dielectric_avg.h"
-#include "tables/dielectric_bake.h"
+#include "tables/dielectric/dielectric_bake.h"
 #include "bench/bench_util.h"
 #include "tables/mc_common.h"
 #include "cl/runner.h"

@@ -17,7 +17,7 @@
 #include "common/models.h"
 #include "tables/interp_estimate.h"
 #include "tables/interp_probe.h"
-#include "tables/microfacet.h"
+#include "tables/microfacet/microfacet.h"
 
 namespace brdfbake {
 using namespace bench;

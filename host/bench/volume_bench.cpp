@@ -14,7 +14,7 @@
 #include <filesystem>
 
 #include "tables/volume.h"
-#include "tables/brdf3d.h"
+#include "tables/brdf3d/brdf3d.h"
 #include "bench/bench_util.h"
 #include "cl/runner.h"
 #include "common/brdf_host.h"

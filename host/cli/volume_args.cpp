@@ -120,7 +120,7 @@ void validateVolumeOptions(bool bake, BakeRequest& req) {
   auto& v = req.volume;
   if (v.flags.empty()) return;
   // the 3D textures take every option; other kinds with three size axes (the rough-dielectric cube,
-  // tables/dielectric.cpp) take NX,NY,NZ and no other
+  // tables/dielectric/dielectric.cpp) take NX,NY,NZ and no other
   const auto has = [&](bool (*pick)(const KindInfo&)) {
     return std::any_of(req.tables.begin(), req.tables.end(), [&](TableKind t) { return pick(kindInfo(t)); });
   };

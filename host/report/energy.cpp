@@ -21,7 +21,7 @@ namespace brdfbake {
 namespace {
 
 // The diffuse and dielectric kernels' float arithmetic, as in the bake (host/tables/table2d.cpp,
-// host/tables/dielectric_bake.cpp): once per lobe; the specular lobe's is modelled per texel (tables/error_model.h).
+// host/tables/dielectric/dielectric_bake.cpp): once per lobe; the specular lobe's is modelled per texel (tables/error_model.h).
 constexpr double kAllowance = 1e-6;
 constexpr size_t kWorstShown = 5;
 

@@ -71,7 +71,7 @@ std::string atlasLookups(const Lang& L, const std::string& P, const std::string&
 
 }  // namespace
 
-// The rough-dielectric cube (tables/dielectric.cpp): an atlas of eta slices over (mu, r), the eta
+// The rough-dielectric cube (tables/dielectric/dielectric.cpp): an atlas of eta slices over (mu, r), the eta
 // axis in s = (eta - 1)/(eta + 1) between brdf.s.range's ends; P_albedos(mu, r, eta) gives E_R,
 // E_T and E_R + E_T.
 std::string lookupsDielectric(const Lang& L, const std::string& P, const std::string& path, const TableImage& h) {

@@ -27,7 +27,7 @@ struct DielectricAverages {
 
 // The bound the rule aims at per entry: that of E_R,avg + E_T,avg, the larger of its three values.
 // A table's brdf.error adds each entry's own rounding to float (at most 2^-25 = 3.0e-8 below 1) and
-// the double arithmetic's 1e-9 (tables/dielectric_bake.cpp), about 1.1e-7 in all.
+// the double arithmetic's 1e-9 (tables/dielectric/dielectric_bake.cpp), about 1.1e-7 in all.
 constexpr double kDielectricAvgTarget = 8e-8;
 // The target of each node's E_R and E_T (kernels/integrate/dielectric.h). The nodes' bounds enter an
 // entry's weighted by 2 mu dmu and run ~10 times their errors, so a tighter target buys little:

@@ -44,7 +44,7 @@ struct TableJob : JobSpec {
   TableLayout layout = {};      // splitsum: axis order, flips, channels (formats/layout.h)
   std::string layoutName = {};  // --layout NAME, or a name for --axes/--flip/--channels; "" as baked
   bool muSqrt = false;          // splitsum, albedo: x holds u = sqrt(mu), texel i at mu = u_i^2 (--mu-axis sqrt)
-  std::string merl = {};        // a measured material's MERL file (tables/measured.cpp), or ""
+  std::string merl = {};        // a measured material's MERL file (tables/measured/measured.cpp), or ""
 };
 
 // A table of `kind` for the pair (ndf, gaf), width x height texels, the other fields at their defaults.
@@ -71,7 +71,7 @@ struct VolumeJob : JobSpec {
 };
 
 // A rough-dielectric table (--table dielectric: 3D over (mu, r, eta coordinate), an EXR atlas of
-// eta slices; dielectric-avg: 2D over (r, eta coordinate)). tables/dielectric_bake.h.
+// eta slices; dielectric-avg: 2D over (r, eta coordinate)). tables/dielectric/dielectric_bake.h.
 struct DielectricJob : JobSpec {
   int ndf = 0, gaf = 0;
   bool avg = false;               // dielectric-avg

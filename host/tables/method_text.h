@@ -1,4 +1,4 @@
-// brdf.method texts of the microfacet tables (tables/microfacet.cpp computeTable) (tables/method_text.cpp).
+// brdf.method texts of the microfacet tables (tables/microfacet/microfacet.cpp computeTable) (tables/method_text.cpp).
 #pragma once
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "tables/dielectric_bake.h"
+#include "tables/dielectric/dielectric_bake.h"
 
 #include <Imath/half.h>
 

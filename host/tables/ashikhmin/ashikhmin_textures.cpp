@@ -1,4 +1,4 @@
-#include "tables/ashikhmin_textures.h"
+#include "tables/ashikhmin/ashikhmin_textures.h"
 
 #include <Imath/half.h>
 

@@ -13,7 +13,7 @@
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"
-#include "tables/brdf3d.h"
+#include "tables/brdf3d/brdf3d.h"
 #include "tables/family.h"
 #include "tables/ladder.h"
 

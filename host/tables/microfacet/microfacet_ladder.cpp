@@ -10,7 +10,7 @@
 #include "common/format.h"
 #include "reference/reference.h"
 #include "tables/ladder.h"
-#include "tables/microfacet.h"
+#include "tables/microfacet/microfacet.h"
 
 namespace brdfbake {
 

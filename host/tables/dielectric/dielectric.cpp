@@ -1,15 +1,15 @@
 // The rough-dielectric family (--table dielectric, dielectric-avg; Walter et al. 2007): E_R and E_T
 // of rough glass over (mu, r, eta) as an EXR atlas of eta slices, and their averages over mu over
-// (r, eta). The computation lives in tables/dielectric_bake.h and tables/dielectric_avg.h.
+// (r, eta). The computation lives in tables/dielectric/dielectric_bake.h and tables/dielectric_avg.h.
 #include <algorithm>
 #include <array>
 #include <tuple>
 
-#include "tables/dielectric_bake.h"
+#include "tables/dielectric/dielectric_bake.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"
-#include "tables/brdf3d.h"
+#include "tables/brdf3d/brdf3d.h"
 #include "tables/family.h"
 #include "tables/ladder.h"
 #include "reference/dielectric_reference.h"
@@ -127,7 +127,7 @@ Ladder cubeLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
     for (size_t k = 0; k < texels; ++k) {
       v[2 * k] = p[0][k];
       v[2 * k + 1] = p[1][k];
-      // + what the bake adds to each texel's bound (tables/dielectric_bake.cpp): E_R and E_T rounded to
+      // + what the bake adds to each texel's bound (tables/dielectric/dielectric_bake.cpp): E_R and E_T rounded to
       // float, 2^-25 each below 1 (the sum's third rounding is not measured here), and the fp64 program's 1e-9
       e[k] = p[2][k] + 2 * std::ldexp(1.0, -25) + 1e-9;
     }
@@ -313,7 +313,7 @@ class Dielectric final : public TableFamily {
       const bool nearOne = std::fabs(etas[k] - 1) < 1e-3;
       const reference::DielectricAlbedo eta1 = reference::dielectricAlbedoEta1(ndf, gaf, mus[k], rs[k]);
       for (int lobe = 0; lobe < 2; ++lobe) {
-        // the node's bound (absolute, E <= 1), the fp64 program's 1e-9 (tables/dielectric_bake.cpp), and
+        // the node's bound (absolute, E <= 1), the fp64 program's 1e-9 (tables/dielectric/dielectric_bake.cpp), and
         // the reference's own accuracy near its limits (1e-8, as the averages' tests allow it)
         StressPoint s = stressPoint(
             cases[k].sweep,

@@ -1,4 +1,4 @@
-// The brdf3d family's names (tables/brdf3d.cpp).
+// The brdf3d family's names (tables/brdf3d/brdf3d.cpp).
 #pragma once
 #include <string>
 #include <utility>

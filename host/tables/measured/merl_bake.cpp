@@ -1,4 +1,4 @@
-#include "tables/merl_bake.h"
+#include "tables/measured/merl_bake.h"
 
 namespace brdfbake {
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "tables/merl_bake.h"
+#include "tables/measured/merl_bake.h"
 #include "common/errors.h"
 #include "formats/merl.h"
 #include "materials/merl_albedo.h"

@@ -14,7 +14,7 @@
 #include "reference/sheen_reference.h"
 #include "tables/error_model.h"
 #include "tables/family.h"
-#include "tables/microfacet.h"
+#include "tables/microfacet/microfacet.h"
 
 namespace brdfbake {
 

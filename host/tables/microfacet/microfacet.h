@@ -16,13 +16,13 @@ namespace brdfbake {
 TableImage computeTable(KernelRunner& runner, const TableJob& job, double* seconds,
                         std::vector<double>* texelBounds = nullptr);
 
-// The convergence ladders of splitsum, albedo, albedo-avg and kp (tables/microfacet_ladder.cpp).
+// The convergence ladders of splitsum, albedo, albedo-avg and kp (tables/microfacet/microfacet_ladder.cpp).
 struct Ladder;
 struct BakeRequest;
 class BakeContext;
 Ladder microfacetLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind);
 
-// Its stress points (tables/microfacet_stress.cpp).
+// Its stress points (tables/microfacet/microfacet_stress.cpp).
 struct StressPoint;
 void microfacetStress(KernelRunner& kr, std::vector<StressPoint>& out);
 

@@ -1,12 +1,12 @@
 // The Ashikhmin-Shirley family (--table ashikhmin-shirley): the three factorised textures of the
-// anisotropic Ashikhmin-Shirley BRDF, closed forms on the host (tables/ashikhmin_textures.h), one file
+// anisotropic Ashikhmin-Shirley BRDF, closed forms on the host (tables/ashikhmin/ashikhmin_textures.h), one file
 // each.
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 
-#include "tables/ashikhmin_textures.h"
+#include "tables/ashikhmin/ashikhmin_textures.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"
@@ -110,7 +110,7 @@ class Ashikhmin final : public TableFamily {
           ladder::rung("bilinear lookup (float texels)", std::to_string(n) + " texels per axis", secs, v, e, ref));
     }
     L.note =
-        "The reference: the seed's formulas as printed, in long double (tables/ashikhmin_textures.cpp); a rung's "
+        "The reference: the seed's formulas as printed, in long double (tables/ashikhmin/ashikhmin_textures.cpp); a rung's "
         "estimate is its change from the previous rung\n";
     return L;
   }

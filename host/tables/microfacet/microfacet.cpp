@@ -1,5 +1,5 @@
-// The microfacet family (tables/microfacet.h): split sum, albedo, albedo-avg, k_p.
-#include "tables/microfacet.h"
+// The microfacet family (tables/microfacet/microfacet.h): split sum, albedo, albedo-avg, k_p.
+#include "tables/microfacet/microfacet.h"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-// A measured material's name, from its MERL file (--brdf merl:FILE; tables/measured.cpp).
+// A measured material's name, from its MERL file (--brdf merl:FILE; tables/measured/measured.cpp).
 #pragma once
 #include <string>
 
