@@ -28,6 +28,17 @@ void expectRefused(const CmdResult& r, int code, const std::string& says, const 
 
 }  // namespace
 
+// Runs a shell script in a private mount namespace (unshare -m; needs root, as CI has), so that
+// the tmpfs it mounts is seen by it alone and gone when it ends; its output and status.
+CmdResult runInPrivateMounts(const fs::path& script) {
+  CmdResult r{0, ""};
+  FILE* p = popen(("unshare -m sh '" + script.string() + "' 2>&1").c_str(), "r");
+  char buf[4096];
+  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
+  r.code = pclose(p);
+  return r;
+}
+
 TEST(Hostile, NonRegularInputsAreRefusedBeforeTheyAreRead) {
   const fs::path d = freshDir("hostile", "inputs");
   ASSERT_EQ(::mkfifo((d / "f.exr").c_str(), 0600), 0);
@@ -332,11 +343,7 @@ TEST(Hostile, NoInodesLeftIsAWriteError) {
                             << "/out'; echo \"rc=$?\"\n"
                                "ls -A '"
                             << disk << "/out' 2>/dev/null | wc -l\n";
-  CmdResult r{0, ""};
-  FILE* p = popen(("unshare -m sh '" + (d / "t.sh").string() + "' 2>&1").c_str(), "r");
-  char buf[4096];
-  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
-  r.code = pclose(p);
+  const CmdResult r = runInPrivateMounts(d / "t.sh");
   ASSERT_EQ(r.out.find("cannot mount"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("rc=74"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("No space left on device"), std::string::npos) << r.out;
@@ -382,11 +389,7 @@ TEST(Hostile, TheDriversOwnFailuresAreSaid) {
          "wait $pid; echo \"rc3=$?\"\n"
          "ls -A '"
       << dir << "' | grep -c '^o[123]$'\n";
-  CmdResult r{0, ""};
-  FILE* p = popen(("unshare -m sh '" + (d / "t.sh").string() + "' 2>&1").c_str(), "r");
-  char buf[4096];
-  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
-  r.code = pclose(p);
+  const CmdResult r = runInPrivateMounts(d / "t.sh");
   ASSERT_EQ(r.out.find("cannot mount"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("rc1=74"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("kernel cache '" + disk + "' has "), std::string::npos) << r.out;
@@ -436,11 +439,7 @@ TEST(Hostile, PruneOnAReadOnlyFileSystemListsOnlyWhatItRemoved) {
                             << "/out' --prune; echo \"rc=$?\"\n"
                                "ls '"
                             << disk << "/out'\n";
-  CmdResult r{0, ""};
-  FILE* p = popen(("unshare -m sh '" + (d / "t.sh").string() + "' 2>&1").c_str(), "r");
-  char buf[4096];
-  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
-  r.code = pclose(p);
+  const CmdResult r = runInPrivateMounts(d / "t.sh");
   ASSERT_EQ(r.out.find("cannot mount"), std::string::npos) << r.out;
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("rc=73"), std::string::npos) << r.out;
