@@ -21,6 +21,10 @@ mutation() {
     driver-guards) set -- "$1" host/main.cpp '  installDriverGuards();' '' "Hostile.TheDriversOwnFailuresAreSaid" ;;
     exr-header-sizes) set -- "$1" host/formats/exr/exr_reader.cpp 'checkHeaderSizes(path, checkInputFile(path, "", kCapTable));' \
                         'checkInputFile(path, "", kCapTable);' "FormatsRead.MutatedRealFilesAreReadOrRefused" ;;
+    scene-size-keys) set -- "$1" host/scene/scene_plan.cpp 'if (!k || !k->inScenes) {' 'if (!k) {' \
+                       "Scene.OutputSizeKeysAreTheKindsScenesPlan" ;;
+    kind-twice) set -- "$1" host/tables/microfacet/microfacet.cpp 'return {splitsum, albedo, avg, kp};' \
+                  'return {splitsum, albedo, avg, kp, kp};' "Registry.EveryKindIsDescribedOnceByAFamilyThatBakesIt" ;;
     render-lobe) set -- "$1" host/render/furnace.cpp 'v = vec3(e + a);' 'v = vec3(e + 0.9 * a);' \
                    "Render.DefaultBoundsAreLocalAndTight" ;;
     render-glass) set -- "$1" host/render/furnace.cpp 'v = vec3(glassE(mu, r));' 'v = vec3(glassE(mu, r) * 1.001);' \
