@@ -55,20 +55,6 @@ void BakeContext::working(const std::string& what) {
   if (runner_) runner_->setProgressLabel(what);
 }
 
-StressPoint stressPoint(const std::string& sweep, const std::string& label, double value, double reference,
-                        double bound, double slack) {
-  StressPoint p;
-  p.sweep = sweep;
-  p.label = label;
-  p.value = value;
-  p.reference = reference;
-  p.bound = bound;
-  p.finite = std::isfinite(value) && std::isfinite(bound);
-  p.error = std::fabs(value - reference) / std::max(1.0, std::fabs(reference));
-  p.withinBound = p.finite && p.error <= bound + slack;
-  return p;
-}
-
 TableReport reportOf(const TableJob& job) {
   TableReport r;
   r.table = tableName(job.kind);
