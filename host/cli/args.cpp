@@ -133,6 +133,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   if (parseSceneCommand(args, cmd)) return cmd;
   if (parseRenderCommand(args, cmd)) return cmd;
   BakeRequest req;
+  std::vector<std::string> volumeFlags;  // the brdf3d-only options given (cli/volume_args.h)
   if (first == "bake") {
     i = 1;
   } else if (first == "energy") {
@@ -181,9 +182,9 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       if (v.find(',') == std::string::npos) {
         req.size = parseSize(v);
       } else {
-        parseVolumeSize(v, req);
+        parseVolumeSize(v, req, volumeFlags);
       }
-    } else if (parseVolumeOption(opt, value, req)) {
+    } else if (parseVolumeOption(opt, value, req, volumeFlags)) {
       // a brdf3d option (cli/volume_args.cpp)
     } else if (parseLayoutOption(
                    opt, value, [&](const std::string& o) { once(o, o); }, req)) {
@@ -211,7 +212,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       for (const auto& n : splitCommas(value())) {
         if (n == "merl") {
           req.volume.merl = true;
-          req.volume.flags.push_back("--format merl");
+          volumeFlags.push_back("--format merl");
         } else {
           addUnique(req.formats, parseFormat(opt, n));
         }
@@ -383,9 +384,9 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   if (req.sigma && cmd.kind == Command::Kind::Bake) {
     if (req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
       throw Error(kExitUsage, "--sigma: only --diffuse oren-nayar and oren-nayar-as-printed take it");
-    req.volume.flags.push_back("--sigma");
+    volumeFlags.push_back("--sigma");
   }
-  validateVolumeOptions(cmd.kind == Command::Kind::Bake, req);
+  validateVolumeOptions(cmd.kind == Command::Kind::Bake, req, volumeFlags);
   if (!req.tables.empty()) {
   } else if (req.diffuse >= 0) {
     req.tables = kindsWhere([](const KindInfo& k) { return k.albedo && k.muRAxes; });  // the diffuse model's albedo

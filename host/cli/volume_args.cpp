@@ -27,7 +27,7 @@ std::vector<std::string> splitAt(const std::string& s, char sep) {
 }
 }  // namespace
 
-void parseVolumeSize(const std::string& v, BakeRequest& req) {
+void parseVolumeSize(const std::string& v, BakeRequest& req, std::vector<std::string>& given) {
   std::vector<std::string> parts = splitAt(v, ',');
   // NX,NY,NZ: a 3D table's resolution per axis
   if (parts.size() != 3)
@@ -43,12 +43,13 @@ void parseVolumeSize(const std::string& v, BakeRequest& req) {
     n[a] = static_cast<int>(x);
   }
   req.volume.size = n;
-  req.volume.flags.push_back("--size NX,NY,NZ");
+  given.push_back("--size NX,NY,NZ");
 }
 
-bool parseVolumeOption(const std::string& opt, const std::function<const std::string&()>& value, BakeRequest& req) {
+bool parseVolumeOption(const std::string& opt, const std::function<const std::string&()>& value, BakeRequest& req,
+                       std::vector<std::string>& given) {
   auto once = [&](const std::string& o) {
-    if (std::find(req.volume.flags.begin(), req.volume.flags.end(), o) != req.volume.flags.end())
+    if (std::find(given.begin(), given.end(), o) != given.end())
       throw Error(kExitUsage, o + " given twice; give it once");
   };
   if (opt == "--param") {
@@ -60,7 +61,7 @@ bool parseVolumeOption(const std::string& opt, const std::function<const std::st
       req.volume.param = Brdf3dParam::Rusinkiewicz;
     else
       throw Error(kExitUsage, "--param must be angles or rusinkiewicz, got '" + v + "'" + nearestValue("--param", v));
-    req.volume.flags.push_back(opt);
+    given.push_back(opt);
   } else if (opt == "--theta-h") {
     once(opt);
     std::string v = value();
@@ -69,7 +70,7 @@ bool parseVolumeOption(const std::string& opt, const std::function<const std::st
     else if (v != "linear")
       throw Error(kExitUsage,
                   "--theta-h must be linear or sqrt (MERL's index), got '" + v + "'" + nearestValue("--theta-h", v));
-    req.volume.flags.push_back(opt);
+    given.push_back(opt);
   } else if (opt == "--value") {
     once(opt);
     std::string v = value();
@@ -78,7 +79,7 @@ bool parseVolumeOption(const std::string& opt, const std::function<const std::st
     else if (v != "f")
       throw Error(kExitUsage,
                   "--value must be f or f-cos (f times cos theta_i), got '" + v + "'" + nearestValue("--value", v));
-    req.volume.flags.push_back(opt);
+    given.push_back(opt);
   } else if (opt == "--roughness") {
     once(opt);
     std::vector<double> v = parseValues(opt, value());
@@ -87,7 +88,7 @@ bool parseVolumeOption(const std::string& opt, const std::function<const std::st
                   "--roughness must be one value in [0.01, 1] (perceptual r; below 0.01 the lobe is "
                   "narrower than any table resolves)");
     req.volume.roughness = v[0];
-    req.volume.flags.push_back(opt);
+    given.push_back(opt);
   } else if (opt == "--rho") {
     once(opt);
     std::vector<double> v = parseValues(opt, value());
@@ -95,7 +96,7 @@ bool parseVolumeOption(const std::string& opt, const std::function<const std::st
       if (!(x >= 0 && x <= 1))
         throw Error(kExitUsage, "--rho must be one value or three (R,G,B) in [0, 1], got '" + fmtG(x) + "'");
     req.volume.rho = v;
-    req.volume.flags.push_back(opt);
+    given.push_back(opt);
   } else if (opt == "--atlas") {
     once(opt);
     std::string v = value();
@@ -108,7 +109,7 @@ bool parseVolumeOption(const std::string& opt, const std::function<const std::st
         c > kMaxVolumeSize || r > kMaxVolumeSize)
       throw Error(kExitUsage, "--atlas must be COLUMNSxROWS, each 1..1024 (e.g. 8x4), got '" + v + "'");
     req.volume.atlas = std::make_pair(static_cast<int>(c), static_cast<int>(r));
-    req.volume.flags.push_back(opt);
+    given.push_back(opt);
   } else {
     return false;
   }
@@ -116,9 +117,9 @@ bool parseVolumeOption(const std::string& opt, const std::function<const std::st
 }
 
 // The brdf3d options: only with --table brdf3d; --format merl fixes the layout MERL's files have.
-void validateVolumeOptions(bool bake, BakeRequest& req) {
+void validateVolumeOptions(bool bake, BakeRequest& req, const std::vector<std::string>& given) {
   auto& v = req.volume;
-  if (v.flags.empty()) return;
+  if (given.empty()) return;
   // the 3D textures take every option; other kinds with three size axes (the rough-dielectric cube,
   // tables/dielectric/dielectric.cpp) take NX,NY,NZ and no other
   const auto has = [&](bool (*pick)(const KindInfo&)) {
@@ -126,9 +127,9 @@ void validateVolumeOptions(bool bake, BakeRequest& req) {
   };
   const bool volume = has([](const KindInfo& k) { return k.volume; });
   const bool cube = has([](const KindInfo& k) { return k.sizeAxes == 3 && !k.volume; });
-  if (bake && cube && !volume && v.flags.size() == 1 && v.flags[0] == "--size NX,NY,NZ") return;
+  if (bake && cube && !volume && given.size() == 1 && given[0] == "--size NX,NY,NZ") return;
   if (!bake || !volume)
-    throw Error(kExitUsage, v.flags[0] + ": only --table brdf3d takes it" +
+    throw Error(kExitUsage, given[0] + ": only --table brdf3d takes it" +
                                 (bake ? std::string(" (bake --table brdf3d ...)") : std::string(" (a bake option)")));
   if (v.thetaHSqrt && v.param != Brdf3dParam::Rusinkiewicz)
     throw Error(kExitUsage, "--theta-h: only --param rusinkiewicz has a theta_h axis");
@@ -136,7 +137,7 @@ void validateVolumeOptions(bool bake, BakeRequest& req) {
     if (req.tables.size() != 1)
       throw Error(kExitUsage, "--format merl writes one brdf3d table per pair; bake the other tables in another run");
     for (const char* f : {"--size NX,NY,NZ", "--atlas", "--value", "--theta-h"})
-      if (std::find(v.flags.begin(), v.flags.end(), f) != v.flags.end())
+      if (std::find(given.begin(), given.end(), f) != given.end())
         throw Error(kExitUsage, std::string(f) +
                                     ": --format merl has MERL's fixed layout (rusinkiewicz, sqrt theta_h "
                                     "index, 90x90x180 bins, f); leave it out");
@@ -144,7 +145,7 @@ void validateVolumeOptions(bool bake, BakeRequest& req) {
       throw Error(kExitUsage,
                   "--size/--half/--precision/--grid: --format merl has MERL's fixed layout (90x90x180 doubles, bins "
                   "sampled at their lower edges); leave them out");
-    if (v.param == Brdf3dParam::Angles && std::find(v.flags.begin(), v.flags.end(), "--param") != v.flags.end())
+    if (v.param == Brdf3dParam::Angles && std::find(given.begin(), given.end(), "--param") != given.end())
       throw Error(kExitUsage, "--param angles: --format merl is over the Rusinkiewicz angles; leave --param out");
     v.param = Brdf3dParam::Rusinkiewicz;
     v.thetaHSqrt = true;

@@ -59,7 +59,6 @@ struct BakeRequest {
     std::optional<std::array<int, 3>> size;    // --size NX,NY,NZ (or N: N each)
     std::optional<std::pair<int, int>> atlas;  // --atlas CxR
     bool merl = false;                         // --format merl
-    std::vector<std::string> flags;            // brdf3d-only flags given
   } volume;
 };
 
