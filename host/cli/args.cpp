@@ -63,8 +63,7 @@ void checkFormatOptions(BakeRequest& req) {
     if (req.formats.empty()) req.formats = {lp.format};
     // a DDS holds no metadata: its KTX2 twin (the same texels) is what info and shader read
     if (req.formats == std::vector<FileFormat>{FileFormat::Dds}) req.formats.push_back(FileFormat::Ktx2);
-    if (!req.precision && formatHolds(req.formats[0], lp.precision))
-      req.precision = lp.precision, req.half = lp.precision == Precision::Float16;
+    if (!req.precision && formatHolds(req.formats[0], lp.precision)) req.precision = lp.precision;
   }
   if (req.formats.empty() && !req.volume.merl) req.formats = {FileFormat::Exr};
   if (req.precision)
@@ -206,7 +205,6 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       seen.push_back("--precision");
       if (opt == "--half") seen.push_back("--half");
       req.precision = opt == "--half" ? Precision::Float16 : parsePrecision(opt, value());
-      req.half = *req.precision == Precision::Float16;
     } else if (opt == "--format") {
       once(opt, "--format");
       for (const auto& n : splitCommas(value())) {

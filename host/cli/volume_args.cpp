@@ -141,7 +141,7 @@ void validateVolumeOptions(bool bake, BakeRequest& req, const std::vector<std::s
         throw Error(kExitUsage, std::string(f) +
                                     ": --format merl has MERL's fixed layout (rusinkiewicz, sqrt theta_h "
                                     "index, 90x90x180 bins, f); leave it out");
-    if (req.size || req.half || req.precision || req.nodeGrid)
+    if (req.size || req.precision || req.nodeGrid)
       throw Error(kExitUsage,
                   "--size/--half/--precision/--grid: --format merl has MERL's fixed layout (90x90x180 doubles, bins "
                   "sampled at their lower edges); leave them out");

@@ -18,10 +18,6 @@ Plan makePlan(const BakeRequest& given) {
   BakeRequest req = given;
   if (req.preset.empty() && req.merl.empty() && req.layoutPreset && !req.size)
     req.size = layoutPreset(*req.layoutPreset).size;
-  // --half and --precision float16 are one request, however a library caller spells it: the values'
-  // claims then include float16's rounding, and the EXR stores HALF
-  if (req.precision == Precision::Float16) req.half = true;
-  if (req.half && !req.precision) req.precision = Precision::Float16;
   Plan plan;
   plan.outDir = req.outDir;
   plan.device = req.device;

@@ -132,7 +132,7 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
     r.gafs = {m.gaf};
     r.tables = {kind};
     r.outDir = dir;
-    r.half = scene.output.half;
+    if (scene.output.half) r.precision = Precision::Float16;
     r.nodeGrid = scene.output.nodeGrid;
     auto it = sizes.size.find(kind);
     if (it != sizes.size.end()) r.size = it->second;

@@ -86,7 +86,7 @@ void TableFamily::addBakedFiles(const Job& job, BakedTable& t, FileSet& set) con
 }
 
 void applyFormats(const BakeRequest& req, TableJob& job) {
-  job.precision = req.precision ? *req.precision : req.half ? Precision::Float16 : Precision::Float32;
+  job.precision = req.precision.value_or(Precision::Float32);
   job.formats = req.formats.empty() ? std::vector<FileFormat>{FileFormat::Exr} : req.formats;
   job.layout = req.layout;
   job.layoutName = job.layout.identity() && !req.layoutPreset ? "" : layoutName(req.layoutPreset, req.layout);

@@ -24,7 +24,6 @@ struct BakeRequest {
   std::vector<TableKind> tables;
   std::optional<int> size;  // texels per axis; default per table (defaultSize)
   std::string outDir = "out";
-  bool half = false;                        // HALF instead of FLOAT channels (precision float16)
   std::optional<Precision> precision;       // --precision (--half: float16); unset: float32
   std::vector<FileFormat> formats;          // --format (merl apart: volume.merl); empty: exr
   TableLayout layout;                       // --layout preset / --axes, --flip-x, --flip-y, --channels
@@ -61,6 +60,9 @@ struct BakeRequest {
     bool merl = false;                         // --format merl
   } volume;
 };
+
+// Whether the request's tables store float16 (an EXR's HALF channels): --half is --precision float16.
+inline bool storesHalf(const BakeRequest& r) { return r.precision == Precision::Float16; }
 
 // The accepted ranges (plan/plan.h and the command line check them).
 constexpr int kMinSize = 1;

@@ -36,14 +36,14 @@ class Ashikhmin final : public TableFamily {
                                   ": --table ashikhmin-shirley holds Schlick's F split as R_s R + G (R_s enters in "
                                   "the shader); bake it without --fresnel");
     int n = req.size ? *req.size : brdfbake::defaultSize(TableKind::AshikhminShirley);
-    checkAshikhminRequest(n, req.half, req.nodeGrid);
+    checkAshikhminRequest(n, storesHalf(req), req.nodeGrid);
     if (req.diffuse >= 0)
       throw Error(kExitUsage, "--diffuse " + diffuseNames()[req.diffuse] +
                                   ": --table ashikhmin-shirley has its own diffuse texture (Tex0); bake it "
                                   "without --diffuse");
     std::vector<Job> jobs;
     for (int t = 0; t < kAsTextures; ++t) {
-      TableJob job = tableJob(TableKind::AshikhminShirley, -1, -1, n, n, false, req.half);
+      TableJob job = tableJob(TableKind::AshikhminShirley, -1, -1, n, n, false, storesHalf(req));
       job.texture = t;
       job.path = req.outDir + "/" + ashikhminFileName(t);
       applyFormats(req, job);

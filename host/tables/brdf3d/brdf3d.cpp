@@ -73,7 +73,7 @@ std::vector<Job> planVolumes(const TableFamily* family, const BakeRequest& req) 
       s.thetaHSqrt = v.thetaHSqrt;
       s.timesCos = v.timesCos;
       job.merl = v.merl;
-      job.half = req.half;
+      job.half = storesHalf(req);
       if (v.merl) {
         s.grid = Brdf3dGrid::CellStart;
         s.nx = 90;
@@ -106,7 +106,7 @@ std::vector<Job> planVolumes(const TableFamily* family, const BakeRequest& req) 
       job.path = req.outDir + "/" + volumeFileName(job);
       if (!v.merl) {
         job.formats = req.formats.empty() ? std::vector<FileFormat>{FileFormat::Exr} : req.formats;
-        job.precision = req.precision ? *req.precision : req.half ? Precision::Float16 : Precision::Float32;
+        job.precision = req.precision.value_or(Precision::Float32);
       }
       jobs.push_back(makeJob(family, TableKind::Brdf3d, job));
     }

@@ -67,7 +67,7 @@ std::vector<Job> planDielectric(const TableFamily* family, const BakeRequest& re
         j.ny = j.avg ? n : cubeN[1];
         j.nz = j.avg ? 1 : cubeN[2];
         j.nodeGrid = req.nodeGrid;
-        j.half = req.half;
+        j.half = storesHalf(req);
         if (req.etaRange) std::tie(j.etaLo, j.etaHi) = *req.etaRange;
         if (!j.avg) std::tie(j.cols, j.rows) = atlasGrid(j.nz);
         j.path = req.outDir + "/" + (j.avg ? "dielectric-avg_" : "dielectric_") + ndfNames()[ndf] + "_" +

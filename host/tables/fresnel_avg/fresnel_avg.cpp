@@ -41,7 +41,7 @@ class FresnelAvg final : public TableFamily {
                   "brdf.fresnel.avg)");
     int n = req.size ? *req.size : brdfbake::defaultSize(TableKind::FresnelAvg);
     if (n < 2) throw Error(kExitUsage, "--size must be at least 2 for fresnel-avg, got " + std::to_string(n));
-    TableJob job = tableJob(TableKind::FresnelAvg, -1, -1, n, 1, req.nodeGrid, req.half);
+    TableJob job = tableJob(TableKind::FresnelAvg, -1, -1, n, 1, req.nodeGrid, storesHalf(req));
     job.fresnel = req.fresnel;
     job.path = req.outDir + "/fresnel-avg_" + fresnelNames()[job.fresnel.model] + ".exr";
     applyFormats(req, job);

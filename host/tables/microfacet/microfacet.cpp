@@ -274,7 +274,7 @@ class Microfacet final : public TableFamily {
       if (asks(req, TableKind::Albedo)) {
         int n = req.size ? *req.size : defaultSize(TableKind::Albedo);
         if (req.nodeGrid && n < 2) throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
-        TableJob job = tableJob(TableKind::Albedo, -1, -1, n, n, req.nodeGrid, req.half);
+        TableJob job = tableJob(TableKind::Albedo, -1, -1, n, n, req.nodeGrid, storesHalf(req));
         job.diffuse = req.diffuse;
         jobs.push_back(add(req, job));
       }
@@ -300,7 +300,7 @@ class Microfacet final : public TableFamily {
                             (gaf == GAF_NEUBELT ? "at the corner r = 0: E(0, r) grows like 1/(r sqrt(2 pi))"
                                                 : "its fitted Lambda is finite at grazing, so G/(n.o) is not") +
                             "), the grid's first column; use --grid texel-center for " + tableName(kind));
-          TableJob job = tableJob(kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, req.half);
+          TableJob job = tableJob(kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, storesHalf(req));
           job.fresnel = req.fresnel;
           job.diffuse = kind == TableKind::SplitSum ? req.diffuse : -1;
           job.muSqrt = twoD && req.muSqrt.value_or(false);  // validated: cli/layout_args.cpp
@@ -378,7 +378,7 @@ class Microfacet final : public TableFamily {
                     "--preset gltf --grid node: the sheen tables are infinite at mu = 0 (charlie-smith's "
                     "Lambda is finite at grazing; neubelt's corner mu = r = 0), the node grid's first column; "
                     "the preset bakes texel centres, which texture(lut, vec2(NdotV, roughness)) samples");
-      TableJob job = tableJob(kind, ndf, gaf, n, n, false, req.half);
+      TableJob job = tableJob(kind, ndf, gaf, n, n, false, storesHalf(req));
       jobs.push_back(add(req, job));
     }
     return jobs;
