@@ -16,8 +16,8 @@ mutation() {
                         'if (!id) continue;' "FirstRun.StaleForeignOrTornEntries" ;;
     program-checksum) set -- "$1" host/cl/program_cache.cpp 'sum != entryHash(bin.data(), bin.size()) || ' 'false || ' \
                         "FirstRun.StaleForeignOrTornEntries" ;;
-    progress-on-pipe) set -- "$1" host/cli/console.cpp 'const bool progress = !quiet && ::isatty(STDERR_FILENO);' \
-                        'const bool progress = !quiet;' "FirstRun.ProgressLineOnATerminalOnly" ;;
+    progress-on-pipe) set -- "$1" host/cli/console.cpp 'const bool progress = (!quiet && terminal) || forceProgress;' \
+                        'const bool progress = !quiet || forceProgress;' "FirstRun.ProgressLineOnATerminalOnly" ;;
     driver-guards) set -- "$1" host/main.cpp '  installDriverGuards();' '' "Hostile.TheDriversOwnFailuresAreSaid" ;;
     exr-header-sizes) set -- "$1" host/formats/exr/exr_reader.cpp 'checkHeaderSizes(path, checkInputFile(path, "", kCapTable));' \
                         'checkInputFile(path, "", kCapTable);' "FormatsRead.MutatedRealFilesAreReadOrRefused" ;;
@@ -83,7 +83,8 @@ mutation() {
 names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass render-single render-glass-dark glass-eta-axis
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
        canonical-gaf trap-pi-batch ggx-one-division trap-lanes arc-lanes gk-pair lane-sum4 node-reuse devices-stale
-       fresnel-eta-z fresnel-layer fresnel-claim-inflated fresnel-kink-claim fresnel-float-model"
+       fresnel-eta-z fresnel-layer fresnel-claim-inflated fresnel-kink-claim fresnel-float-model
+       driver-guards exr-header-sizes kind-twice scene-size-keys"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
