@@ -112,7 +112,7 @@ TEST(Readme, CommandsRunAsShown) {
 }
 
 // docs/commands-reference.md is the help, byte for byte: `brdfbake help --markdown` makes both
-// from one table (host/cli/commands.cpp), so a changed option or default shows here until the
+// from one table (host/cli/commands.cpp, host/cli/option_table.cpp), so a changed option or default shows here until the
 // page is regenerated (./build/brdfbake help --markdown > docs/commands-reference.md).
 TEST(Docs, CommandsReferenceIsTheHelp) {
   CmdResult r = run("help --markdown");

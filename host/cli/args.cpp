@@ -318,7 +318,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
                                                    : req.fresnel.f82;
       slot = parseValues(opt, value());
     } else {
-      throw Error(kExitSoftware, "internal: " + opt + " is in the option table (cli/commands.cpp) but not parsed");
+      throw Error(kExitSoftware, "internal: " + opt + " is in the option table (cli/option_table.cpp) but not parsed");
     }
   }
   checkFormatOptions(req);

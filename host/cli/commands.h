@@ -1,7 +1,6 @@
-// Every subcommand and option of the command line, in one table. Each subcommand's --help, the
-// check that an option belongs to the command it is given to, "did you mean" for misspelt
-// commands and options, and the bash completion script are generated from it, so that they
-// cannot disagree with each other.
+// Every subcommand and option of the command line, in two tables (commands.cpp, option_table.cpp). Each subcommand's
+// --help, the check that an option belongs to the command it is given to, "did you mean" for misspelt commands and
+// options, and the bash completion script are generated from them, so that they cannot disagree with each other.
 #pragma once
 #include <string>
 #include <vector>

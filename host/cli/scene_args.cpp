@@ -64,7 +64,7 @@ bool parseSceneCommand(const std::vector<std::string>& args, Command& cmd) {
     } else if (opt == "--cache-dir") {
       o.cacheDir = value();
     } else {
-      throw Error(kExitSoftware, "internal: " + opt + " is in the option table (cli/commands.cpp) but not parsed");
+      throw Error(kExitSoftware, "internal: " + opt + " is in the option table (cli/option_table.cpp) but not parsed");
     }
   }
   cmd.kind = plan ? Command::Kind::ScenePlan : Command::Kind::SceneBake;
