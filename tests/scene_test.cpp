@@ -175,7 +175,9 @@ TEST(Registry, EveryKindIsDescribedOnceByAFamilyThatBakesIt) {
     const std::string n = tableName(k.kind);
     EXPECT_EQ(defaultSize(k.kind), n == "splitsum" || n == "fresnel-avg" || n == "ashikhmin-shirley" ? 128 : 32) << n;
     EXPECT_EQ(findKind(n), &kindInfo(k.kind));
-    if (k.shader == ShaderLookup::Value) EXPECT_FALSE(k.shaderValue.empty()) << n;
+    if (k.shader == ShaderLookup::Value) {
+      EXPECT_FALSE(k.shaderValue.empty()) << n;
+    }
   }
   EXPECT_EQ(findKind("nothing"), nullptr);
 }
@@ -197,7 +199,9 @@ TEST(Scene, OutputSizeKeysAreTheKindsScenesPlan) {
       why = e.what();
     }
     EXPECT_EQ(parsed, k.inScenes) << name << ": " << why;
-    if (!k.inScenes) EXPECT_NE(why.find("unknown key '" + name + "' in [output.size]"), std::string::npos) << why;
+    if (!k.inScenes) {
+      EXPECT_NE(why.find("unknown key '" + name + "' in [output.size]"), std::string::npos) << why;
+    }
   }
 }
 

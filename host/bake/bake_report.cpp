@@ -71,7 +71,7 @@ std::string energyWarnings(const TableImage& t) {
       if (str("brdf.material").rfind("merl:", 0) == 0)  // measured data: the file, not a model
         return "warning: " + name + " exceeds 1 (max " + b + "): " + str("brdf.material") +
                " reflects more than it receives (a measurement or calibration error in the data)\n";
-      if (!str("brdf.diffuse").empty() && kind->shader == ShaderLookup::Value) {  // a diffuse model's albedo
+      if (!str("brdf.diffuse").empty() && kind->albedo && !kind->average) {  // a diffuse model's albedo
         std::string d = str("brdf.diffuse");
         std::string why = d == "burley" ? " (a known property of Burley's model: rough surfaces at grazing angles)"
                           : d == "oren-nayar"

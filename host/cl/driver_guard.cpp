@@ -86,6 +86,9 @@ void putHandlersInFront() {
   }
 }
 
+// Whether a build log holds a compiler diagnostic (clang's "file:line:col: error: ...").
+bool hasDiagnostic(const std::string& log) { return log.find("error:") != std::string::npos; }
+
 }  // namespace
 
 void checkDriverCacheSpace(const std::string& dir) {
@@ -104,7 +107,7 @@ void checkDriverCacheSpace(const std::string& dir) {
 }
 
 ExitCode driverFailureCode(const std::string& log, const std::string& dir) {
-  if (log.find("error:") != std::string::npos) return kExitSoftware;
+  if (hasDiagnostic(log)) return kExitSoftware;
   struct stat st {};
   if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || ::access(dir.c_str(), W_OK | X_OK) != 0)
     return kExitCantCreat;
@@ -112,7 +115,7 @@ ExitCode driverFailureCode(const std::string& log, const std::string& dir) {
 }
 
 std::string driverCacheHint(const std::string& log, const std::string& dir) {
-  if (log.find("error:") != std::string::npos) return "";
+  if (hasDiagnostic(log)) return "";
   return "\nThe driver gave no compiler diagnostic: on PoCL this is its kernel cache '" + dir +
          "' removed, full or unwritable during the build. Run again, or give --cache-dir DIR on a directory "
          "nothing else changes.";

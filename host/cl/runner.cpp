@@ -27,7 +27,10 @@ KernelRunner::KernelRunner(const cl::Device& device) : device_(device) {
   cpu_ = (device_.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
   fp64_ = device_.getInfo<CL_DEVICE_EXTENSIONS>().find("cl_khr_fp64") != std::string::npos;
   slots_.push_back(std::make_unique<Slot>(device_));
-  if (onPocl(device_)) driverWork_ = std::make_unique<DriverWork>(poclCacheDir());
+  if (onPocl(device_)) {
+    driverCache_ = poclCacheDir();
+    driverWork_ = std::make_unique<DriverWork>(driverCache_);
+  }
 }
 
 KernelRunner::~KernelRunner() = default;
@@ -102,7 +105,7 @@ std::string buildLog(cl::Program& prog, const cl::Device& device, cl_int* rc) {
 // then holds their work-group functions too).
 void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* done) {
   auto t0 = std::chrono::steady_clock::now();
-  const std::string driverCache = driverWork_ ? poclCacheDir() : "";
+  const std::string& driverCache = driverCache_;
   const std::string source = programSource(w.key), name = programName(w.key);
   const std::string identity = programIdentity(device_, name, kBuildOptions, source);
   std::string where;

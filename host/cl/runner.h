@@ -219,6 +219,7 @@ class KernelRunner {
   // PoCL writes into its kernel cache while it builds and first launches kernels: its failures
   // there are said as such for the runner's life (cl/driver_guard.h).
   std::unique_ptr<DriverWork> driverWork_;
+  std::string driverCache_;  // PoCL's kernel cache directory; "" on other drivers
   bool cpu_ = false;
   bool fp64_ = false;     // the device has cl_khr_fp64: the 3D tables' programs compute in double
   bool planned_ = false;  // prepareAll() has run

@@ -237,6 +237,11 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
   }
   // what was left out, each line led by the kinds that serve the use
   auto serving = [](unsigned use, const std::string& last) { return kindNames(kindsServing(use), last); };
+  auto namesOf = [](const std::vector<TableKind>& kinds) {
+    std::vector<std::string> v;
+    for (TableKind k : kinds) v.push_back(tableName(k));
+    return v;
+  };
   if (!L.ibl) sp.leftOut.push_back(serving(kUseIbl, "and") + ": image-based lighting is off (lighting.ibl = false)");
   if (!L.multiscatter)
     sp.leftOut.push_back(serving(kUseMultiscatter, "and") +
@@ -248,7 +253,9 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
                                      : ": analytic lights are off (lighting.analytic = false)"));
   if (!anyVolume)
     sp.leftOut.push_back(serving(kUseWholeMaterial, "and") + ": no material asks for a 3D table (brdf3d = true)");
-  if (!anyGlass) sp.leftOut.push_back(serving(kUseTransmission, ",") + ": no material transmits (transmission = true)");
+  if (!anyGlass)
+    sp.leftOut.push_back(joinNames(namesOf(kindsServing(kUseTransmission))) +
+                         ": no material transmits (transmission = true)");
   sp.byHash.clear();
   sp.byPath.clear();
   sp.reasonSets.clear();

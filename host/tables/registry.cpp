@@ -56,7 +56,7 @@ std::vector<TableKind> kindsFor(const BakeRequest& req) {
 std::string kindNames(const std::vector<TableKind>& kinds, const std::string& last) {
   std::string s;
   for (size_t i = 0; i < kinds.size(); ++i)
-    s += (i == 0 ? "" : i + 1 == kinds.size() && last != "," ? " " + last + " " : ", ") + tableName(kinds[i]);
+    s += (i == 0 ? "" : i + 1 == kinds.size() ? " " + last + " " : ", ") + tableName(kinds[i]);
   return s;
 }
 

@@ -14,8 +14,7 @@ const TableFamily& familyOf(TableKind kind);
 const TableFamily& familyFor(const BakeRequest& req, TableKind kind);
 // The kinds the families that take `req` bake (a measured material's: albedo, albedo-avg, splitsum).
 std::vector<TableKind> kindsFor(const BakeRequest& req);
-// "a, b or c" (`last` "or"; "and": "a, b and c"; ",": "a, b, c"): the kinds' names for messages, in
-// the order given.
+// "a, b or c" (`last` "or"; "and": "a, b and c"): the kinds' names for messages, in the order given.
 std::string kindNames(const std::vector<TableKind>& kinds, const std::string& last = "or");
 // The kinds that serve a scene use (SceneUse bits, any of `uses`), in TableKind order.
 std::vector<TableKind> kindsServing(unsigned uses);

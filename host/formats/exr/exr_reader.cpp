@@ -53,39 +53,53 @@ uint32_t le32(const std::string& b, size_t at) {
 // in a 1 KB file had it take 2 GB. So the header is walked here first (OpenEXR file layout: magic,
 // version, then per part attributes "name\0type\0" int32 size, value, ended by an empty name; a
 // multi-part file's list of headers ends with an empty one), and every size must fit in the bytes
-// the file has left. A header longer than 1 MiB is refused too: brdfbake's are under 4 KiB.
+// the file has left. The walk reads the first 64 KiB (brdfbake's headers are under 4 KiB), and
+// the first 1 MiB only for a header that runs past them; a longer header is refused.
 void checkHeaderSizes(const std::string& path, uint64_t fileBytes) {
-  constexpr uint64_t kMaxHeader = 1 << 20;
-  const std::string b = readInputPrefix(path, "", std::min(fileBytes, kMaxHeader));
+  constexpr uint64_t kFirstRead = 64 << 10, kMaxHeader = 1 << 20;
+  struct NeedMore {};
   auto fail = [&](const std::string& why) { readError(path, "header: " + why); };
-  if (b.size() < 8) fail("the file is shorter than its magic number and version");
-  const bool multipart = (le32(b, 4) & 0x1000) != 0;
-  size_t p = 8;
-  auto cString = [&](const char* what) {
-    const size_t end = b.find('\0', p);
-    if (end == std::string::npos || end - p > 255)
-      fail(std::string(what) + " at byte " + std::to_string(p) + " is not ended within 255 bytes of the header");
-    std::string text = b.substr(p, end - p);
-    p = end + 1;
-    return text;
-  };
-  for (int part = 0;; ++part) {
+  // walks b, the file's first bytes; throws NeedMore where the header runs past them and more may be read
+  auto walk = [&](const std::string& b, bool last) {
+    auto short_ = [&](const std::string& why) {
+      if (!last && b.size() < fileBytes) throw NeedMore{};
+      fail(b.size() == fileBytes ? why : "longer than 1 MiB");
+    };
+    if (b.size() < 8) fail("the file is shorter than its magic number and version");
+    const bool multipart = (le32(b, 4) & 0x1000) != 0;
+    size_t p = 8;
+    auto cString = [&](const char* what) {
+      const size_t end = b.find('\0', p);
+      if (end == std::string::npos && b.size() - p <= 255) short_("the file ends inside it");
+      if (end == std::string::npos || end - p > 255)
+        fail(std::string(what) + " at byte " + std::to_string(p) + " is not ended within 255 bytes of the header");
+      std::string text = b.substr(p, end - p);
+      p = end + 1;
+      return text;
+    };
     while (true) {
-      if (p >= b.size()) fail(b.size() == fileBytes ? "the file ends inside it" : "longer than 1 MiB");
-      const std::string name = cString("an attribute name");
-      if (name.empty()) break;  // the part's header ends
-      cString("an attribute type");
-      if (p + 4 > b.size()) fail("the file ends inside attribute '" + name + "'");
-      const int32_t size = static_cast<int32_t>(le32(b, p));
-      p += 4;
-      if (size < 0 || static_cast<uint64_t>(size) > fileBytes - p)
-        fail("attribute '" + name + "' declares " + std::to_string(size) + " bytes; the file has " +
-             std::to_string(fileBytes - p) + " left");
-      p += static_cast<size_t>(size);
+      while (true) {
+        if (p >= b.size()) short_("the file ends inside it");
+        const std::string name = cString("an attribute name");
+        if (name.empty()) break;  // the part's header ends
+        cString("an attribute type");
+        if (p + 4 > b.size()) short_("the file ends inside attribute '" + name + "'");
+        const int32_t size = static_cast<int32_t>(le32(b, p));
+        p += 4;
+        if (size < 0 || static_cast<uint64_t>(size) > fileBytes - p)
+          fail("attribute '" + name + "' declares " + std::to_string(size) + " bytes; the file has " +
+               std::to_string(fileBytes - p) + " left");
+        p += static_cast<size_t>(size);
+      }
+      if (!multipart) return;
+      if (p >= b.size()) short_("the file ends inside the list of headers");
+      if (b[p] == '\0') return;  // the empty header ends the list
     }
-    if (!multipart) break;
-    if (p >= b.size()) fail("the file ends inside the list of headers");
-    if (b[p] == '\0') break;  // the empty header ends the list
+  };
+  try {
+    walk(readInputPrefix(path, "", std::min(fileBytes, kFirstRead)), fileBytes <= kFirstRead);
+  } catch (const NeedMore&) {
+    walk(readInputPrefix(path, "", std::min(fileBytes, kMaxHeader)), true);
   }
 }
 
