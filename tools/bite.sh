@@ -25,6 +25,8 @@ mutation() {
                        "Scene.OutputSizeKeysAreTheKindsScenesPlan" ;;
     kind-twice) set -- "$1" host/tables/microfacet/microfacet.cpp 'return {splitsum, albedo, avg, kp};' \
                   'return {splitsum, albedo, avg, kp, kp};' "Registry.EveryKindIsDescribedOnceByAFamilyThatBakesIt" ;;
+    library-holds-a-client) set -- "$1" CMakeLists.txt '  host/tables/registry.cpp' \
+                              '  host/tables/registry.cpp host/report/energy.cpp' "CMakePackage.Consumer_installed" ;;
     render-lobe) set -- "$1" host/render/furnace.cpp 'v = vec3(e + a);' 'v = vec3(e + 0.9 * a);' \
                    "Render.DefaultBoundsAreLocalAndTight" ;;
     render-glass) set -- "$1" host/render/furnace.cpp 'v = vec3(glassE(mu, r));' 'v = vec3(glassE(mu, r) * 1.001);' \
@@ -84,7 +86,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
        canonical-gaf trap-pi-batch ggx-one-division trap-lanes arc-lanes gk-pair lane-sum4 node-reuse devices-stale
        fresnel-eta-z fresnel-layer fresnel-claim-inflated fresnel-kink-claim fresnel-float-model
-       driver-guards exr-header-sizes kind-twice scene-size-keys"
+       driver-guards exr-header-sizes kind-twice scene-size-keys library-holds-a-client"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
