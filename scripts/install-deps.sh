@@ -23,6 +23,8 @@ TEST_PACKAGES=(
   clang libclang-rt-14-dev
   # tests: the report pages opened in a real browser (headless)
   chromium
+  # tests: the published 2016 LTC fit (three.js's copy) the LTC tables are measured against
+  libjs-three
 )
 tests=0 list=0
 for a in "$@"; do

@@ -104,6 +104,8 @@ const char* topFile(ProgramKey::Kind kind) {
       return "brdf3d.cl";
     case ProgramKey::Dielectric:
       return "dielectric.cl";
+    case ProgramKey::Ltc:
+      return "ltc.cl";
     case ProgramKey::Integrators:
       break;
   }
@@ -117,6 +119,7 @@ std::string programName(const ProgramKey& key) {
   std::string name = ndfNames()[key.ndf] + " + " + gafNames()[key.gaf];
   if (key.kind == ProgramKey::Volume) name += " (3D tables)";
   if (key.kind == ProgramKey::Dielectric) name += " (rough dielectric)";
+  if (key.kind == ProgramKey::Ltc) name += " (LTC fits)";
   return name;
 }
 
@@ -127,7 +130,7 @@ bool programKeyNamed(const std::string& name, ProgramKey* key) {
   for (int ndf = 0; ndf < static_cast<int>(ndfNames().size()); ++ndf)
     for (int gaf = 0; gaf < static_cast<int>(gafNames().size()); ++gaf)
       if (pairSupported(ndf, gaf))
-        for (ProgramKey::Kind k : {ProgramKey::Integrators, ProgramKey::Volume, ProgramKey::Dielectric})
+        for (ProgramKey::Kind k : {ProgramKey::Integrators, ProgramKey::Volume, ProgramKey::Dielectric, ProgramKey::Ltc})
           keys.push_back(ProgramKey{k, ndf, gaf});
   for (const ProgramKey& k : keys)
     if (programName(k) == name) {
@@ -144,8 +147,9 @@ std::string programSource(const ProgramKey& key) {
   } else {
     src += "#define BRDF_NDF " + std::to_string(key.ndf) + "\n#define BRDF_GAF " + std::to_string(key.gaf) + "\n";
   }
-  // the models evaluated at points (3D tables, glass) ask for double where the device has it
-  if (key.kind != ProgramKey::Integrators) src += "#define BRDF_DEVICE_DOUBLE 1\n";
+  // the models evaluated at points (3D tables, glass) ask for double where the device has it; the
+  // LTC fits run in float (their distance's estimate error, ~1e-5, is far above float's rounding)
+  if (key.kind == ProgramKey::Volume || key.kind == ProgramKey::Dielectric) src += "#define BRDF_DEVICE_DOUBLE 1\n";
   Joiner j;
   size_t all = 0;  // room for every file once per pass: growing the 0.5 MB string page-faults 0.7 ms
   for (const auto& f : kEmbeddedKernelSources) all += std::strlen(f.text);

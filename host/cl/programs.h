@@ -11,9 +11,10 @@ namespace brdfbake {
 //  - Integrators (kernels/bake.cl): the hemisphere, k_p and diffuse kernels, for one pair, or for
 //    every pair (shared: the pair is the kernels' sel_ndf, sel_gaf arguments);
 //  - Volume (kernels/brdf3d.cl): the 3D tables, in double where the device has it;
-//  - Dielectric (kernels/dielectric.cl): the rough dielectric, in double where the device has it.
+//  - Dielectric (kernels/dielectric.cl): the rough dielectric, in double where the device has it;
+//  - Ltc (kernels/ltc.cl): the LTC fits, in float.
 struct ProgramKey {
-  enum Kind { Integrators, Volume, Dielectric } kind = Integrators;
+  enum Kind { Integrators, Volume, Dielectric, Ltc } kind = Integrators;
   int ndf = -1, gaf = -1;  // -1, -1: the shared integrators program
 
   static ProgramKey shared() { return {}; }

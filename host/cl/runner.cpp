@@ -149,7 +149,10 @@ void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* don
 
 void KernelRunner::compileKernel(Compiled& c, const std::string& name) {
   if (c.has(name)) return;
-  if (cpu_) {
+  // the tables' kernels launch once empty here; a family's own kernels compile at their first launch
+  const bool known = name == kHemisphere || name == kKp || name == kBrdf3d || name == kDielectric ||
+                     name == kDielectricNodes || name == "bake_diffuse_albedo";
+  if (cpu_ && known) {
     Slot& s = *slots_[c.slot];
     cl::Kernel k(c.program, name.c_str());
     cl::Buffer dummy(s.context, CL_MEM_READ_WRITE, 64);
@@ -240,6 +243,8 @@ std::pair<ProgramKey, const char*> ownProgram(const KernelNeed& need) {
       return {{ProgramKey::Dielectric, need.ndf, need.gaf}, kDielectric};
     case KernelNeed::DielectricNodes:
       return {{ProgramKey::Dielectric, need.ndf, need.gaf}, kDielectricNodes};
+    case KernelNeed::Own:
+      return {{need.program, need.ndf, need.gaf}, need.name};
     case KernelNeed::Hemisphere:
       break;
     case KernelNeed::Kp:

@@ -35,10 +35,26 @@ namespace brdfbake {
 
 struct Brdf3dSpec;  // common/brdf3d_grid.h
 
-// A kernel a table needs compiled, for an NDF/GAF pair (kp: the NDF alone, gaf ignored).
+// A kernel a table needs compiled, for an NDF/GAF pair (kp: the NDF alone, gaf ignored). Own: a
+// family's own kernel (`name`) in its own program (`program`), launched with KernelRunner::launch.
 struct KernelNeed {
-  enum Kernel { Hemisphere, Kp, Brdf3d, Dielectric, DielectricNodes } kernel;
+  enum Kernel { Hemisphere, Kp, Brdf3d, Dielectric, DielectricNodes, Own } kernel;
   int ndf, gaf;
+  ProgramKey::Kind program = ProgramKey::Integrators;
+  const char* name = nullptr;
+};
+
+// An argument of KernelRunner::launch: a number, floats the kernel reads, or floats it writes.
+struct LaunchArg {
+  enum Type { Int, Float, In, Out } type = Int;
+  int i = 0;
+  float f = 0;
+  const std::vector<float>* in = nullptr;
+  size_t out = 0;  // Out: how many floats
+  static LaunchArg of(int v) { return {Int, v}; }
+  static LaunchArg of(float v) { return {Float, 0, v}; }
+  static LaunchArg input(const std::vector<float>& v) { return {In, 0, 0, &v}; }
+  static LaunchArg output(size_t n) { return {Out, 0, 0, nullptr, n}; }
 };
 
 // What the albedo's two moments are (kernels/brdf/ndf.h BrdfParams): the split-sum pair by
@@ -120,6 +136,12 @@ class KernelRunner {
   std::vector<std::vector<double>> dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
                                                     const std::vector<double>& rs, const std::vector<double>& etas,
                                                     float target);
+
+  // A family's own kernel: `kernel` of the pair's program of kind `program` (kernels/<its .cl>), gx
+  // work-items in one dimension, its arguments in order; returns what each Out argument holds, in
+  // order. The kernel compiles at its first launch.
+  std::vector<std::vector<float>> launch(ProgramKey::Kind program, int ndf, int gaf, const char* kernel, size_t gx,
+                                         const std::vector<LaunchArg>& args);
 
   // Whether the device has cl_khr_fp64 (the 3D and dielectric programs then compute in double).
   bool hasDouble() const { return fp64_; }

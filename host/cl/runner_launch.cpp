@@ -378,6 +378,43 @@ std::vector<std::vector<float>> KernelRunner::dielectricSlab(int ndf, int gaf, i
   return planes;
 }
 
+std::vector<std::vector<float>> KernelRunner::launch(ProgramKey::Kind program, int ndf, int gaf, const char* kernel,
+                                                     size_t gx, const std::vector<LaunchArg>& args) {
+  Compiled& c = compiled({program, ndf, gaf}, kernel);
+  Slot& s = *slots_[c.slot];
+  cl::Kernel k(c.program, kernel);
+  std::vector<cl::Buffer> ins, outs;  // alive until the launch has run: setArg keeps no reference
+  std::vector<size_t> sizes;
+  for (size_t a = 0; a < args.size(); ++a) {
+    const LaunchArg& x = args[a];
+    const cl_uint at = static_cast<cl_uint>(a);
+    switch (x.type) {
+      case LaunchArg::Int:
+        k.setArg(at, x.i);
+        break;
+      case LaunchArg::Float:
+        k.setArg(at, x.f);
+        break;
+      case LaunchArg::In: {
+        // a kernel may read nothing from an empty input: one float keeps the buffer valid
+        std::vector<float> data = x.in->empty() ? std::vector<float>{0.0f} : *x.in;
+        ins.emplace_back(s.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, data.size() * sizeof(float), data.data());
+        k.setArg(at, ins.back());
+        break;
+      }
+      case LaunchArg::Out:
+        outs.push_back(outBuffer(s.context, std::max<size_t>(x.out, 1)));
+        sizes.push_back(x.out);
+        k.setArg(at, outs.back());
+        break;
+    }
+  }
+  run(c, k, gx, 0);
+  std::vector<std::vector<float>> result;
+  for (size_t o = 0; o < outs.size(); ++o) result.push_back(readBack(s.queue, outs[o], sizes[o]));
+  return result;
+}
+
 std::vector<std::vector<double>> KernelRunner::dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
                                                                 const std::vector<double>& rs,
                                                                 const std::vector<double>& etas, float target) {

@@ -8,6 +8,7 @@
 #include "common/models.h"
 #include "formats/layout.h"
 #include "formats/storage.h"
+#include "tables/registry.h"
 
 namespace brdfbake {
 
@@ -24,6 +25,24 @@ std::vector<std::string> formatNames() {
   v.push_back("merl");
   return v;
 }
+// --size's defaults as the families describe their kinds: "128 for splitsum, ..., 32 otherwise" (the
+// most common default last).
+std::string sizeDefaults() {
+  std::vector<std::pair<int, std::vector<TableKind>>> groups;
+  for (const KindInfo& k : allKinds()) {
+    if (k.sizeAxes != 1) continue;
+    auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) { return x.first == k.defaultSize; });
+    if (g == groups.end()) groups.push_back({k.defaultSize, {k.kind}});
+    else g->second.push_back(k.kind);
+  }
+  auto common = std::max_element(groups.begin(), groups.end(),
+                                 [](const auto& a, const auto& b) { return a.second.size() < b.second.size(); });
+  std::string s;
+  for (auto g = groups.begin(); g != groups.end(); ++g)
+    if (g != common) s += std::to_string(g->first) + " for " + kindNames(g->second, "and") + ", ";
+  return s + std::to_string(common->first) + " otherwise";
+}
+
 std::vector<std::string> precisionNames() {
   std::vector<std::string> v;
   for (Precision p : {Precision::Float32, Precision::Float16, Precision::Unorm16, Precision::Unorm8})
@@ -97,8 +116,8 @@ std::vector<OptionInfo> makeOptions() {
        "N",
        B | E | V | C,
        "Tables",
-       "texels per axis, 1..8192 (default 128 for splitsum and ashikhmin-shirley, 32 otherwise); "
-       "brdf3d and dielectric: N or X,Y,Z, 1..1024",
+       "texels per axis, 1..8192 (default " + sizeDefaults() +
+           "); brdf3d and dielectric: N or X,Y,Z, 1..1024; ltc: 2..256",
        {}},
       {"--grid",
        "",

@@ -6,3 +6,4 @@
 #include "integrate/dielectric.h"
 #include "integrate/diffuse_albedo.h"
 #include "integrate/hemisphere_texel.h"
+#include "integrate/ltc_fit.h"

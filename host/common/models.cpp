@@ -34,7 +34,7 @@ const std::vector<std::string>& gafNames() {
 const std::vector<std::string>& tableNames() {
   static const std::vector<std::string> n = {"splitsum",      "albedo", "albedo-avg",        "kp",
                                              "fresnel-avg",   "brdf3d", "ashikhmin-shirley", "dielectric",
-                                             "dielectric-avg"};
+                                             "dielectric-avg", "ltc"};
   return n;
 }
 

@@ -15,7 +15,8 @@ enum class TableKind {
   Brdf3d,
   AshikhminShirley,
   Dielectric,
-  DielectricAvg
+  DielectricAvg,
+  Ltc
 };
 
 const std::vector<std::string>& ndfNames();    // index = NDF_* id

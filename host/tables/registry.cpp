@@ -13,7 +13,8 @@ namespace brdfbake {
   X(microfacetFamily)        \
   X(measuredFamily)          \
   X(brdf3dFamily)            \
-  X(dielectricFamily)
+  X(dielectricFamily)        \
+  X(ltcFamily)
 
 #define BRDFBAKE_DECLARE(f) const TableFamily& f();
 BRDFBAKE_FAMILIES(BRDFBAKE_DECLARE)

@@ -1,0 +1,67 @@
+// LTC fits of a lobe over the engines' (roughness, view) grid, on the OpenCL device
+// (kernels/ltc.cl, kernels/integrate/ltc_fit.h), with the magnitudes from the integrators.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cl/runner.h"
+
+namespace brdfbake {
+
+// The lobe a table fits: an NDF/GAF pair's specular lobe (diffuse = -1), or a diffuse model.
+struct LtcLobeSpec {
+  int ndf = -1, gaf = -1;
+  int diffuse = -1;
+  bool isDiffuse() const { return diffuse >= 0; }
+  std::string name() const;  // "ggx_smith-correlated", "burley"
+};
+
+// The grid: texel (x, y) of an n x n table holds roughness r = x/(n - 1) (alpha = r^2, floored at
+// kLtcMinAlpha) and the view at sqrt(1 - mu) = y/(n - 1), theta_v capped at kLtcMaxTheta: the 2016
+// fit's and the engines' parameterisation (three.js's LTC_Uv, Blender's ltc_mat_ggx).
+constexpr double kLtcMinAlpha = 1e-5;
+constexpr double kLtcMaxTheta = 1.57;
+// Texels whose magnitude E is below this carry no light worth an LTC (kernels/ltc.cl
+// LTC_NEGLIGIBLE_E): their distance is stated as 1, which every LTC meets.
+constexpr double kLtcNegligibleE = 1e-6;
+double ltcRoughness(int x, int n);
+double ltcMu(int y, int n);
+// A diffuse model's parameter at roughness r: its axis (common/material.h diffuseAxis) over [0, 1].
+double ltcDiffuseParam(int diffuse, double r);
+
+// The fit's budgets (objective points per strategy, Nelder-Mead evaluations, the distance's points
+// per strategy and shifts). The defaults: 128 points, 300 + 60 evaluations (the last at 4x the
+// points), 512 points x 8 shifts.
+struct LtcBudget {
+  int fitPoints = 128;
+  int evals = 300;
+  int polishEvals = 60;
+  int finalPoints = 512;
+  int shifts = 8;
+};
+
+// An n x n fit, every plane [y * n + x].
+struct LtcFit {
+  int n = 0;
+  std::vector<float> store[4];   // M^-1 / M^-1_11 entries: (inv00, inv20, inv02, inv22)
+  std::vector<float> e, b;       // magnitude E (F = 1) and Fresnel moment B = int f (1 - o.h)^5 cos
+  std::vector<double> eBound;    // E's and B's claim (absolute), the integrators' or the diffuse rule's
+  std::vector<float> tv, tvErr;  // total-variation distance of the fit and its error estimate (the
+                                 // lattices' spread and E's claim relative to E)
+  std::vector<float> below;      // the LTC's mass below the horizon
+  std::vector<float> evals;      // objective evaluations spent
+  double seconds = 0;            // fitting (device) time
+  double magnitudeSeconds = 0;   // E and B
+};
+
+// Fits every texel, rows from the roughest down, each start from the row above (kernels/ltc.cl).
+// Progress: runner.progress("rows", ...).
+LtcFit fitLtc(KernelRunner& runner, const LtcLobeSpec& lobe, int n, const LtcBudget& budget = {});
+
+// The distance (planes TV, error estimate, mass below) of other stored LTCs (four planes, [y * n + x],
+// as LtcFit::store) to the same lobes, measured as fitLtc measures its own; e: the magnitudes.
+std::vector<std::vector<float>> measureLtc(KernelRunner& runner, const LtcLobeSpec& lobe, int n,
+                                           const std::vector<float> (&store)[4], const std::vector<float>& e,
+                                           const LtcBudget& budget = {});
+
+}  // namespace brdfbake

@@ -1,0 +1,358 @@
+/* ltc_fit.h: fitting an LTC (brdf/ltc.h) to a cosine-weighted BRDF lobe, and the fit's distance.
+ *
+ * The lobe. For a view v = (sin theta_v, 0, mu), the normalised cosine-weighted lobe is
+ *   p(w) = f(v, w) max(0, w_z) / E(mu),   E = int f(v, w) max(0, w_z) dw,
+ * with f the specular lobe of the prelude's pair at F = 1 (brdf/brdf.h) or a diffuse model (rho = 1).
+ * E comes from the host (the integrators' exact value), so that p integrates to 1 up to E's claim.
+ *
+ * The distance. The fit's error is the total-variation distance
+ *   TV = 1/2 int_S2 |p(w) - D(w)| dw,
+ * over the whole sphere, so that the LTC's mass below the horizon counts (p is 0 there). For any
+ * set A of directions (a polygon light, clipped or not), |int_A p - int_A D| <= TV: TV bounds the
+ * shading integral's error as a fraction of the lobe's magnitude E, whatever the light.
+ *
+ * Estimator. Multiple importance sampling with the balance heuristic (Veach 1997, sec. 9.2.1) over
+ * three strategies, n_s points each: the lobe's own (for microfacet NDFs the GGX visible normals of
+ * the lobe's alpha reflected about v, Heitz 2018, "Sampling the GGX Distribution of Visible
+ * Normals", pdf G1(v) D(h)/(4 mu); for charlie its half-vectors, ltc_pdf_sheen; none for diffuse
+ * lobes), the clamped cosine (pdf w_z/pi), and the LTC itself (pdf D). Point k of strategy s contributes
+ *   |p - D|(w_k) / sum_s' n_s' pdf_s'(w_k),
+ * and the sum over all points estimates int |p - D|. The D part of each term is at most 1/n_D and
+ * the p part at most p/(n_v pdf_v + n_c pdf_c): bounded for every lobe here, so the estimate's
+ * spread shrinks like a bounded integrand's. Points are a rank-1 lattice (k/n, frac(k g)), g the
+ * golden ratio's fractional part, shifted modulo 1 (Cranley and Patterson 1976): R shifts give R
+ * independent estimates whose mean is the distance and whose spread its error estimate (ltc_tv).
+ *
+ * The fit. Nelder and Mead 1965 on (log m11, log m22, m13, phi) minimising TV on one fixed shift (a
+ * smooth objective in M: the LTC's own points move with M, continuously), restarted once from its
+ * best vertex with a smaller simplex. The start is the best of the candidates the kernel is given
+ * (the neighbouring texels' fits) and of a cosine about the lobe's mean direction.
+ */
+/* Once per pass (compat.h "Passes"). */
+#if defined(BRDF_SECOND_PASS) ? !defined(BRDF_LTC_FIT_H_2) : !defined(BRDF_LTC_FIT_H)
+#ifdef BRDF_SECOND_PASS
+#define BRDF_LTC_FIT_H_2
+#else
+#define BRDF_LTC_FIT_H
+#endif
+#include "brdf/brdf.h"
+#include "brdf/ltc.h"
+#ifndef BRDF_LANE_PASS
+
+#define LTC_GOLDEN RC(0.61803398874989484820)
+/* the smallest alpha fitted: a mirror has no LTC; the 2016 table's r = 0 row is at alpha = 1e-5 too
+ * (its texel at mu = 1 stores M^-1 = diag(1, 1, 2e-5)) */
+#define LTC_MIN_ALPHA RC(1e-5)
+#define LTC_LOBE_SPECULAR 0
+#define LTC_LOBE_DIFFUSE 1
+
+/* One texel's lobe: the view, the material and the magnitude E. */
+typedef struct LtcLobe {
+  int kind;      /* LTC_LOBE_SPECULAR (the prelude's pair) or LTC_LOBE_DIFFUSE */
+  BrdfMaterial m;
+  real vx, vz;   /* v = (sin theta_v, 0, mu) */
+  real alpha;    /* the visible-normal proposal's alpha (0: none) */
+  real sheen_k;  /* the charlie proposal's exponent 1/alpha (0: none) */
+  real g1_over_mu; /* G1(v)/mu of GGX at that alpha, finite at mu = 0 */
+  real inv_e;    /* 1/E */
+} LtcLobe;
+
+/* The lobe of texel (mu, r): the pair's specular lobe at F = 1, or diffuse model `diffuse` with
+ * parameter dparam; inv_kp for the gaussian (from the host, else 0). */
+BRDF_FN LtcLobe ltc_lobe(int kind, int ndf, int gaf, int diffuse, real mu, real r, real dparam, real inv_kp, real e) {
+  LtcLobe L;
+  L.kind = kind;
+  real rr = fmax(r, sqrt(LTC_MIN_ALPHA));
+  L.m.ndf = ndf;
+  L.m.gaf = gaf;
+  L.m.p = brdf_params_kp(gaf, rr, inv_kp);
+  L.m.fresnel = FRESNEL_ONE;
+  L.m.diffuse = kind == LTC_LOBE_DIFFUSE ? diffuse : -1;
+  L.m.dparam = dparam;
+  L.vz = fmin(fmax(mu, RC(0.0)), RC(1.0));
+  L.vx = sqrt(fmax((RC(1.0) - L.vz) * (RC(1.0) + L.vz), RC(0.0)));
+  /* the sheen NDF's lobe is not a GGX-like peak: the cosine and the LTC's own points cover it */
+  L.alpha = (kind == LTC_LOBE_SPECULAR && !(ndf == NDF_CHARLIE)) ? L.m.p.alpha : RC(0.0);
+  /* GGX G1(v)/mu = 2/(mu + sqrt(mu^2 + alpha^2 (1 - mu^2))) (Smith's Lambda for GGX, Walter et al. 2007) */
+  L.g1_over_mu = RC(2.0) / (L.vz + sqrt(L.vz * L.vz + L.alpha * L.alpha * L.vx * L.vx));
+  L.sheen_k = (kind == LTC_LOBE_SPECULAR && ndf == NDF_CHARLIE) ? RC(1.0) / L.m.p.alpha : RC(0.0);
+  L.inv_e = e > RC(0.0) ? RC(1.0) / e : RC(0.0);
+  return L;
+}
+
+/* p(w) of the lobe at a unit direction w. */
+BRDF_FN real ltc_lobe_p(const LtcLobe* L, real x, real y, real z) {
+  if (z <= RC(0.0)) return RC(0.0);
+  BrdfGeometry g;
+  g.ni = z;
+  g.no = L->vz;
+  g.s2i = x * x + y * y;
+  g.s2o = L->vx * L->vx;
+  real hx = x + L->vx, hy = y, hz = z + L->vz;
+  real len2 = hx * hx + hy * hy + hz * hz;
+  if (len2 > RC(1e-20)) {
+    real len = sqrt(len2);
+    g.nh = hz / len;
+    g.s2h = (hx * hx + hy * hy) / len2;
+    g.oh = RC(0.5) * len;
+  } else {
+    g.nh = RC(1.0);
+    g.s2h = RC(0.0);
+    g.oh = RC(0.0);
+  }
+  real sio = sqrt(g.s2i * g.s2o);
+  g.cphi = sio > RC(0.0) ? (x * L->vx) / sio : RC(1.0);
+  real f;
+  if (L->kind == LTC_LOBE_DIFFUSE) {
+    real ni = fmax(z, BRDF_MIN_COS), no = fmax(L->vz, BRDF_MIN_COS);
+    f = diffuse_f(L->m.diffuse, L->m.dparam, ni, sqrt(g.s2i), no, L->vx, g.cphi);
+  } else {
+    f = brdf_f(L->m, g, RC(0.0), RC(0.0), RC(0.0));
+  }
+  return f * z * L->inv_e;
+}
+
+/* The visible-normal proposal's pdf at w: G1(v) D(h)/(4 mu) for h = (v + w)/|v + w| in v's hemisphere. */
+BRDF_FN real ltc_pdf_vndf(const LtcLobe* L, real x, real y, real z) {
+  real hx = x + L->vx, hy = y, hz = z + L->vz;
+  real len2 = hx * hx + hy * hy + hz * hz;
+  if (len2 <= RC(1e-20) || hz <= RC(0.0)) return RC(0.0);
+  real c2 = hz * hz / len2, s2 = (hx * hx + hy * hy) / len2;
+  real a2 = L->alpha * L->alpha;
+  real den = c2 * a2 + s2;
+  real d = a2 / (BRDF_PI * den * den);
+  return L->g1_over_mu * d * RC(0.25);
+}
+
+/* A reflected visible normal of GGX at the lobe's alpha from (u1, u2) (Heitz 2018, sec. 3: the
+ * visible hemisphere of the stretched view, its projected disk warped toward the view). */
+BRDF_FN void ltc_sample_vndf(const LtcLobe* L, real u1, real u2, real* out) {
+  real a = L->alpha;
+  /* the stretched view (a vx, 0, vz); y is the view plane's normal, so T1 = (0, 1, 0) */
+  real sx = a * L->vx, sz = L->vz, sl = sqrt(sx * sx + sz * sz);
+  sx /= sl;
+  sz /= sl;
+  real rad = sqrt(u1), ph = RC(2.0) * BRDF_PI * u2;
+  real t1 = rad * cos(ph), t2 = rad * sin(ph);
+  real s = RC(0.5) * (RC(1.0) + sz);
+  t2 = (RC(1.0) - s) * sqrt(fmax(RC(1.0) - t1 * t1, RC(0.0))) + s * t2;
+  real tn = sqrt(fmax(RC(1.0) - t1 * t1 - t2 * t2, RC(0.0)));
+  /* N = t1 T1 + t2 T2 + tn V, T1 = (0, 1, 0), T2 = V x T1 = (-sz, 0, sx) */
+  real nx = -t2 * sz + tn * sx, ny = t1, nz = t2 * sx + tn * sz;
+  real hx = a * nx, hy = a * ny, hz = fmax(nz, RC(0.0));
+  real hl = sqrt(hx * hx + hy * hy + hz * hz);
+  hx /= hl;
+  hy /= hl;
+  hz /= hl;
+  real vh = L->vx * hx + L->vz * hz;
+  out[0] = RC(2.0) * vh * hx - L->vx;
+  out[1] = RC(2.0) * vh * hy;
+  out[2] = RC(2.0) * vh * hz - L->vz;
+}
+
+/* The charlie proposal: half-vectors with density D(h) (n.h) (Estevez and Kulla 2017's D =
+ * (2 + k) sin^k(theta_h)/(2 pi), k = 1/alpha: the CDF of theta_h is sin^(k+2), so sin theta_h =
+ * u1^(1/(k+2))), reflected about v; the reflection's pdf is D(h) (n.h)/(4 |v.h|), h the upper
+ * half-vector of (v, w). Without it the cosine alone meets the lobe's sliver at small alpha once in
+ * thousands of points (a 16^2 table's distance estimate read 1.5 at r = 0). */
+BRDF_FN real ltc_pdf_sheen(const LtcLobe* L, real x, real y, real z) {
+  real hx = x + L->vx, hy = y, hz = z + L->vz;
+  real len2 = hx * hx + hy * hy + hz * hz;
+  if (len2 <= RC(1e-20)) return RC(0.0);
+  real len = sqrt(len2);
+  if (hz < RC(0.0)) len = -len;
+  hx /= len;
+  hy /= len;
+  hz /= len;
+  real s2 = fmax(RC(1.0) - hz * hz, RC(0.0));
+  real d = (RC(2.0) + L->sheen_k) * exp(RC(0.5) * L->sheen_k * log(fmax(s2, RC(1e-30)))) / (RC(2.0) * BRDF_PI);
+  real vh = fabs(L->vx * hx + L->vz * hz);
+  return vh > RC(0.0) ? d * hz / (RC(4.0) * vh) : RC(0.0);
+}
+BRDF_FN void ltc_sample_sheen(const LtcLobe* L, real u1, real u2, real* out) {
+  real st = exp(log(fmax(u1, RC(1e-30))) / (L->sheen_k + RC(2.0)));
+  real ct = sqrt(fmax(RC(1.0) - st * st, RC(0.0))), ph = RC(2.0) * BRDF_PI * u2;
+  real hx = st * cos(ph), hy = st * sin(ph), hz = ct;
+  real vh = L->vx * hx + L->vz * hz;
+  out[0] = RC(2.0) * vh * hx - L->vx;
+  out[1] = RC(2.0) * vh * hy;
+  out[2] = RC(2.0) * vh * hz - L->vz;
+}
+
+/* The lobe's own proposal: visible normals, or charlie's half-vectors; whether it has one. */
+BRDF_FN int ltc_has_lobe_proposal(const LtcLobe* L) { return L->alpha > RC(0.0) || L->sheen_k > RC(0.0); }
+BRDF_FN real ltc_pdf_lobe(const LtcLobe* L, real x, real y, real z) {
+  return L->alpha > RC(0.0) ? ltc_pdf_vndf(L, x, y, z) : ltc_pdf_sheen(L, x, y, z);
+}
+BRDF_FN void ltc_sample_lobe(const LtcLobe* L, real u1, real u2, real* out) {
+  if (L->alpha > RC(0.0))
+    ltc_sample_vndf(L, u1, u2, out);
+  else
+    ltc_sample_sheen(L, u1, u2, out);
+}
+
+BRDF_FN real ltc_frac(real x) { return x - floor(x); }
+
+/* One shift's estimate of int |p - D| (and in *below, of D's mass below the horizon): n points per
+ * strategy, the visible normals' left out where the lobe has no alpha. */
+BRDF_FN real ltc_l1(const LtcLobe* L, Ltc l, int n, real su, real sv, real* below) {
+  int nv = ltc_has_lobe_proposal(L) ? n : 0, nc = n, nq = n;
+  real sum = RC(0.0), under = RC(0.0);
+  real inv_n = RC(1.0) / (real)n;
+  for (int strat = 0; strat < 3; ++strat) {
+    int cnt = strat == 0 ? nv : n;
+    for (int k = 0; k < cnt; ++k) {
+      real u1 = ltc_frac(((real)k + RC(0.5)) * inv_n + su), u2 = ltc_frac((real)k * LTC_GOLDEN + sv);
+      real w[3];
+      if (strat == 0) {
+        ltc_sample_lobe(L, u1, u2, w);
+      } else if (strat == 1) {
+        real rad = sqrt(u1), ph = RC(2.0) * BRDF_PI * u2;
+        w[0] = rad * cos(ph);
+        w[1] = rad * sin(ph);
+        w[2] = sqrt(fmax(RC(1.0) - u1, RC(0.0)));
+      } else {
+        ltc_sample(l, u1, u2, w);
+      }
+      real p = ltc_lobe_p(L, w[0], w[1], w[2]);
+      real q = ltc_D(l, w[0], w[1], w[2]);
+      real den = (real)nq * q + (real)nc * fmax(w[2], RC(0.0)) * BRDF_INV_PI;
+      if (nv > 0) den += (real)nv * ltc_pdf_lobe(L, w[0], w[1], w[2]);
+      if (den > RC(0.0)) {
+        sum += fabs(p - q) / den;
+        if (w[2] < RC(0.0)) under += q / den;
+      }
+    }
+  }
+  *below = under;
+  return sum;
+}
+
+/* The fit's objective: TV on the first shift, n points per strategy. */
+BRDF_FN real ltc_objective(const LtcLobe* L, const real* x, int n) {
+  real below;
+  return RC(0.5) * ltc_l1(L, ltc_from_params(x[0], x[1], x[2], x[3]), n, RC(0.0), RC(0.0), &below);
+}
+
+/* TV over `reps` shifts of n points per strategy: the mean in out[0], the error estimate (three
+ * standard errors of the mean) in out[1], the mass below the horizon in out[2]. The shifts are
+ * fixed (a Weyl sequence in the square roots of 2 and 3): same input, same table. */
+BRDF_FN void ltc_tv(const LtcLobe* L, Ltc l, int n, int reps, real* out) {
+  real s1 = RC(0.0), s2 = RC(0.0), sb = RC(0.0);
+  for (int k = 0; k < reps; ++k) {
+    real below;
+    real su = ltc_frac((real)(k + 1) * RC(0.41421356237309504880));
+    real sv = ltc_frac((real)(k + 1) * RC(0.73205080756887729353));
+    real t = RC(0.5) * ltc_l1(L, l, n, su, sv, &below);
+    s1 += t;
+    s2 += t * t;
+    sb += below;
+  }
+  real mean = s1 / (real)reps;
+  real var = fmax(s2 / (real)reps - mean * mean, RC(0.0)) * (real)reps / (real)(reps > 1 ? reps - 1 : 1);
+  out[0] = mean;
+  out[1] = RC(3.0) * sqrt(var / (real)reps);
+  out[2] = sb / (real)reps;
+}
+
+/* The lobe's mean direction's angle from the normal (toward +x), from the cosine and visible-normal
+ * points alone (the LTC's are not there yet). */
+BRDF_FN real ltc_mean_angle(const LtcLobe* L, int n) {
+  real sx = RC(0.0), sz = RC(0.0);
+  int nv = ltc_has_lobe_proposal(L) ? n : 0;
+  for (int strat = 0; strat < 2; ++strat) {
+    int cnt = strat == 0 ? nv : n;
+    for (int k = 0; k < cnt; ++k) {
+      real u1 = ((real)k + RC(0.5)) / (real)n, u2 = ltc_frac((real)k * LTC_GOLDEN);
+      real w[3];
+      if (strat == 0) {
+        ltc_sample_lobe(L, u1, u2, w);
+      } else {
+        real rad = sqrt(u1), ph = RC(2.0) * BRDF_PI * u2;
+        w[0] = rad * cos(ph);
+        w[1] = rad * sin(ph);
+        w[2] = sqrt(fmax(RC(1.0) - u1, RC(0.0)));
+      }
+      real den = (real)n * fmax(w[2], RC(0.0)) * BRDF_INV_PI;
+      if (nv > 0) den += (real)nv * ltc_pdf_lobe(L, w[0], w[1], w[2]);
+      if (den > RC(0.0)) {
+        real p = ltc_lobe_p(L, w[0], w[1], w[2]) / den;
+        sx += p * w[0];
+        sz += p * w[2];
+      }
+    }
+  }
+  return atan2(sx, sz);
+}
+
+#define LTC_NP 4
+/* Nelder-Mead on x (LTC_NP parameters) from the simplex x + step_i e_i, at most max_evals objective
+ * values (*used: how many it took); x ends at the best vertex, its value returned. Reflection 1, expansion 2, contraction 1/2,
+ * shrink 1/2 (the paper's coefficients). */
+BRDF_FN real ltc_nelder_mead(const LtcLobe* L, real* x, const real* step, int n, int max_evals, real ftol, int* used) {
+  real v[LTC_NP + 1][LTC_NP];
+  real f[LTC_NP + 1];
+  for (int i = 0; i <= LTC_NP; ++i) {
+    for (int j = 0; j < LTC_NP; ++j) v[i][j] = x[j] + (i == j + 1 ? step[j] : RC(0.0));
+    f[i] = ltc_objective(L, v[i], n);
+  }
+  int evals = LTC_NP + 1;
+  while (evals < max_evals) {
+    /* order: best lo, worst hi, second worst nh */
+    int lo = 0, hi = 0;
+    for (int i = 1; i <= LTC_NP; ++i) {
+      if (f[i] < f[lo]) lo = i;
+      if (f[i] > f[hi]) hi = i;
+    }
+    int nh = lo;
+    for (int i = 0; i <= LTC_NP; ++i)
+      if (i != hi && f[i] > f[nh]) nh = i;
+    if (f[hi] - f[lo] <= ftol * (fabs(f[lo]) + RC(1e-12))) break;
+    real c[LTC_NP], xr[LTC_NP], xe[LTC_NP];
+    for (int j = 0; j < LTC_NP; ++j) {
+      c[j] = RC(0.0);
+      for (int i = 0; i <= LTC_NP; ++i)
+        if (i != hi) c[j] += v[i][j];
+      c[j] /= (real)LTC_NP;
+      xr[j] = c[j] + (c[j] - v[hi][j]);
+    }
+    real fr = ltc_objective(L, xr, n);
+    ++evals;
+    if (fr < f[lo]) {
+      for (int j = 0; j < LTC_NP; ++j) xe[j] = c[j] + RC(2.0) * (c[j] - v[hi][j]);
+      real fe = ltc_objective(L, xe, n);
+      ++evals;
+      for (int j = 0; j < LTC_NP; ++j) v[hi][j] = fe < fr ? xe[j] : xr[j];
+      f[hi] = fe < fr ? fe : fr;
+    } else if (fr < f[nh]) {
+      for (int j = 0; j < LTC_NP; ++j) v[hi][j] = xr[j];
+      f[hi] = fr;
+    } else {
+      /* contract toward the better of the worst vertex and its reflection */
+      int outside = fr < f[hi];
+      for (int j = 0; j < LTC_NP; ++j) xe[j] = c[j] + RC(0.5) * ((outside ? xr[j] : v[hi][j]) - c[j]);
+      real fc = ltc_objective(L, xe, n);
+      ++evals;
+      if (fc < (outside ? fr : f[hi])) {
+        for (int j = 0; j < LTC_NP; ++j) v[hi][j] = xe[j];
+        f[hi] = fc;
+      } else {
+        for (int i = 0; i <= LTC_NP; ++i) {
+          if (i == lo) continue;
+          for (int j = 0; j < LTC_NP; ++j) v[i][j] = v[lo][j] + RC(0.5) * (v[i][j] - v[lo][j]);
+          f[i] = ltc_objective(L, v[i], n);
+          ++evals;
+        }
+      }
+    }
+  }
+  int lo = 0;
+  for (int i = 1; i <= LTC_NP; ++i)
+    if (f[i] < f[lo]) lo = i;
+  for (int j = 0; j < LTC_NP; ++j) x[j] = v[lo][j];
+  *used = evals;
+  return f[lo];
+}
+
+#endif /* !BRDF_LANE_PASS */
+#endif /* BRDF_LTC_FIT_H */
