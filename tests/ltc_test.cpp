@@ -244,4 +244,26 @@ TEST(Ltc, BakeWritesBothFilesAndRefusesWhatItCannotFit) {
   }
 }
 
+// The lookup and polygon code on a real GL pipeline (Mesa's llvmpipe): every sphere pixel under the
+// quad light within its bound of the exact integral (render/ltc_render.cpp), and the files land.
+TEST(Ltc, QuadLightRenderStaysWithinItsBounds) {
+  const fs::path dir = freshDir("ltc", "render", false);
+  CmdResult r = run("render --light quad --cell 16 --columns 3 -o '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find(" 0 of "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("largest deviation from the exact integral"), std::string::npos) << r.out;
+  const TableImage img = readTableExr((dir / "ltc_quad.exr").string());
+  ASSERT_EQ(img.planes.size(), 3u);
+  double lit = 0;
+  for (size_t k = 0; k < img.planes[0].size(); ++k) {
+    EXPECT_LE(std::fabs(img.planes[0][k] - img.planes[1][k]), img.planes[2][k] + 1e-7) << k;
+    lit = std::max<double>(lit, img.planes[1][k]);
+  }
+  EXPECT_GT(lit, 0.05);  // the light is seen
+  EXPECT_TRUE(fs::exists(dir / "ltc_quad.png"));
+  CmdResult bad = run("render --light qaud -o '" + dir.string() + "'");
+  EXPECT_EQ(bad.code, 64);
+  EXPECT_NE(bad.out.find("did you mean 'quad'"), std::string::npos) << bad.out;
+}
+
 }  // namespace

@@ -78,6 +78,10 @@ mutation() {
                      "FresnelEdge.StiffCornerWithinItsClaim" ;;
     fresnel-claim-inflated) set -- "$1" kernels/bake.cl '    out_err[t] = hemi_rel_error(h);' \
                               '    out_err[t] = 10.0f * hemi_rel_error(h);' "FresnelEdge.StiffCornerWithinItsClaim" ;;
+    ltc-polygon-transposed) set -- "$1" host/shader/shader_gen.cpp '"(invM.x * l.x + invM.z * l.z, l.y, invM.y * l.x + invM.w * l.z);' \
+                              '"(invM.x * l.x + invM.y * l.z, l.y, invM.z * l.x + invM.w * l.z);' "Ltc.QuadLightRender" ;;
+    ltc-distance-halved) set -- "$1" kernels/integrate/ltc_fit.h '    real t = RC(0.5) * ltc_l1(L, l, n, su, sv, &below);' \
+                           '    real t = RC(0.25) * ltc_l1(L, l, n, su, sv, &below);' "Ltc.DistanceEstimateHolds" ;;
     *) return 64 ;;
   esac
   run_one "$@"
@@ -86,7 +90,8 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
        canonical-gaf trap-pi-batch ggx-one-division trap-lanes arc-lanes gk-pair lane-sum4 node-reuse devices-stale
        fresnel-eta-z fresnel-layer fresnel-claim-inflated fresnel-kink-claim fresnel-float-model
-       driver-guards exr-header-sizes kind-twice scene-size-keys library-holds-a-client"
+       driver-guards exr-header-sizes kind-twice scene-size-keys library-holds-a-client
+       ltc-polygon-transposed ltc-distance-halved"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"

@@ -317,6 +317,14 @@ std::vector<OptionInfo> makeOptions() {
        "build the default set's programs and store their binaries in DIR (docs/performance.md)",
        {}},
       // render
+      {"--light",
+       "",
+       "L",
+       kCmdRender,
+       "Render",
+       "furnace (default: the white furnace rows) or quad: spheres over roughness under a rectangle light, "
+       "shaded with the LTC tables (docs/ltc.md)",
+       {"furnace", "quad"}},
       {"--cell", "", "PX", kCmdRender, "Render", "pixels per sphere's square, 16..256 (default 48)", {}},
       {"--columns", "", "N", kCmdRender, "Render", "roughness steps from 0 to 1, 2..33 (default 11)", {}},
       {"--rows",

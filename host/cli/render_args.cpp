@@ -50,6 +50,11 @@ bool parseRenderCommand(const std::vector<std::string>& args, Command& cmd) {
       o.columns = integer(opt, v, "2..33 (roughness steps)");
     } else if (opt == "--rows") {
       o.rows = splitCommas(v);
+    } else if (opt == "--light") {
+      if (v != "furnace" && v != "quad")
+        throw Error(kExitUsage, "--light: unknown light '" + v + "'" + didYouMean(v, {"furnace", "quad"}) +
+                                    "; valid: furnace, quad");
+      o.light = v;
     } else if (opt == "--ndf" || opt == "--gaf") {
       if (v.find(',') != std::string::npos)
         throw Error(kExitUsage, opt + ": render shades one pair; give one name, got '" + v + "'");

@@ -14,6 +14,7 @@
 #include "formats/writers.h"
 #include "render/furnace.h"
 #include "render/labels.h"
+#include "render/ltc_render.h"
 #include "render/gl_context.h"
 #include "render/shader_parts.h"
 #include "shader/shader_gen.h"
@@ -114,6 +115,7 @@ std::vector<std::pair<std::string, std::string>> textOf(const TableImage& img) {
 }  // namespace
 
 int runRender(const RenderOptions& o) {
+  if (o.light == "quad") return runLtcRender(o);
   // the options first: nothing is opened, baked or written for a bad one
   if (o.cell < 16 || o.cell > 256)
     throw Error(kExitUsage, "--cell: pixels per sphere, 16..256, got " + std::to_string(o.cell));

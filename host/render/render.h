@@ -14,6 +14,7 @@ struct RenderOptions {
   int cell = 48;                                      // pixels per sphere's square, 16..256
   int columns = 11;                                   // roughness steps 0..1, 2..33
   std::vector<std::string> rows;                      // empty: every row that fits the pair
+  std::string light = "furnace";                      // furnace, or quad (render/ltc_render.h)
   std::string device, cacheDir;
   bool noWait = false;
 };

@@ -16,6 +16,7 @@ enum class ShaderLookup {
   Volume,       // a 3D texture over the BRDF's angles (brdf3d)
   EtaVolume,    // an atlas of eta slices over (mu, r) (dielectric)
   OwnShader,    // textures that come with their own shader (ashikhmin-shirley): none written
+  Ltc,          // an LTC's matrix or magnitude over (r, sqrt(1 - mu)), and the polygon integral
 };
 
 // What a scene's shading reads a kind for: scene/scene_plan.cpp plans, for each material, the

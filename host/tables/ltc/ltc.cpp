@@ -51,7 +51,7 @@ class LtcFamily final : public TableFamily {
   std::vector<KindInfo> describe() const override {
     KindInfo k{TableKind::Ltc};
     k.defaultSize = 64;
-    k.shader = ShaderLookup::OwnShader;
+    k.shader = ShaderLookup::Ltc;
     return {k};
   }
 
@@ -167,6 +167,7 @@ class LtcFamily final : public TableFamily {
       t.img.strings["brdf.channels"] =
           "R,G,B,A = M^-1 entries (0,0), (2,0), (0,2), (2,2) divided by (1,1): GLSL mat3(vec3(R, 0, G), vec3(0, 1, "
           "0), vec3(B, 0, A))";
+      t.img.strings["ltc.file"] = "matrix";
       common(t.img);
       data->m = finishTable2d(nullptr, tableJobOf(j.path), std::move(t), &data->mBounds);
     }
@@ -179,6 +180,7 @@ class LtcFamily final : public TableFamily {
       t.img.strings["brdf.channels"] =
           "R = E (the lobe's magnitude, F = 1), G = B (Fresnel moment, int f (1 - o.h)^5 cos: F0 R + (1 - F0) G "
           "is Schlick's), B = the fit's total-variation distance, A = the LTC's mass below the horizon";
+      t.img.strings["ltc.file"] = "magnitude";
       common(t.img);
       data->amp = finishTable2d(nullptr, tableJobOf(j.path), std::move(t), &data->ampBounds);
     }
