@@ -28,19 +28,22 @@
  * quadrature error is what limits a fit to broad lobes: at r = 1 the 2016 fit is within 1e-5 of the
  * optimum). x ends at the result; returns its objective on the polish's points; *evals counts in
  * units of the fit's objective. */
-static real ltc_fit_from(const LtcLobe* L, real* x, int n_fit, int max_evals, int polish_evals, int* evals) {
+static real ltc_fit_from(const LtcLobe* L, real* x, LtcFixed* F, int n_fit, int max_evals, int polish_evals,
+                         int* evals) {
   /* steps: widths by 20%, the shear by a fifth of the smaller width, the angle by a tenth of the
    * width (a narrow lobe's direction matters to within its width) */
   real wmin = exp(fmin(x[0], x[1]));
   real step[LTC_NP] = {RC(0.2), RC(0.2), RC(0.2) * wmin, RC(0.1) * fmin(wmin, RC(1.0))};
   int budget = max_evals / 2, used = 0;
-  ltc_nelder_mead(L, x, step, n_fit, budget, RC(1e-5), &used);
+  if (F->n != n_fit) ltc_fixed_init(L, n_fit, F);
+  ltc_nelder_mead(L, x, step, F, budget, RC(1e-3), &used);
   *evals += used;
   for (int j = 0; j < LTC_NP; ++j) step[j] *= RC(0.25);
-  ltc_nelder_mead(L, x, step, n_fit, max_evals - budget, RC(1e-6), &used);
+  ltc_nelder_mead(L, x, step, F, max_evals - budget, RC(1e-5), &used);
   *evals += used;
   for (int j = 0; j < LTC_NP; ++j) step[j] *= RC(0.25);
-  real f = ltc_nelder_mead(L, x, step, 4 * n_fit, polish_evals, RC(1e-7), &used);
+  ltc_fixed_init(L, 4 * n_fit, F);
+  real f = ltc_nelder_mead(L, x, step, F, polish_evals, RC(1e-7), &used);
   *evals += 4 * used;
   return f;
 }
@@ -62,14 +65,16 @@ kernel void ltc_fit_row(global float* out, global const float* prev, global cons
   guess[2] = RC(0.0);
   guess[3] = ltc_mean_angle(&L, n_fit);
   for (int j = 0; j < LTC_NP; ++j) best[j] = guess[j];
-  real fbest = ltc_objective(&L, best, n_fit);
+  LtcFixed F;
+  ltc_fixed_init(&L, n_fit, &F);
+  real fbest = ltc_objective(&L, best, &F);
   int evals = 1, from_guess = 1;
   if (has_prev) {
     for (int d = -1; d <= 1; ++d) {
       int k = i + d;
       if (k < 0 || k >= n) continue;
       for (int j = 0; j < LTC_NP; ++j) cand[j] = (real)prev[j * n + k];
-      real fc = ltc_objective(&L, cand, n_fit);
+      real fc = ltc_objective(&L, cand, &F);
       ++evals;
       if (fc < fbest) {
         fbest = fc;
@@ -92,10 +97,10 @@ kernel void ltc_fit_row(global float* out, global const float* prev, global cons
     out[11 * n + i] = (float)evals;
     return;
   }
-  real fit = ltc_fit_from(&L, best, n_fit, max_evals, polish_evals, &evals);
+  real fit = ltc_fit_from(&L, best, &F, n_fit, max_evals, polish_evals, &evals);
   /* a fit that ends far from its lobe (a narrow lobe cut by the horizon: r -> 0 at grazing views)
    * is tried again from the other start, and the closer kept: from the row above's fit alone, the
-   * 64^2 GGX table ended at TV 0.98 at r = 0, theta_v = 1.57, against 0.35 from the guess */
+   * 64^2 GGX table ended at TV 0.98 at r = 0, theta_v = 1.57, against 0.45 with the second start */
   if (fit > LTC_RETRY_TV) {
     real other[LTC_NP];
     for (int j = 0; j < LTC_NP; ++j) other[j] = guess[j];
@@ -105,7 +110,7 @@ kernel void ltc_fit_row(global float* out, global const float* prev, global cons
       else
         other[3] = -asin(L.vx); /* the mirror direction */
     }
-    real fo = ltc_fit_from(&L, other, n_fit, max_evals, polish_evals, &evals);
+    real fo = ltc_fit_from(&L, other, &F, n_fit, max_evals, polish_evals, &evals);
     if (fo < fit)
       for (int j = 0; j < LTC_NP; ++j) best[j] = other[j];
   }
@@ -113,7 +118,9 @@ kernel void ltc_fit_row(global float* out, global const float* prev, global cons
   Ltc l = ltc_from_params(best[0], best[1], best[2], best[3]);
   real st[4], tv[3];
   ltc_store(l, st);
-  ltc_tv(&L, l, n_final, reps, tv);
+  /* the distance of the LTC the table holds: its stored entries, rounded to float (near-singular
+   * matrices at r = 1 moved the distance by 7e-5 between the parameters and the stored entries) */
+  ltc_tv(&L, ltc_from_stored((float)st[0], (float)st[1], (float)st[2], (float)st[3]), n_final, reps, tv);
   for (int j = 0; j < LTC_NP; ++j) out[j * n + i] = (float)best[j];
   for (int j = 0; j < 4; ++j) out[(4 + j) * n + i] = (float)st[j];
   out[8 * n + i] = (float)tv[0];

@@ -224,6 +224,12 @@ TEST(Golden, DielectricTables) {
                            "bake --table dielectric-avg --ndf beckmann --gaf smith --size 2 -o out/b"});
 }
 
+// The LTC family: a specular, a sheen and a diffuse lobe, EXR and the header formats (three.js's .mjs).
+TEST(Golden, LtcTables) {
+  checkCase("ltc", {"bake --table ltc --size 6 --diffuse burley -o out/a",
+                    "bake --table ltc --ndf charlie --gaf charlie-smith --size 4 --format exr,header -o out/b"});
+}
+
 TEST(Golden, SceneBake) {
   checkCase("scene", {"bake forward-mobile.toml -o out", "bake pbr-desktop.toml -o out2"},
             {fs::path(BRDFBAKE_SOURCE_DIR) / "examples/scenes/forward-mobile.toml",

@@ -7,6 +7,7 @@
 #include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -111,9 +112,10 @@ TEST(Ltc, TheCosineIsAtDistanceZeroFromLambert) {
   EXPECT_GT(below, 0.0);
 }
 
-// Distances this small are the same fit: the kernel's float sums and the fit's own point set leave
-// ~1e-6 (oren-nayar at sigma = 0 is Lambert: its fit ends at 1.3e-6, the cosine measures 1.1e-7).
-constexpr double kLtcFloor = 1e-5;
+// Distances this small are the same fit: the fit's objective (3 x 96 points, then 3 x 384) does not
+// tell them apart (oren-nayar at sigma = 0 is Lambert: its fit ends at 2.3e-5 where the cosine
+// measures 1.2e-5).
+constexpr double kLtcFloor = 5e-5;
 
 // The default pair's 64 x 64 fit, once for the tests that read it.
 const LtcFit& defaultFit() {
@@ -151,18 +153,42 @@ TEST(Ltc, DefaultFitIsNoFartherThanThePublished2016Table) {
       theirsMax = std::max<double>(theirsMax, theirs[0][t]);
     }
   EXPECT_LT(oursSum, theirsSum);
+  // the same grid, channel order and normalisation as the 2016 table: where both fits are good
+  // (distance under 0.02 for both, r >= 0.1) the stored entries agree to 0.05
+  int compared = 0;
+  for (size_t t = 0; t < f.tv.size(); ++t) {
+    if (f.tv[t] > 0.02 || theirs[0][t] > 0.02 || ltcRoughness(static_cast<int>(t % n), n) < 0.1) continue;
+    ++compared;
+    for (int k = 0; k < 4; ++k)
+      EXPECT_NEAR(f.store[k][t], pub[4 * t + k], 0.05 * std::max(1.0, std::fabs(pub[4 * t + k])))
+          << "texel " << t % n << ", " << t / n << " entry " << k;
+  }
+  EXPECT_GT(compared, 1000);
+  // BRDFBAKE_LTC_DUMP=FILE: both distances per texel, for docs/ltc.md's picture (tools/ltc_figure.sh)
+  if (const char* dump = std::getenv("BRDFBAKE_LTC_DUMP")) {
+    std::ofstream out(dump);
+    out << "# x y r mu tv_brdfbake tv_2016\n";
+    for (int y = 0; y < n; ++y) {
+      for (int x = 0; x < n; ++x) {
+        const size_t t = static_cast<size_t>(y) * n + x;
+        out << x << " " << y << " " << ltcRoughness(x, n) << " " << ltcMu(y, n) << " " << f.tv[t] << " "
+            << theirs[0][t] << "\n";
+      }
+      out << "\n";
+    }
+  }
   std::printf("distance (TV) over %d texels: mean %.5f (2016: %.5f), max %.4f (2016: %.4f); closer at %d, over at %d\n",
               n * n, oursSum / (n * n), theirsSum / (n * n), oursMax, theirsMax, better, over);
 }
 
 // The distance's estimate (8 shifted lattices) against an independent quadrature in double
-// (Gauss-Legendre in cos(theta) x the trapezoid in phi, 64 x 20 x 2048 nodes), at texels where
-// both lobes are broad enough for it to converge (r >= 0.5).
+// (Gauss-Legendre in cos(theta) x the trapezoid in phi, 64 x 20 x 2048 nodes), at texels of a 16^2
+// fit where both lobes are broad enough for it to converge (r >= 0.5).
 TEST(Ltc, DistanceEstimateHoldsAgainstAQuadrature) {
-  const LtcFit& f = defaultFit();
-  const int n = 64;
-  for (int x : {32, 48, 63})
-    for (int y : {0, 20, 40, 56, 63}) {
+  const int n = 16;
+  const LtcFit f = fitLtc(runner(), LtcLobeSpec{NDF_GGX, GAF_SMITH_CORRELATED}, n);
+  for (int x : {8, 12, 15})
+    for (int y : {0, 5, 10, 14, 15}) {
       const size_t t = static_cast<size_t>(y) * n + x;
       const double r = ltcRoughness(x, n), mu = ltcMu(y, n);
       const brdf64::LtcLobe L =
@@ -172,10 +198,33 @@ TEST(Ltc, DistanceEstimateHoldsAgainstAQuadrature) {
                                    [&](double a, double b, double c) {
                                      return std::fabs(brdf64::ltc_lobe_p(&L, a, b, c) - brdf64::ltc_D(l, a, b, c));
                                    },
-                                   64, 2048);
+                                   128, 4096);
       // the estimate's error, and E's claim (p is normalised by the stored float E)
       EXPECT_NEAR(f.tv[t], ref, f.tvErr[t] + f.eBound[t] / f.e[t] + 1e-5) << "r = " << r << ", mu = " << mu;
     }
+}
+
+// The engines' files: the .mjs module's `data` is the EXR's texels in three.js's LTC_MAT_1 order
+// (RGBA, x fastest), the same floats.
+TEST(Ltc, FilesAreInTheEnginesLayout) {
+  const fs::path dir = freshDir("ltc", "layout");
+  CmdResult r = run("bake --table ltc --size 8 --format exr,header -o '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const TableImage img = readTableExr((dir / "ltc1_ggx_smith-correlated.exr").string());
+  std::ifstream in(dir / "ltc1_ggx_smith-correlated.mjs");
+  ASSERT_TRUE(in.good());
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string js = ss.str();
+  const size_t open = js.find("Float32Array.from([");
+  ASSERT_NE(open, std::string::npos) << js.substr(0, 400);
+  std::stringstream items(js.substr(open + 20, js.find("])", open) - open - 20));
+  std::vector<float> data;
+  for (std::string item; std::getline(items, item, ',');)
+    if (item.find_first_of("0123456789") != std::string::npos) data.push_back(std::stof(item));
+  ASSERT_EQ(data.size(), 8u * 8u * 4u);
+  for (size_t t = 0; t < 64; ++t)
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(data[4 * t + k], img.planes[k][t]) << t << " " << k;
 }
 
 // The diffuse models and the sheen lobe: every texel's fit is finite and no farther from its lobe

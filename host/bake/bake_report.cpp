@@ -28,6 +28,7 @@ std::string formatReport(const std::vector<TableReport>& reports) {
     std::snprintf(line, sizeof line, "%-*s  %-*s  %9s  %9.2e  %7.3f\n", int(wf), r.path.c_str(), int(wt),
                   r.table.c_str(), size.c_str(), r.errorBound, r.seconds);
     s += line;
+    if (!r.note.empty()) s += "  " + r.note + "\n";
   }
   // what the user also waited for: the seconds column is each table's own kernel time
   if (!reports.empty() && reports[0].buildSeconds > 0) {

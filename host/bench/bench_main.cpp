@@ -78,6 +78,9 @@ const char* const kUsage =
   --commit [--repeat R]: what the output directory's lock and the commit record cost: their
               steps timed against a warm default bake, both medians of R runs (at least 21), in
               the same run (host/bench/commit_bench.cpp). A few seconds.
+  --ltc [--pair NDF+GAF] [--size N]: the pair's N x N LTC fit (default ggx + smith-correlated, 64)
+              timed against the Karis MC baseline in the same run, best of --repeat; its mean and
+              largest distance (host/bench/ltc_bench.cpp). ~1 minute at 64.
   --merl FILE [--size N]: a measured material's albedo (N texel centres, default 16) and
               albedo-avg tables baked as brdfbake bakes them, each claim against a rule above the
               ones it climbs (host/bench/merl_bench.cpp). ~2 minutes at 16.
@@ -90,6 +93,7 @@ int volumeBench(KernelRunner& runner, int repeat, int bigSize);                 
 int dielectricBench(KernelRunner& runner, int samplesLog2);                     // dielectric_bench.cpp
 int dielectricAvgBench(KernelRunner& runner, int n, int ndf, int gaf);          // dielectric_bench.cpp
 int merlBench(const std::string& file, int size);                               // merl_bench.cpp
+int ltcBench(KernelRunner& runner, int ndf, int gaf, int n, int samples, int repeat);  // ltc_bench.cpp
 int commitBench(const std::string& device, int repeat);                         // commit_bench.cpp
 int allPairs(const std::string& device, int n, int stride,
              const std::vector<std::pair<int, int>>& only);                                     // pairs_bench.cpp
@@ -169,7 +173,7 @@ int main(int argc, char** argv) {
   std::string device;
   bool timesOnly = false, everyPair = false, avgCheck = false, cold = false, skipAll = false, strideSet = false;
   bool materials = false, volume = false, dielectric = false, bounds = false, dielectricAvg = false, sizeSet = false;
-  bool probeSpan = false;
+  bool probeSpan = false, ltc = false;
   std::vector<std::pair<int, int>> pairs;
   std::string csv;
   int mcLog2 = 23;
@@ -225,6 +229,8 @@ int main(int argc, char** argv) {
       merlFile = next();
     else if (a == "--commit")
       commit = true;
+    else if (a == "--ltc")
+      ltc = true;
     else if (a == "--csv")
       csv = next();
     else if (a == "--pair") {
@@ -290,6 +296,10 @@ int main(int argc, char** argv) {
       return dielectricAvgBench(runner, sizeSet ? n : 8, nd, gf);
     }
     if (volume) return volumeBench(runner, repeat, std::max(1, std::min(volumeSize, 1024)));
+    if (ltc)
+      return ltcBench(runner, pairs.empty() ? NDF_GGX : pairs[0].first,
+                      pairs.empty() ? GAF_SMITH_CORRELATED : pairs[0].second, sizeSet ? std::min(n, 256) : 64,
+                      samples, repeat);
     // the split sum of the first --pair (ggx + smith-correlated by default) against Karis's MC
     const int ndf = pairs.empty() ? NDF_GGX : pairs[0].first,
               gaf = pairs.empty() ? GAF_SMITH_CORRELATED : pairs[0].second;

@@ -409,7 +409,13 @@ std::vector<std::vector<float>> KernelRunner::launch(ProgramKey::Kind program, i
         break;
     }
   }
-  run(c, k, gx, 0);
+  // one work-item a group: a family's own kernels run long per work-item (an LTC fit: ~3 ms) and
+  // unevenly (a second start at grazing views), so groups of one balance the cores; the tables'
+  // kernels keep the fixed local size PoCL compiles once
+  if (cpu_)
+    s.queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(gx), cl::NDRange(1));
+  else
+    run(c, k, gx, 0);
   std::vector<std::vector<float>> result;
   for (size_t o = 0; o < outs.size(); ++o) result.push_back(readBack(s.queue, outs[o], sizes[o]));
   return result;

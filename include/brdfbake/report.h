@@ -18,6 +18,9 @@ struct TableReport {
   double buildSeconds = 0;
   // How the programs were made ready: "1 loaded from its binary", "2 compiled (binaries kept)"; "" when none was.
   std::string buildHow;
+  // What the family adds under the file's line, or "": an LTC table's distances and the texels past
+  // its fit target.
+  std::string note;
 };
 
 }  // namespace brdfbake

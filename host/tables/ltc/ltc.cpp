@@ -38,6 +38,17 @@ struct LtcJob : JobSpec {
 struct LtcTables : FamilyData {
   TableImage m, amp;
   std::vector<double> mBounds, ampBounds;
+  std::string note;  // the bake report's line under ltc1
+};
+
+// The fit's target: a texel farther than this from its lobe is named in the bake's report (with its
+// distance, kept as fitted). 0.1 is where the fit tries its second start (kernels/ltc.cl).
+constexpr double kLtcTarget = 0.1;
+
+// A fit kept for the bake: the exact-Smith GAFs of ggx and beckmann are the same lobes as smith's
+// (gaf_canonical, kernels/brdf/gaf.h), fitted once.
+struct KeptFit : FamilyData {
+  LtcFit fit;
 };
 
 std::string dirOf(const std::string& path) {
@@ -107,7 +118,19 @@ class LtcFamily final : public TableFamily {
   BakedTable compute(BakeContext& ctx, const Job& job) const override {
     const LtcJob j = job.get<LtcJob>();
     KernelRunner& runner = ctx.runner();
-    const LtcFit f = fitLtc(runner, j.lobe, j.n);
+    const std::string fitKey =
+        "ltc-fit:" + (j.lobe.isDiffuse() ? j.lobe.name()
+                                         : std::to_string(j.lobe.ndf) + "+" +
+                                               std::to_string(brdf64::gaf_canonical(j.lobe.ndf, j.lobe.gaf))) +
+        ":" + std::to_string(j.n);
+    auto kept = ctx.cache.find(fitKey);
+    const bool reused = kept != ctx.cache.end();
+    if (!reused) {
+      auto k = std::make_shared<KeptFit>();
+      k->fit = fitLtc(runner, j.lobe, j.n);
+      kept = ctx.cache.emplace(fitKey, k).first;
+    }
+    const LtcFit& f = std::static_pointer_cast<const KeptFit>(kept->second)->fit;
     const size_t texels = static_cast<size_t>(j.n) * j.n;
     for (size_t t = 0; t < texels; ++t) {
       bool finite = std::isfinite(f.tv[t]) && std::isfinite(f.e[t]) && std::isfinite(f.b[t]);
@@ -147,8 +170,8 @@ class LtcFamily final : public TableFamily {
           "Nelder-Mead on M = R_y(phi) [[m11, 0, m13], [0, m22, 0], [0, 0, 1]] minimising the total-variation "
           "distance 1/2 int |p - D| over the sphere, estimated by multiple importance sampling (GGX visible "
           "normals, cosine, the LTC; rank-1 lattice points), started from the row above "
-          "(host/tables/ltc/ltc_fit.cpp, kernels/integrate/ltc_fit.h); distance: 8 shifted lattices of 3 x 512 "
-          "points, error 3 standard errors";
+          "(host/tables/ltc/ltc_fit.cpp, kernels/integrate/ltc_fit.h); distance: 16 hashed shifts of a lattice "
+          "of 3 x 256 points, error 4 standard errors and E's claim";
     };
     auto tableJobOf = [&](const std::string& path) {
       TableJob tj = tableJob(TableKind::Ltc, j.lobe.isDiffuse() ? -1 : j.lobe.ndf,
@@ -163,10 +186,13 @@ class LtcFamily final : public TableFamily {
       t.axes = "r,sqrt(1-mu)";
       t.img.channels = {"R", "G", "B", "A"};
       for (const auto& s : f.store) t.img.planes.push_back(s);
-      t.claim.assign(texels, 0.0);  // the entries define the LTC: its error is the distance (ltc2's B)
+      // the entries define the LTC: a texel's claim is its distance to the lobe and that distance's
+      // estimate error (ltc2's B channel holds the distance)
+      t.claim.resize(texels);
+      for (size_t k = 0; k < texels; ++k) t.claim[k] = static_cast<double>(f.tv[k]) + f.tvErr[k];
       t.img.strings["brdf.channels"] =
           "R,G,B,A = M^-1 entries (0,0), (2,0), (0,2), (2,2) divided by (1,1): GLSL mat3(vec3(R, 0, G), vec3(0, 1, "
-          "0), vec3(B, 0, A))";
+          "0), vec3(B, 0, A)); brdf.error: the largest distance to the lobe plus its estimate's error";
       t.img.strings["ltc.file"] = "matrix";
       common(t.img);
       data->m = finishTable2d(nullptr, tableJobOf(j.path), std::move(t), &data->mBounds);
@@ -184,8 +210,26 @@ class LtcFamily final : public TableFamily {
       common(t.img);
       data->amp = finishTable2d(nullptr, tableJobOf(j.path), std::move(t), &data->ampBounds);
     }
+    // the summary line: distances, and the texels past the fit target (named, up to five)
+    {
+      std::vector<size_t> past;
+      for (size_t t = 0; t < texels; ++t)
+        if (f.e[t] >= kLtcNegligibleE && f.tv[t] > kLtcTarget) past.push_back(t);
+      std::sort(past.begin(), past.end(), [&](size_t a, size_t b) { return f.tv[a] > f.tv[b]; });
+      std::string note = "distance (TV) mean " + fmt4(tvSum / texels) + ", largest " + fmt4(f.tv[worst]) +
+                         " (r = " + fmt3(ltcRoughness(static_cast<int>(worst % j.n), j.n)) +
+                         ", mu = " + fmtG(ltcMu(static_cast<int>(worst / j.n), j.n)) + ")";
+      if (negligible) note += "; " + std::to_string(negligible) + " texels with E < 1e-6 state 1";
+      note += "; " + std::to_string(past.size()) + " texels past " + fmtG(kLtcTarget);
+      for (size_t k = 0; k < past.size() && k < 5; ++k)
+        note += std::string(k ? ", " : ": ") + fmt3(f.tv[past[k]]) + " at (r " +
+                fmt3(ltcRoughness(static_cast<int>(past[k] % j.n), j.n)) + ", mu " +
+                fmtG(ltcMu(static_cast<int>(past[k] / j.n), j.n)) + ")";
+      if (past.size() > 5) note += ", ...";
+      data->note = note;
+    }
     BakedTable out;
-    out.seconds = f.seconds + f.magnitudeSeconds;
+    out.seconds = reused ? 0.0 : f.seconds + f.magnitudeSeconds;  // a reused fit cost nothing here
     out.image = data->amp;  // the report's table; the matrices ride in the cache entry
     ctx.cache["ltc:" + job.path] = data;
     return out;
@@ -209,6 +253,7 @@ class LtcFamily final : public TableFamily {
       r.gaf = j.lobe.isDiffuse() ? "" : gafNames()[j.lobe.gaf];
       r.width = r.height = j.n;
       r.seconds = file == 0 ? t.seconds : 0;
+      r.note = file == 0 ? data->note : "";
       for (PlannedFile& pf :
            tableOutputs(FileSpec{path, j.formats, j.precision, j.half, TableLayout{}, ""}, file ? amp : m, set.keep)) {
         r.path = pf.file.path;
