@@ -160,7 +160,7 @@ TEST(Cli, BadInputGetsAClearErrorAndNothingIsWritten) {
   const BadCase cases[] = {
       {"bake --ndf phong", 64, "--ndf: unknown NDF 'phong'; valid: ggx, beckmann, blinn-phong, gaussian"},
       {"bake --gaf smyth", 64, "valid: none, implicit, cook-torrance"},
-      {"bake --table lut", 64, "--table: unknown table 'lut'; valid: splitsum, albedo, albedo-avg, kp"},
+      {"bake --table lookup", 64, "--table: unknown table 'lookup'; valid: splitsum, albedo, albedo-avg, kp"},
       {"bake --size 0", 64, "--size must be an integer in 1..8192, got 0"},
       {"bake --size -5", 64, "--size must be an integer in 1..8192, got -5"},
       {"--size=-5", 64, "--size must be an integer in 1..8192, got -5"},
