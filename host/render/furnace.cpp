@@ -173,15 +173,20 @@ std::vector<float> dispatch(const GlContext& gl, GLuint prog, int W, int H,
 }  // namespace
 
 GLuint bindTableTexture(const GlContext& gl, const Table& t, int unit) {
+  return bindPlanesTexture(gl, t.width, t.height, t.planes, unit);
+}
+
+GLuint bindPlanesTexture(const GlContext& gl, int width, int height, const std::vector<std::vector<float>>& planes,
+                         int unit) {
   const GlFunctions& g = gl.gl();
-  std::vector<float> rgba(static_cast<size_t>(t.width) * t.height * 4, 1.0f);
-  for (size_t i = 0; i < static_cast<size_t>(t.width) * t.height; ++i)
-    for (size_t c = 0; c < t.planes.size() && c < 4; ++c) rgba[i * 4 + c] = t.planes[c][i];
+  std::vector<float> rgba(static_cast<size_t>(width) * height * 4, 1.0f);
+  for (size_t i = 0; i < static_cast<size_t>(width) * height; ++i)
+    for (size_t c = 0; c < planes.size() && c < 4; ++c) rgba[i * 4 + c] = planes[c][i];
   GLuint id = 0;
   g.GenTextures(1, &id);
   g.ActiveTexture(GL_TEXTURE0 + unit);
   g.BindTexture(GL_TEXTURE_2D, id);
-  g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, t.width, t.height, 0, GL_RGBA, GL_FLOAT, rgba.data());
+  g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, rgba.data());
   g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

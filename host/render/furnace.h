@@ -71,6 +71,9 @@ struct FurnacePicture {
 // The table as an RGBA32F texture on texture unit `unit`, bilinear and clamped to the edge: what
 // the generated lookup code expects. The caller deletes the returned texture.
 GLuint bindTableTexture(const GlContext& gl, const Table& t, int unit);
+// The same for planes (one per channel, missing channels 1): RGBA32F, linear, clamped to the edge.
+GLuint bindPlanesTexture(const GlContext& gl, int width, int height, const std::vector<std::vector<float>>& planes,
+                         int unit);
 
 // Renders and measures. Error(kExitSoftware) for a pixel that is not finite.
 FurnacePicture renderFurnace(const GlContext& gl, const FurnaceSpec& s, const FurnaceTables& t);

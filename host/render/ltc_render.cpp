@@ -26,6 +26,7 @@
 #include "formats/exr/table_file.h"
 #include "formats/output_set.h"
 #include "formats/writers.h"
+#include "render/furnace.h"
 #include "render/gl_context.h"
 #include "shader/shader_gen.h"
 
@@ -100,23 +101,6 @@ double bilinear(const TableImage& t, int c, double r, double mu) {
   const double fx = px - x0, fy = py - y0;
   auto at = [&](int x, int y) { return static_cast<double>(t.planes[c][static_cast<size_t>(y) * n + x]); };
   return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
-}
-
-GLuint imageTexture(const GlContext& gl, const TableImage& t, int unit) {
-  const GlFunctions& g = gl.gl();
-  std::vector<float> rgba(static_cast<size_t>(t.width) * t.height * 4, 0.0f);
-  for (size_t i = 0; i < static_cast<size_t>(t.width) * t.height; ++i)
-    for (size_t c = 0; c < t.planes.size() && c < 4; ++c) rgba[i * 4 + c] = t.planes[c][i];
-  GLuint id = 0;
-  g.GenTextures(1, &id);
-  g.ActiveTexture(GL_TEXTURE0 + unit);
-  g.BindTexture(GL_TEXTURE_2D, id);
-  g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, t.width, t.height, 0, GL_RGBA, GL_FLOAT, rgba.data());
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return id;
 }
 
 struct Pixel {
@@ -205,7 +189,8 @@ int runLtcRender(const RenderOptions& o) {
   const GlFunctions& g = gl.gl();
   const GLuint prog = gl.computeProgram(src);
   g.UseProgram(prog);
-  GLuint tex[2] = {imageTexture(gl, t1, 0), imageTexture(gl, t2, 1)};
+  GLuint tex[2] = {bindPlanesTexture(gl, t1.width, t1.height, t1.planes, 0),
+                   bindPlanesTexture(gl, t2.width, t2.height, t2.planes, 1)};
   g.Uniform1i(g.GetUniformLocation(prog, (P1 + "_tex").c_str()), 0);
   g.Uniform1i(g.GetUniformLocation(prog, (P2 + "_tex").c_str()), 1);
   GLuint buf[2] = {0, 0};

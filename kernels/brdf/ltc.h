@@ -72,11 +72,20 @@ BRDF_FN real ltc_D(Ltc l, real x, real y, real z) {
   return (oz / len) * BRDF_INV_PI * l.det_inv / (len2 * len);
 }
 
-/* A direction distributed as D from (u1, u2) in [0, 1)^2: a cosine-distributed w_o (Malley's method),
- * then w = M w_o/|M w_o|; out[0..2]. */
-BRDF_FN void ltc_sample(Ltc l, real u1, real u2, real* out) {
+/* A clamped-cosine direction (density z/pi) from (u1, u2) in [0, 1)^2 (Malley's method: a uniform
+ * point of the unit disk lifted to the hemisphere); out[0..2]. */
+BRDF_FN void ltc_sample_cosine(real u1, real u2, real* out) {
   real rad = sqrt(u1), ph = RC(2.0) * BRDF_PI * u2;
-  real ox = rad * cos(ph), oy = rad * sin(ph), oz = sqrt(fmax(RC(1.0) - u1, RC(0.0)));
+  out[0] = rad * cos(ph);
+  out[1] = rad * sin(ph);
+  out[2] = sqrt(fmax(RC(1.0) - u1, RC(0.0)));
+}
+
+/* A direction distributed as D from (u1, u2): a cosine-distributed w_o, then w = M w_o/|M w_o|. */
+BRDF_FN void ltc_sample(Ltc l, real u1, real u2, real* out) {
+  real o[3];
+  ltc_sample_cosine(u1, u2, o);
+  real ox = o[0], oy = o[1], oz = o[2];
   real x = l.m[0] * ox + l.m[1] * oy + l.m[2] * oz;
   real y = l.m[3] * ox + l.m[4] * oy + l.m[5] * oz;
   real z = l.m[6] * ox + l.m[7] * oy + l.m[8] * oz;

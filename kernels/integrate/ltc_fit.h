@@ -207,10 +207,7 @@ BRDF_FN real ltc_l1(const LtcLobe* L, Ltc l, int n, real su, real sv, real* belo
       if (strat == 0) {
         ltc_sample_lobe(L, u1, u2, w);
       } else if (strat == 1) {
-        real rad = sqrt(u1), ph = RC(2.0) * BRDF_PI * u2;
-        w[0] = rad * cos(ph);
-        w[1] = rad * sin(ph);
-        w[2] = sqrt(fmax(RC(1.0) - u1, RC(0.0)));
+        ltc_sample_cosine(u1, u2, w);
       } else {
         ltc_sample(l, u1, u2, w);
       }
@@ -252,10 +249,7 @@ BRDF_FN void ltc_fixed_init(const LtcLobe* L, int n, LtcFixed* F) {
       if (strat == 0) {
         ltc_sample_lobe(L, u1, u2, w);
       } else {
-        real rad = sqrt(u1), ph = RC(2.0) * BRDF_PI * u2;
-        w[0] = rad * cos(ph);
-        w[1] = rad * sin(ph);
-        w[2] = sqrt(fmax(RC(1.0) - u1, RC(0.0)));
+        ltc_sample_cosine(u1, u2, w);
       }
       int c = F->count++;
       F->x[c] = w[0];
@@ -339,10 +333,7 @@ BRDF_FN real ltc_mean_angle(const LtcLobe* L, int n) {
       if (strat == 0) {
         ltc_sample_lobe(L, u1, u2, w);
       } else {
-        real rad = sqrt(u1), ph = RC(2.0) * BRDF_PI * u2;
-        w[0] = rad * cos(ph);
-        w[1] = rad * sin(ph);
-        w[2] = sqrt(fmax(RC(1.0) - u1, RC(0.0)));
+        ltc_sample_cosine(u1, u2, w);
       }
       real den = (real)n * fmax(w[2], RC(0.0)) * BRDF_INV_PI;
       if (nv > 0) den += (real)nv * ltc_pdf_lobe(L, w[0], w[1], w[2]);

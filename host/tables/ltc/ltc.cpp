@@ -181,35 +181,33 @@ class LtcFamily final : public TableFamily {
       return tj;
     };
     auto data = std::make_shared<LtcTables>();
-    {
+    // one file's table: its planes, each texel's claim, what its channels hold
+    auto table = [&](std::vector<std::vector<float>> planes, std::vector<double> claim, const std::string& file,
+                     const std::string& channels, std::vector<double>* bounds) {
       Table2d t;
       t.axes = "r,sqrt(1-mu)";
       t.img.channels = {"R", "G", "B", "A"};
-      for (const auto& s : f.store) t.img.planes.push_back(s);
-      // the entries define the LTC: a texel's claim is its distance to the lobe and that distance's
-      // estimate error (ltc2's B channel holds the distance)
-      t.claim.resize(texels);
-      for (size_t k = 0; k < texels; ++k) t.claim[k] = static_cast<double>(f.tv[k]) + f.tvErr[k];
-      t.img.strings["brdf.channels"] =
-          "R,G,B,A = M^-1 entries (0,0), (2,0), (0,2), (2,2) divided by (1,1): GLSL mat3(vec3(R, 0, G), vec3(0, 1, "
-          "0), vec3(B, 0, A)); brdf.error: the largest distance to the lobe plus its estimate's error";
-      t.img.strings["ltc.file"] = "matrix";
+      t.img.planes = std::move(planes);
+      t.claim = std::move(claim);
+      t.img.strings["brdf.channels"] = channels;
+      t.img.strings["ltc.file"] = file;
       common(t.img);
-      data->m = finishTable2d(nullptr, tableJobOf(j.path), std::move(t), &data->mBounds);
-    }
-    {
-      Table2d t;
-      t.axes = "r,sqrt(1-mu)";
-      t.img.channels = {"R", "G", "B", "A"};
-      t.img.planes = {f.e, f.b, f.tv, f.below};
-      t.claim = f.eBound;
-      t.img.strings["brdf.channels"] =
-          "R = E (the lobe's magnitude, F = 1), G = B (Fresnel moment, int f (1 - o.h)^5 cos: F0 R + (1 - F0) G "
-          "is Schlick's), B = the fit's total-variation distance, A = the LTC's mass below the horizon";
-      t.img.strings["ltc.file"] = "magnitude";
-      common(t.img);
-      data->amp = finishTable2d(nullptr, tableJobOf(j.path), std::move(t), &data->ampBounds);
-    }
+      return finishTable2d(nullptr, tableJobOf(j.path), std::move(t), bounds);
+    };
+    // the entries define the LTC: a texel's claim is its distance to the lobe and that distance's
+    // estimate error (ltc2's B channel holds the distance)
+    std::vector<double> fitClaim(texels);
+    for (size_t k = 0; k < texels; ++k) fitClaim[k] = static_cast<double>(f.tv[k]) + f.tvErr[k];
+    data->m = table({f.store[0], f.store[1], f.store[2], f.store[3]}, fitClaim, "matrix",
+                    "R,G,B,A = M^-1 entries (0,0), (2,0), (0,2), (2,2) divided by (1,1): GLSL mat3(vec3(R, 0, G), "
+                    "vec3(0, 1, 0), vec3(B, 0, A)); brdf.error: the largest distance to the lobe plus its estimate's "
+                    "error",
+                    &data->mBounds);
+    data->amp = table({f.e, f.b, f.tv, f.below}, f.eBound, "magnitude",
+                      "R = E (the lobe's magnitude, F = 1), G = B (Fresnel moment, int f (1 - o.h)^5 cos: F0 R + "
+                      "(1 - F0) G is Schlick's), B = the fit's total-variation distance, A = the LTC's mass below the "
+                      "horizon",
+                      &data->ampBounds);
     // the summary line: distances, and the texels past the fit target (named, up to five)
     {
       std::vector<size_t> past;
