@@ -238,7 +238,7 @@ int runLtcRender(const RenderOptions& o) {
       const brdf64::Ltc l = brdf64::ltc_from_stored(bilinear(t1, 0, p.r, mu), bilinear(t1, 1, p.r, mu),
                                                     bilinear(t1, 2, p.r, mu), bilinear(t1, 3, p.r, mu));
       double tv[3];
-      brdf64::ltc_tv(&L, l, 256, 4, tv);
+      brdf64::ltc_tv(&L, l, 128, 16, tv);  // 16 shifts: the error estimate ltc_tv states (4 standard errors)
       bound[k] = ei * (tv[0] + tv[1]) + std::fabs(ei - e) + std::fabs(fine - coarse) + kGpuFloat * ei;
     }
   };
