@@ -55,6 +55,7 @@ kernel void ltc_fit_row(global float* out, global const float* prev, global cons
   if (i >= n) return;
   real mu = (real)mus[i];
   LtcLobe L = ltc_lobe(kind, BRDF_NDF, BRDF_GAF, diffuse, mu, (real)r, (real)dparam, (real)inv_kp, (real)e[i]);
+  ltc_lobe_view(&L);
 
   /* candidates: a cosine about the mean direction, widths from alpha (2 alpha: the reflected
    * lobe's width at normal view) or 1 for broad lobes; the row above's fits */
@@ -138,6 +139,7 @@ kernel void ltc_measure_row(global float* out, global const float* stored, globa
   if (i >= n) return;
   real mu = (real)mus[i];
   LtcLobe L = ltc_lobe(kind, BRDF_NDF, BRDF_GAF, diffuse, mu, (real)r, (real)dparam, (real)inv_kp, (real)e[i]);
+  ltc_lobe_view(&L);
   Ltc l = ltc_from_stored((real)stored[i], (real)stored[n + i], (real)stored[2 * n + i], (real)stored[3 * n + i]);
   real tv[3] = {RC(1.0), RC(0.0), RC(0.0)};
   if (e[i] >= LTC_NEGLIGIBLE_E) ltc_tv(&L, l, n_final, reps, tv);
