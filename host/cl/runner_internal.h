@@ -1,5 +1,6 @@
-// Shared by host/cl/runner.cpp (building programs) and host/cl/runner_launch.cpp (running the
-// table kernels): the kernels' names, the fixed CPU local size, and the private structs.
+// Shared by host/cl/runner.cpp (building programs), host/cl/runner_launch.cpp and
+// host/cl/runner_points.cpp (running the kernels): the kernels' names, the fixed CPU local size, and the private
+// structs.
 #pragma once
 #include <CL/opencl.hpp>
 #include <algorithm>
@@ -20,6 +21,16 @@ inline const char* const kDielectricNodes = "bake_dielectric_points";
 // function per kernel and local size, a few tenths of a second each, so one size per kernel keeps
 // it to one. Small groups balance the uneven texel costs over the threads.
 constexpr size_t kLocalX = 8, kLocalY = 1;
+
+inline cl::Buffer outBuffer(const cl::Context& ctx, size_t n) {
+  return cl::Buffer(ctx, CL_MEM_WRITE_ONLY, n * sizeof(float));
+}
+template <class T = float>
+std::vector<T> readBack(cl::CommandQueue& q, const cl::Buffer& b, size_t n) {
+  std::vector<T> v(n);
+  q.enqueueReadBuffer(b, CL_TRUE, 0, n * sizeof(T), v.data());
+  return v;
+}
 inline size_t roundUp(size_t n, size_t m) { return (n + m - 1) / m * m; }
 
 // The weight arguments (moments, fresnel, fr_x, fr_y, fr_z) from index `first` on: kWeightArgs.
