@@ -661,7 +661,7 @@ TEST(CliEvidence, StressIsCleanAndWritesItsPage) {
   CmdResult r = run("stress -o " + d.string());
   ASSERT_EQ(r.code, 0) << r.out;
   // each family's stress points: 96 microfacet, 5 F_avg, 6 Ashikhmin-Shirley, 10 brdf3d, 12 rough glass
-  EXPECT_NE(r.out.find("all 129 points pass: finite, within their bounds, limits met"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("all 143 points pass: finite, within their bounds, limits met"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Tex2(1, v) = exp(-v^2/2) (met)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("brdf3d grazing, r 0.01"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("E_T -> (1 + L) G_T(L, L) as eta -> 1 (met)"), std::string::npos) << r.out;
@@ -680,7 +680,7 @@ TEST(CliEvidence, StressIsCleanAndWritesItsPage) {
   EXPECT_NE(html.find("every measured pixel within its bound"), std::string::npos);
   // the verdict first; the plot's legend below the data, with no failure entry when nothing fails
   EXPECT_EQ(verdictLine(html),
-            "<p class=\"verdict pass\"><strong>PASS: </strong>all 129 points pass: finite, within their bounds, limits "
+            "<p class=\"verdict pass\"><strong>PASS: </strong>all 143 points pass: finite, within their bounds, limits "
             "met</p>")
       << html;
   const std::string gp = bytes(d / "stress/stress.gp");
@@ -781,7 +781,9 @@ TEST(CliEvidence, ConvergenceForEveryTableKind) {
       {"--table dielectric --ndf ggx --gaf smith --size 2 --eta-range 1.33,1.5 --levels 0,1",
        "dielectric (E_R and E_T)"},
       {"--table dielectric-avg --ndf beckmann --gaf smith --size 1 --eta-range 0.7,1.5 --levels 0", "dielectric-avg"},
-      {merl + " --table albedo --size 1 --levels 0,1", "albedo of merl:"}};
+      {merl + " --table albedo --size 1 --levels 0,1", "albedo of merl:"},
+      {"--table ltc --size 3", "ltc of ggx_smith-correlated"},
+      {"--table ltc --diffuse burley --size 3", "ltc of burley"}};
   for (const auto& [args, title] : cases) {
     CmdResult r = run("convergence " + args + " -o " + (d / "c").string());
     ASSERT_EQ(r.code, 0) << args << "\n" << r.out;
@@ -792,8 +794,8 @@ TEST(CliEvidence, ConvergenceForEveryTableKind) {
     for (const ConvRow& row : rows) {
       EXPECT_TRUE(std::isfinite(row.error) && std::isfinite(row.estimate)) << args << ": " << row.method;
       // the bake's own rule (or budget) claims its error
-      if (row.method.find("the bake") != std::string::npos || row.method == "quadrature (device, float)" ||
-          row.method == "quadrature (device)") {
+      if (row.method.find("the bake") != std::string::npos || row.method.find("distance estimate") == 0 ||
+          row.method == "quadrature (device, float)" || row.method == "quadrature (device)") {
         EXPECT_LE(row.error, row.estimate * 1.0001 + 1e-12) << args << ": " << row.method << "\n" << r.out;
       }
     }
@@ -818,6 +820,14 @@ TEST(CliEvidence, ConvergenceForEveryTableKind) {
   r = run("convergence --table dielectric --ndf blinn-phong");
   EXPECT_EQ(r.code, 64) << r.out;
   EXPECT_NE(r.out.find("takes --ndf ggx or beckmann"), std::string::npos) << r.out;
+  r = run("convergence --table ltc --ndf ggx,beckmann");
+  EXPECT_EQ(r.code, 64) << r.out;
+  EXPECT_NE(r.out.find("convergence measures one lobe: give one --ndf and one --gaf, or one --diffuse"),
+            std::string::npos)
+      << r.out;
+  r = run("convergence --table ltc --size 33");
+  EXPECT_EQ(r.code, 64) << r.out;
+  EXPECT_NE(r.out.find("--size for convergence of ltc must be in 2..32"), std::string::npos) << r.out;
 }
 
 TEST(CliEvidence, VerifyRejectsTableOptions) {

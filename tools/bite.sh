@@ -82,6 +82,14 @@ mutation() {
                               '"(invM.x * l.x + invM.y * l.z, l.y, invM.z * l.x + invM.w * l.z);' "Ltc.QuadLightRender" ;;
     ltc-distance-halved) set -- "$1" kernels/integrate/ltc_fit.h '    real t = RC(0.5) * ltc_l1(L, l, n, su, sv, &below);' \
                            '    real t = RC(0.25) * ltc_l1(L, l, n, su, sv, &below);' "Ltc.DistanceEstimateHolds" ;;
+    ltc-distance-in-float) set -- "$1" host/tables/ltc/ltc_fit.cpp '      if (e[t] >= kLtcNegligibleE && ltcMeasuredInDouble(lobe, x, y, n)) at.push_back(t);' \
+                             '      if (false) at.push_back(t);' "Ltc.DistanceEstimateHoldsAgainstTheReference" ;;
+    ltc-variance-one-pass) set -- "$1" kernels/integrate/ltc_fit.h '  real var = m2 / (real)(reps > 1 ? reps - 1 : 1);' \
+                             '  real var = RC(0.0) * m2;' "Ltc.DistanceEstimateHoldsAgainstTheReference" ;;
+    ltc-claim-without-tenth) set -- "$1" kernels/integrate/ltc_fit.h ' + RC(0.1) * fabs(mean);' ';' \
+                               "LtcSweep.DistanceEstimateHoldsAtEverySecondRow" ;;
+    ltc-e-claim-without-float) set -- "$1" host/tables/ltc/ltc_fit.cpp 'f.eBound[t] = p[1][t] + floatArithmeticError(' \
+                                 'f.eBound[t] = p[1][t] + 0 * floatArithmeticError(' "Ltc.MagnitudeWithinItsClaim" ;;
     *) return 64 ;;
   esac
   run_one "$@"
@@ -91,7 +99,8 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        canonical-gaf trap-pi-batch ggx-one-division trap-lanes arc-lanes gk-pair lane-sum4 node-reuse devices-stale
        fresnel-eta-z fresnel-layer fresnel-claim-inflated fresnel-kink-claim fresnel-float-model
        driver-guards exr-header-sizes kind-twice scene-size-keys library-holds-a-client
-       ltc-polygon-transposed ltc-distance-halved"
+       ltc-polygon-transposed ltc-distance-halved ltc-distance-in-float ltc-variance-one-pass ltc-claim-without-tenth
+       ltc-e-claim-without-float"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"

@@ -60,7 +60,7 @@ std::vector<CommandInfo> makeCommands() {
        "One table kind (default albedo; any kind, or --brdf merl:FILE) for one pair; writes a page to\n"
        "DIR/convergence (docs/convergence.md).",
        {"brdfbake convergence --table splitsum --ndf ggx --gaf smith-correlated -o out"},
-       "it measures one --table of one --ndf/--gaf/--fresnel; --size, --levels, --samples, -o"},
+       "it measures one --table of one --ndf/--gaf/--fresnel (or --diffuse for ltc); --size, --levels, --samples, -o"},
       {"shader",
        kCmdShader,
        "brdfbake shader --lang glsl|hlsl FILE... [-o OUT]",

@@ -32,8 +32,10 @@ std::string sizeDefaults() {
   for (const KindInfo& k : allKinds()) {
     if (k.sizeAxes != 1) continue;
     auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) { return x.first == k.defaultSize; });
-    if (g == groups.end()) groups.push_back({k.defaultSize, {k.kind}});
-    else g->second.push_back(k.kind);
+    if (g == groups.end())
+      groups.push_back({k.defaultSize, {k.kind}});
+    else
+      g->second.push_back(k.kind);
   }
   auto common = std::max_element(groups.begin(), groups.end(),
                                  [](const auto& a, const auto& b) { return a.second.size() < b.second.size(); });
@@ -222,7 +224,7 @@ std::vector<OptionInfo> makeOptions() {
        "tint of Schlick's reflectance at mu = 1/7, [0, 1] (f82-tint; default 1)",
        {}},
       // diffuse
-      {"--diffuse", "", "MODEL", B | E, "Diffuse",
+      {"--diffuse", "", "MODEL", B | E | C, "Diffuse",
        joinNames(diffuseNames()) +
            "\n(--table albedo: the model's albedo over (mu, its parameter); splitsum: burley in B)",
        diffuseNames()},

@@ -314,21 +314,29 @@ BRDF_FN real ltc_shift(int k, int d) {
 }
 
 /* TV over `reps` independently shifted lattices of n points per strategy: the mean in out[0], the
- * error estimate in out[1] (four standard errors of the mean: with 16 shifts, Student's t with 15
- * degrees of freedom puts 99.9% within 4.07), the mass below the horizon in out[2]. */
+ * error estimate in out[1], the mass below the horizon in out[2]. The estimate is four standard
+ * errors of the mean (with 16 shifts, Student's t with 15 degrees of freedom puts 99.9% within 4.07
+ * for normal errors) plus a tenth of the mean: a lattice of n points misses features under 1/n of a
+ * proposal's mass, which the shifts' spread does not show. Measured against the reference quadrature
+ * (tables/ltc/ltc_reference.h) at every second row of the default 64^2 GGX fit: with four standard
+ * errors alone 32 of 2048 texels were off by more (r = 10/63, mu = 0.91 by 14 standard errors, the
+ * estimate 6% low); with the tenth added, every texel is within half its estimate. */
 BRDF_FN void ltc_tv(const LtcLobe* L, Ltc l, int n, int reps, real* out) {
-  real s1 = RC(0.0), s2 = RC(0.0), sb = RC(0.0);
+  /* Welford's running mean and sum of squared deviations: the one-pass mean of squares minus the
+   * squared mean cancels in float (at 64^2, r = 24/63, mu = 0.6 the shifts' spread of 1e-6 under a
+   * mean of 0.04 came out 0) */
+  real mean = RC(0.0), m2 = RC(0.0), sb = RC(0.0);
   for (int k = 0; k < reps; ++k) {
     real below;
     real t = RC(0.5) * ltc_l1(L, l, n, ltc_shift(k, 0), ltc_shift(k, 1), &below);
-    s1 += t;
-    s2 += t * t;
+    real d = t - mean;
+    mean += d / (real)(k + 1);
+    m2 += d * (t - mean);
     sb += below;
   }
-  real mean = s1 / (real)reps;
-  real var = fmax(s2 / (real)reps - mean * mean, RC(0.0)) * (real)reps / (real)(reps > 1 ? reps - 1 : 1);
+  real var = m2 / (real)(reps > 1 ? reps - 1 : 1);
   out[0] = mean;
-  out[1] = RC(4.0) * sqrt(var / (real)reps);
+  out[1] = RC(4.0) * sqrt(fmax(var, RC(0.0)) / (real)reps) + RC(0.1) * fabs(mean);
   out[2] = sb / (real)reps;
 }
 

@@ -16,6 +16,7 @@
 #include "formats/format_outputs.h"
 #include "tables/family.h"
 #include "tables/ladder.h"
+#include "tables/ltc/ltc_checks.h"
 #include "tables/ltc/ltc_fit.h"
 #include "tables/registry.h"
 #include "tables/table2d.h"
@@ -76,7 +77,8 @@ class LtcFamily final : public TableFamily {
     const int n = req.size ? *req.size : brdfbake::defaultSize(TableKind::Ltc);
     if (n < kMinLtcSize || n > kMaxLtcSize)
       throw Error(kExitUsage, "--size " + std::to_string(n) + ": --table ltc takes " + std::to_string(kMinLtcSize) +
-                                  " to " + std::to_string(kMaxLtcSize) + " texels per axis (a fit per texel: 64 is "
+                                  " to " + std::to_string(kMaxLtcSize) +
+                                  " texels per axis (a fit per texel: 64 is "
                                   "the engines' size)");
     if (req.diffuse == DIFFUSE_LAMBERT)
       throw Error(kExitUsage,
@@ -119,9 +121,10 @@ class LtcFamily final : public TableFamily {
     const LtcJob j = job.get<LtcJob>();
     KernelRunner& runner = ctx.runner();
     const std::string fitKey =
-        "ltc-fit:" + (j.lobe.isDiffuse() ? j.lobe.name()
-                                         : std::to_string(j.lobe.ndf) + "+" +
-                                               std::to_string(brdf64::gaf_canonical(j.lobe.ndf, j.lobe.gaf))) +
+        "ltc-fit:" +
+        (j.lobe.isDiffuse()
+             ? j.lobe.name()
+             : std::to_string(j.lobe.ndf) + "+" + std::to_string(brdf64::gaf_canonical(j.lobe.ndf, j.lobe.gaf))) +
         ":" + std::to_string(j.n);
     auto kept = ctx.cache.find(fitKey);
     const bool reused = kept != ctx.cache.end();
@@ -171,11 +174,12 @@ class LtcFamily final : public TableFamily {
           "distance 1/2 int |p - D| over the sphere, estimated by multiple importance sampling (GGX visible "
           "normals, cosine, the LTC; rank-1 lattice points), started from the row above "
           "(host/tables/ltc/ltc_fit.cpp, kernels/integrate/ltc_fit.h); distance: 16 hashed shifts of a lattice "
-          "of 3 x 256 points, error 4 standard errors and E's claim";
+          "of 3 x 256 points (in double on the host where u/(alpha mu) > 2e-5), error 4 standard errors, a tenth of "
+          "the distance and E's claim";
     };
     auto tableJobOf = [&](const std::string& path) {
-      TableJob tj = tableJob(TableKind::Ltc, j.lobe.isDiffuse() ? -1 : j.lobe.ndf,
-                             j.lobe.isDiffuse() ? -1 : j.lobe.gaf, j.n, j.n, true, j.half);
+      TableJob tj = tableJob(TableKind::Ltc, j.lobe.isDiffuse() ? -1 : j.lobe.ndf, j.lobe.isDiffuse() ? -1 : j.lobe.gaf,
+                             j.n, j.n, true, j.half);
       tj.diffuse = j.lobe.diffuse;
       tj.path = path;
       return tj;
@@ -240,7 +244,7 @@ class LtcFamily final : public TableFamily {
     const LtcJob j = job.get<LtcJob>();
     const std::string dir = dirOf(job.path);
     const std::string base = job.path.substr(dir.size() + 1);  // ltc_<lobe>.exr
-    const std::string stem = base.substr(4);                     // <lobe>.exr
+    const std::string stem = base.substr(4);                   // <lobe>.exr
     const TableImage& m = set.keep.emplace_back(data->m);
     const TableImage& amp = set.keep.emplace_back(data->amp);
     for (int file = 0; file < 2; ++file) {
@@ -262,18 +266,13 @@ class LtcFamily final : public TableFamily {
     }
   }
 
-  // The ladder: the default texel budget against larger ones, each fit's distance at 8 x 8 texels
-  // spread over the table (the distance is what the fit minimises; its reference is the largest
-  // budget's distance, measured by the same estimator).
-  Ladder convergence(BakeContext&, const BakeRequest&, TableKind) const override {
-    throw Error(kExitUsage, "--table ltc has no convergence ladder: its fit reports each texel's distance and that "
-                            "distance's error estimate (ltc2's B channel, ltc.distance.* in the header)");
-  }
+  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind) const override { return ltcLadder(ctx, req); }
+  void stress(BakeContext& ctx, std::vector<StressPoint>& out) const override { ltcStress(ctx, out); }
 
   std::string key(const Job& job) const override {
     const LtcJob j = job.get<LtcJob>();
-    std::string k = "table=ltc;lobe=" + j.lobe.name() + ";size=" + std::to_string(j.n) + ";half=" +
-                    (j.half ? "1" : "0") + ";formats=";
+    std::string k = "table=ltc;lobe=" + j.lobe.name() + ";size=" + std::to_string(j.n) +
+                    ";half=" + (j.half ? "1" : "0") + ";formats=";
     for (FileFormat f : j.formats) k += std::to_string(static_cast<int>(f)) + ",";
     return k;
   }

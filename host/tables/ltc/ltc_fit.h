@@ -24,6 +24,14 @@ constexpr double kLtcMaxTheta = 1.57;
 // Texels whose magnitude E is below this carry no light worth an LTC (kernels/ltc.cl
 // LTC_NEGLIGIBLE_E): their distance is stated as 1, which every LTC meets.
 constexpr double kLtcNegligibleE = 1e-6;
+// Texels whose lobe float cannot resolve: a direction's rounding u = 2^-24 moves the half vector by
+// about u/mu against a lobe alpha wide, so the device's float estimate of the distance drifts where
+// rho = u/(alpha mu) is large. Against the reference (tables/ltc/ltc_reference.h) on the default
+// 64^2 GGX fit: at r = 0 (rho >= 6e-3) distances off by up to 0.40 (mu = cos 1.57); at r = 2/63
+// (rho = 6e-5) by 1.5e-6, 58 standard errors. Their distances are measured by the same estimator in
+// double on the host (r <= 3/63 at 64^2: 256 texels, 0.3 s).
+constexpr double kLtcFloatRho = 2e-5;
+bool ltcMeasuredInDouble(const LtcLobeSpec& lobe, int x, int y, int n);
 double ltcRoughness(int x, int n);
 double ltcMu(int y, int n);
 // A diffuse model's parameter at roughness r: its axis (common/material.h diffuseAxis) over [0, 1].
@@ -33,7 +41,7 @@ double ltcDiffuseParam(int diffuse, double r);
 // the points, the distance's points per strategy and shifts). fitPoints is at most 96: the polish's
 // fixed points fill kernels/integrate/ltc_fit.h's LTC_MAX_FIXED (768). Measured on the default
 // 64^2 table against the 2016 fit (Ltc.DefaultFitIsNoFartherThanThePublished2016Table,
-// brdfbake-bench --ltc): these take 11.5 s for a mean distance of 0.0364 and no texel farther than
+// brdfbake-bench --ltc): these take 11.0 s for a mean distance of 0.0362 and no texel farther than
 // the 2016 fit's; a polish of 30 evaluations takes 9.0 s and leaves one texel farther (by 1%).
 struct LtcBudget {
   int fitPoints = 96;
