@@ -175,7 +175,8 @@ class LtcFamily final : public TableFamily {
           "normals, cosine, the LTC; rank-1 lattice points), started from the row above "
           "(host/tables/ltc/ltc_fit.cpp, kernels/integrate/ltc_fit.h); distance: 16 hashed shifts of a lattice "
           "of 3 x 256 points (in double on the host where u/(alpha mu) > 2e-5), error 4 standard errors, a tenth of "
-          "the distance and E's claim";
+          "the distance and E's claim; an estimate above 1 or spread over 0.01 is replaced by the reference "
+          "quadrature's (1 - int min(p, D), adaptive, in double; host/tables/ltc/ltc_reference.cpp)";
     };
     auto tableJobOf = [&](const std::string& path) {
       TableJob tj = tableJob(TableKind::Ltc, j.lobe.isDiffuse() ? -1 : j.lobe.ndf, j.lobe.isDiffuse() ? -1 : j.lobe.gaf,
@@ -222,6 +223,7 @@ class LtcFamily final : public TableFamily {
                          " (r = " + fmt3(ltcRoughness(static_cast<int>(worst % j.n), j.n)) +
                          ", mu = " + fmtG(ltcMu(static_cast<int>(worst / j.n), j.n)) + ")";
       if (negligible) note += "; " + std::to_string(negligible) + " texels with E < 1e-6 state 1";
+      if (f.byReference) note += "; " + std::to_string(f.byReference) + " from the reference quadrature";
       note += "; " + std::to_string(past.size()) + " texels past " + fmtG(kLtcTarget);
       for (size_t k = 0; k < past.size() && k < 5; ++k)
         note += std::string(k ? ", " : ": ") + fmt3(f.tv[past[k]]) + " at (r " +
