@@ -203,8 +203,8 @@ LtcFit fitLtc(KernelRunner& runner, const LtcLobeSpec& lobe, int n, const LtcBud
   // half their relative difference, which E's claim bounds
   for (size_t t = 0; t < texels; ++t) {
     if (f.e[t] >= kLtcNegligibleE) f.tvErr[t] += static_cast<float>(0.5 * f.eBound[t] / f.e[t]);
-    // a distance is at most 1: an estimate above it is off by at least the excess (charlie's
-    // neubelt at r = 1/63, mu = 0.12 read 1.55, its lobe a sliver the proposals barely meet)
+    // a distance is at most 1, and refineByReference replaces estimates above it; should one remain,
+    // it is off by at least the excess
     if (f.tv[t] > 1) f.tvErr[t] = std::max(f.tvErr[t], f.tv[t] - 1.0f);
   }
   f.seconds = seconds(t0);
