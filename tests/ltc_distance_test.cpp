@@ -122,7 +122,7 @@ TEST(Ltc, DistanceEstimateHoldsAgainstTheReference) {
     expectDistancesHold(lobe, fitLtc(runner(), lobe, 8), everyTexel(8));
 }
 
-// The default 64^2 fit (about 8 minutes on two cores, behind the label `sweep`): its first four and
+// The default 64^2 fit (about 6 minutes on two cores, behind the label `sweep`): its first four and
 // last roughness rows, first and last views, and every second row. Where the shifts' spread alone
 // missed (r = 10/63, mu = 0.91: 14 standard errors), the claim's tenth of the distance holds.
 TEST(Ltc, DISABLED_DistanceEstimateHoldsAtEverySecondRow) {
