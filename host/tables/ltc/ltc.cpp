@@ -175,7 +175,7 @@ class LtcFamily final : public TableFamily {
           "normals, cosine, the LTC; rank-1 lattice points), started from the row above "
           "(host/tables/ltc/ltc_fit.cpp, kernels/integrate/ltc_fit.h); distance: 16 hashed shifts of a lattice "
           "of 3 x 256 points (in double on the host where u/(alpha mu) > 2e-5), error 4 standard errors, a tenth of "
-          "the distance and E's claim; an estimate above 1 or spread over 0.01 is replaced by the reference "
+          "the distance and E's claim; an estimate above 1 is replaced by the reference "
           "quadrature's (1 - int min(p, D), adaptive, in double; host/tables/ltc/ltc_reference.cpp)";
     };
     auto tableJobOf = [&](const std::string& path) {

@@ -32,9 +32,6 @@ constexpr double kLtcNegligibleE = 1e-6;
 // double on the host (r <= 3/63 at 64^2: 256 texels, 0.3 s).
 constexpr double kLtcFloatRho = 2e-5;
 bool ltcMeasuredInDouble(const LtcLobeSpec& lobe, int x, int y, int n);
-// Texels whose estimate's spread (four standard errors) exceeds this, or whose estimate exceeds 1,
-// take their distance from the reference quadrature (tables/ltc/ltc_reference.h).
-constexpr double kLtcRefineSpread = 0.01;
 double ltcRoughness(int x, int n);
 double ltcMu(int y, int n);
 // A diffuse model's parameter at roughness r: its axis (common/material.h diffuseAxis) over [0, 1].
@@ -64,7 +61,7 @@ struct LtcFit {
                                  // lattices' spread and E's claim relative to E)
   std::vector<float> below;      // the LTC's mass below the horizon
   std::vector<float> evals;      // objective evaluations spent
-  int byReference = 0;           // texels whose distance the reference quadrature gave (kLtcRefineSpread)
+  int byReference = 0;           // texels whose distance the reference quadrature gave (estimates above 1)
   double seconds = 0;            // fitting (device) time
   double magnitudeSeconds = 0;   // E and B
 };
