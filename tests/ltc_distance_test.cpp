@@ -82,9 +82,7 @@ int expectDistancesHold(const LtcLobeSpec& lobe, const LtcFit& f, const std::vec
   std::vector<LtcDistance> ref(texels.size());
   brdfbake::ladder::onTwoThreads(texels.size(), [&](size_t k) {
     const size_t t = texels[k];
-    const float s[4] = {f.store[0][t], f.store[1][t], f.store[2][t], f.store[3][t]};
-    if (f.e[t] >= kLtcNegligibleE)
-      ref[k] = ltcDistanceReference(lobe, static_cast<int>(t % n), static_cast<int>(t / n), n, s, f.e[t]);
+    if (f.e[t] >= kLtcNegligibleE) ref[k] = ltcDistanceReference(lobe, n, f.store, f.e, t);
   });
   int inDouble = 0;
   double worst = 0;

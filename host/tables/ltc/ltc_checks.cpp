@@ -24,8 +24,7 @@ std::vector<double> referenceDistances(const LtcLobeSpec& lobe, const LtcFit& f,
   if (err) err->assign(texels, 0.0);
   ladder::onTwoThreads(texels, [&](size_t t) {
     if (f.e[t] < kLtcNegligibleE) return;
-    const float s[4] = {f.store[0][t], f.store[1][t], f.store[2][t], f.store[3][t]};
-    const LtcDistance d = ltcDistanceReference(lobe, static_cast<int>(t % n), static_cast<int>(t / n), n, s, f.e[t]);
+    const LtcDistance d = ltcDistanceReference(lobe, n, f.store, f.e, t);
     tv[t] = d.tv;
     if (err) (*err)[t] = d.err;
   });
@@ -106,8 +105,7 @@ void ltcStress(BakeContext& ctx, std::vector<StressPoint>& out) {
          std::vector<std::pair<int, int>>{{0, 0}, {0, n - 1}, {1, n - 1}, {n - 1, 0}, {n - 1, n - 1}}) {
       const size_t t = static_cast<size_t>(y) * n + x;
       if (f.e[t] < kLtcNegligibleE) continue;
-      const float s[4] = {f.store[0][t], f.store[1][t], f.store[2][t], f.store[3][t]};
-      const LtcDistance d = ltcDistanceReference(lobe, x, y, n, s, f.e[t]);
+      const LtcDistance d = ltcDistanceReference(lobe, n, f.store, f.e, t);
       StressPoint p =
           stressPoint("ltc distance, " + lobe.name() + " 8x8",
                       "r=" + fmtG(ltcRoughness(x, n)) + " mu=" + fmtG(ltcMu(y, n)), f.tv[t], d.tv, f.tvErr[t], d.err);

@@ -148,8 +148,7 @@ int refineByReference(const LtcLobeSpec& lobe, int n, const std::vector<float> (
     if (e[t] >= kLtcNegligibleE && tv[t] > 1) at.push_back(t);
   ladder::onTwoThreads(at.size(), [&](size_t k) {
     const size_t t = at[k];
-    const float s[4] = {store[0][t], store[1][t], store[2][t], store[3][t]};
-    const LtcDistance d = ltcDistanceReference(lobe, static_cast<int>(t % n), static_cast<int>(t / n), n, s, e[t]);
+    const LtcDistance d = ltcDistanceReference(lobe, n, store, e, t);
     tv[t] = static_cast<float>(d.tv);
     err[t] = static_cast<float>(d.err);
   });

@@ -71,4 +71,10 @@ LtcDistance ltcDistanceReference(const LtcLobeSpec& lobe, int x, int y, int n, c
   return out;
 }
 
+LtcDistance ltcDistanceReference(const LtcLobeSpec& lobe, int n, const std::vector<float> (&store)[4],
+                                 const std::vector<float>& e, size_t t) {
+  const float s[4] = {store[0][t], store[1][t], store[2][t], store[3][t]};
+  return ltcDistanceReference(lobe, static_cast<int>(t % n), static_cast<int>(t / n), n, s, e[t]);
+}
+
 }  // namespace brdfbake

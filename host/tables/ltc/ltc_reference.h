@@ -2,6 +2,8 @@
 // convergence --table ltc` and `brdfbake stress` hold the device's estimate (kernels/integrate/
 // ltc_fit.h ltc_tv) against.
 #pragma once
+#include <vector>
+
 #include "common/brdf_host.h"
 #include "tables/ltc/ltc_fit.h"
 
@@ -19,5 +21,8 @@ struct LtcDistance {
   double tv = 0, err = 0;
 };
 LtcDistance ltcDistanceReference(const LtcLobeSpec& lobe, int x, int y, int n, const float (&store)[4], double e);
+// The same for texel t ([y * n + x]) of n x n planes as LtcFit holds them (store, e).
+LtcDistance ltcDistanceReference(const LtcLobeSpec& lobe, int n, const std::vector<float> (&store)[4],
+                                 const std::vector<float>& e, size_t t);
 
 }  // namespace brdfbake
