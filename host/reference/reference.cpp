@@ -7,6 +7,8 @@
 #include <cmath>
 #include <complex>
 #include <glm/glm.hpp>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "common/brdf_host.h"
@@ -134,23 +136,38 @@ struct ExactLambdaCache {
   static constexpr int N = 1025;
 };
 
+// One table per (NDF, alpha) for the whole process, shared by every thread: at alpha ~ 1e-5 one
+// takes 32 s to build, and a test that checks texels on two threads would build it twice a row.
+const ExactLambdaCache& exactLambdaTable(const Model& m) {
+  thread_local std::shared_ptr<const ExactLambdaCache> last;
+  if (last && last->ndf == m.ndf && last->alpha == m.alpha) return *last;
+  static std::mutex mutex;
+  static std::vector<std::shared_ptr<const ExactLambdaCache>> built;
+  std::lock_guard<std::mutex> lock(mutex);  // held while building: a second thread waits for it
+  for (const auto& t : built)
+    if (t->ndf == m.ndf && t->alpha == m.alpha) return *(last = t);
+  const int N = ExactLambdaCache::N;
+  auto t = std::make_shared<ExactLambdaCache>();
+  t->ndf = m.ndf;
+  t->alpha = m.alpha;
+  t->v.assign(N, 0.0);
+  for (int k = 0; k + 1 < N; ++k) {
+    double z = double(k) / (N - 1);
+    // c/(alpha s) = b = z/(1 - z): c = b alpha/sqrt(1 + b^2 alpha^2)
+    double b = z / (1 - z), tb = b * m.alpha, cc = tb / std::sqrt(1 + tb * tb), ss = 1 / std::sqrt(1 + tb * tb);
+    t->v[k] = cLambdaQuad(m.ndf, m.dp, cc) / (m.alpha * ss);
+  }
+  if (built.size() >= 256) built.erase(built.begin());  // 8 KiB each
+  built.push_back(t);
+  return *(last = t);
+}
+
 double cLambdaExact(const Model& m, double c) {
   if (m.ndf != NDF_BLINN_PHONG && m.ndf != NDF_GAUSSIAN) return -1;  // not used: closed forms exact
   double s = std::sqrt((1 - c) * (1 + c));
   if (s <= 0 || m.alpha <= 0) return 0;
-  thread_local ExactLambdaCache cache;
+  const ExactLambdaCache& cache = exactLambdaTable(m);
   const int N = ExactLambdaCache::N;
-  if (cache.ndf != m.ndf || cache.alpha != m.alpha) {
-    cache.ndf = m.ndf;
-    cache.alpha = m.alpha;
-    cache.v.assign(N, 0.0);
-    for (int k = 0; k + 1 < N; ++k) {
-      double z = double(k) / (N - 1);
-      // c/(alpha s) = b = z/(1 - z): c = b alpha/sqrt(1 + b^2 alpha^2)
-      double b = z / (1 - z), t = b * m.alpha, cc = t / std::sqrt(1 + t * t), ss = 1 / std::sqrt(1 + t * t);
-      cache.v[k] = cLambdaQuad(m.ndf, m.dp, cc) / (m.alpha * ss);
-    }
-  }
   double z = c / (c + m.alpha * s), u = z * (N - 1);
   int i0 = std::clamp(int(std::floor(u)) - 3, 0, N - 8);
   double sum = 0;
@@ -278,23 +295,55 @@ Moments albedoInside(int ndf, int gaf, double r, double mu, const Weight& wt) {
     double sn = std::sin(th), c = std::cos(th);
     double D = brdf64::ndf_D(ndf, m.dp, c, sn * sn);
     double phimax = phiEnd(th);
-    auto inner = [&](double phi) {
+    // delta: o.h - oc to full relative precision where the caller has it, NaN elsewhere
+    auto innerAt = [&](double phi, double delta) {
       Geometry g = geometry(mu, s, th, phi);
       double oh = glm::dot(g.o, g.h);
       double G = gafOf(m, g.i, g.o, g.h);
       double H = G / mu * oh;
-      return Pair{H, H * weightAt(wt, oh)};
+      return Pair{H, H * (std::isnan(delta) ? weightAt(wt, oh) : weightNearKink(wt, oh, delta))};
     };
+    auto inner = [&](double phi) { return innerAt(phi, std::nan("")); };
     double w = 2 * sn * D;
     if (phimax <= 0 || !(w > 0)) return Pair{};
     // the kinks of min/max GAFs in phi, by root finding on 65 samples
     std::vector<double> br, xs;
     for (int k = 0; k <= 64; ++k) xs.push_back(phimax * k / 64.0);
+    Model noKink = m;
+    noKink.oc = -1;
     branchRoots(
-        m, [&](double phi) { return geometry(mu, s, th, phi); }, xs, br);
+        noKink, [&](double phi) { return geometry(mu, s, th, phi); }, xs, br);
     // inner far tighter than outer: its rounding must not look like structure to the outer rule.
     // Its absolute tolerance applies to the weighted value w * inner.
-    return w * integrate(inner, 0, phimax, br, 30, std::max(1e-14, 1e-14 / w), 1e-13);
+    const double tol = std::max(1e-14, 1e-14 / w);
+    // Next to the weight's kink (o.h = oc) F has a square-root end, and o.h - oc must keep its
+    // relative precision there (weightNearKink). On this circle o.h = s sn cos(phi) + mu c falls
+    // with phi; it crosses oc at most once. The circle is integrated in t = |phi - anchor| from an
+    // anchor where o.h - oc is known: the crossing (0 there), else the arc's end phimax where o.h
+    // is nearest oc. There o.h - oc = d_anchor + s sn (cos(anchor +- t) - cos(anchor)), the
+    // difference written as -+2 s sn sin(anchor +- t/2) sin(t/2), exact to rounding as t -> 0;
+    // t = L y^2 makes the square-root end smooth in y.
+    const double ss = s * sn;
+    if (!(m.oc > 0 && ss > 0) || ss + mu * c <= m.oc)  // no kink, or total reflection (F = 1) throughout
+      return w * integrate(inner, 0, phimax, br, 30, tol, 1e-13);
+    const double cosKink = (m.oc - mu * c) / ss;
+    const bool crosses = std::fabs(cosKink) < 1 && std::acos(cosKink) < phimax;
+    const double anchor = crosses ? std::acos(cosKink) : phimax;
+    const double dAnchor = crosses ? 0.0 : ss * std::cos(phimax) + mu * c - m.oc;
+    auto side = [&](double lo, double hi, double sign) {  // sign +1: phi = anchor + t, -1: anchor - t
+      double L = hi - lo;
+      auto graded = [&](double y) {
+        double t = L * y * y;
+        double delta = dAnchor - sign * 2 * ss * std::sin(anchor + sign * t / 2) * std::sin(t / 2);
+        return innerAt(anchor + sign * t, delta) * (2 * L * y);
+      };
+      std::vector<double> ycut;
+      for (double b : br)
+        if (b > lo && b < hi) ycut.push_back(std::sqrt(std::fabs(b - anchor) / L));
+      return integrate(graded, 0, 1, ycut, 30, tol, 1e-13);
+    };
+    if (!crosses) return w * side(0, phimax, -1);
+    return w * (side(0, anchor, -1) + side(anchor, phimax, 1));
   };
   // Where the phi-integral has kinks in theta: a branch root enters or leaves the arc at one of
   // its ends (phi = 0, phi = phimax). Sampled densely, geometrically towards both ends of the
@@ -409,7 +458,15 @@ double albedoAvg(int ndf, int gaf, double r, const Weight& w) {
     return integrate(f, 0, 1, oc > 0 ? std::vector<double>{oc} : std::vector<double>{});
   }
   auto f = [&](double mu) { return 2 * mu * value(albedoInside(ndf, gaf, r, mu, w)); };
-  return integrate(f, 0, 1, lobeBreaks(r * r, 1));
+  std::vector<double> br = lobeBreaks(r * r, 1);
+  // E_F(mu) bends where the lobe's o.h reaches the critical cosine: within a few lobe widths
+  // (alpha) of mu = oc, sharply for a narrow lobe
+  if (oc > 0)
+    for (double k : {0.0, 0.3, 1.0, 3.0, 10.0}) {
+      br.push_back(oc - k * r * r);
+      br.push_back(oc + k * r * r);
+    }
+  return integrate(f, 0, 1, br);
 }
 
 double smithLambdaExact(int ndf, double r, double mu) {

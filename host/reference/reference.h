@@ -37,6 +37,9 @@ double weightAt(const Weight& w, double c);
 // Where the weight has a kink: o.h = sqrt(1 - eta^2) for a Fresnel with total internal reflection
 // (dielectric, schlick-tir with eta < 1); -1 where it has none.
 double weightKink(const Weight& w);
+// The weight at o.h = c next to that kink, with delta = c - oc computed by the caller to full
+// relative precision (from its distance to the kink, not by subtraction).
+double weightNearKink(const Weight& w, double c, double delta);
 
 struct Moments {
   double a = 0, b = 0;  // split-sum A, B; E = a + b
