@@ -4,23 +4,20 @@
 // edge: the first and last four mu columns and r rows of 32^2 and 64^2 tables (128^2 and every
 // pair in the sweep below, ctest's FresnelSweep.EveryPairEverySize behind the label `sweep`).
 //
-// What a texel is checked against:
-//   - the same rule in double at the refined budget with the eta asked for in double (brdf64,
-//     fr_z = 0), whose own estimate is far below the float claim: the device's value must be within
-//     its claim (its estimate + the float arithmetic, as the bake claims it) of it, and the claim at
-//     most 4 times that error or the float floor, whichever is larger;
-//   - the independent reference (host/reference, adaptive in the plain angles, the complex
-//     amplitudes' Fresnel, cached in tests/data/reference_values.txt) at the corner texels where it
-//     takes under a second; just below eta = 1 with mu next to the critical cosine it takes minutes
-//     a texel (eta = 0.9999, mu = 1/64: > 5 min), and those texels are checked against the rule in
-//     double only.
+// Each texel is checked against the independent reference (host/reference: adaptive in the half
+// vector's angles, F from the complex amplitudes at eta in double, F's square-root end at the
+// critical cosine integrated in the distance to it; 1e-11 per integral, a few milliseconds a
+// texel): the device's value must be within its claim (its estimate + the float arithmetic, as
+// the bake claims it), and the claim at most `tight` times that error or the float floor,
+// whichever is larger.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <future>
+#include <atomic>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cl/runner.h"
@@ -64,18 +61,22 @@ HemiWeight weightOf(const Edge& e) {
   return fresnelWeight(e.model, e.x, y);
 }
 
-// The rule in double at the refined budget, at the eta asked for (no float rounding of it).
-double doubleRule(int ndf, int gaf, const Edge& e, double mu, double r, double* est) {
-  brdf64::BrdfParams p = brdf64::hemisphere_texel_params(ndf, gaf, mu, r);
-  p.moments = HEMI_FRESNEL;
-  p.fresnel = e.model;
-  p.fr_x = e.x;
-  p.fr_y = e.model == FRESNEL_F82_TINT ? brdf64::fresnel_f82_b(e.x, e.y) : e.y;
-  p.fr_z = 0;
-  brdf64::HemiResult h = brdf64::hemisphere_moments(ndf, gaf, p, mu, 1);
-  brdf64::hemi_add_corner(mu, r, &h);
-  *est = h.err_b / std::max(1.0, std::fabs(h.b));
-  return h.b;
+// The reference's Fresnel albedo (b) at every texel of `texels`, on two threads.
+std::vector<double> referenceValues(int ndf, int gaf, const Edge& e, int n,
+                                    const std::vector<std::pair<int, int>>& texels) {
+  std::vector<double> out(texels.size());
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t q; (q = next++) < texels.size();) {
+      auto [i, j] = texels[q];
+      double mu = static_cast<float>((i + 0.5) / n), r = static_cast<float>((j + 0.5) / n);
+      out[q] = reference::albedo(ndf, gaf, r, mu, {reference::Weight::Fresnel, {e.model, e.x, e.y}}).b;
+    }
+  };
+  std::thread other(work);
+  work();
+  other.join();
+  return out;
 }
 
 // The corner's texel indices of an n-wide axis: the first and the last four.
@@ -90,31 +91,21 @@ struct Worst {
   double ratio = 0, claimOver = 0;  // largest error/claim; largest claim/max(error, floor)
 };
 
-// Bakes one table and checks its corner texels; returns the worst ratios.
-// strictReference: the rule in double must be sharp at every texel (ggx + smith-correlated's corner).
+// Bakes one table and checks its corner texels against the reference; returns the worst ratios.
 // tight: how many times max(error, float floor) a claim may be.
-Worst checkTable(int ndf, int gaf, const Edge& e, int n, bool strictReference = true, double tight = 4) {
+Worst checkTable(int ndf, int gaf, const Edge& e, int n, double tight = 4) {
   KernelTable t = runner().hemisphere(ndf, gaf, n, n, false, weightOf(e));
   std::vector<std::pair<int, int>> texels;
   for (int j : cornerIndices(n))
     for (int i : cornerIndices(n)) texels.push_back({i, j});
-  std::vector<std::future<std::pair<double, double>>> truth;
-  for (auto [i, j] : texels) {
-    double mu = static_cast<float>((i + 0.5) / n), r = static_cast<float>((j + 0.5) / n);
-    truth.push_back(std::async(std::launch::async, [=] {
-      double est = 0;
-      double v = doubleRule(ndf, gaf, e, mu, r, &est);
-      return std::make_pair(v, est);
-    }));
-    if (truth.size() % 2 == 0) truth[truth.size() - 2].wait();  // two threads
-  }
+  const std::vector<double> truth = referenceValues(ndf, gaf, e, n, texels);
   Worst w;
   // what float rounding alone leaves in a texel's claim: the floor a claim is never asked to beat
   const double floor = floatArithmeticError(1.0) + 1e-7;
   for (size_t q = 0; q < texels.size(); ++q) {
     auto [i, j] = texels[q];
     double mu = static_cast<float>((i + 0.5) / n), r = static_cast<float>((j + 0.5) / n);
-    auto [want, est] = truth[q].get();
+    double want = truth[q];
     size_t k = static_cast<size_t>(j) * n + i;
     double got = t.planes[1][k];
     double scale = 0;
@@ -125,16 +116,10 @@ Worst checkTable(int ndf, int gaf, const Edge& e, int n, bool strictReference = 
         t.err[k] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf, true)) + fresnelKinkFloat(e.model, e.x, mu, r);
     double err = rel(got, want);
     EXPECT_TRUE(std::isfinite(got)) << e.name << " n=" << n << " mu=" << mu << " r=" << r;
-    // Where the rule in double is itself uncertain by more than a twentieth of the claim (its
-    // estimate: blinn-phong, the gaussian and their -exact GAFs at grazing texels), the device is
-    // held to claim + that estimate, and the claim's tightness is not judged against it.
-    const bool sharp = est < 0.05 * claim;
-    if (strictReference)
-      EXPECT_TRUE(sharp) << e.name << ": the double rule's own estimate " << est << " must be far below the claim "
-                         << claim;
-    EXPECT_LE(err, claim + (sharp ? 0.0 : est))
-        << e.name << " n=" << n << " mu=" << mu << " r=" << r << " device " << got << " double " << want;
-    if (sharp) EXPECT_LE(claim, tight * std::max(err, floor)) << e.name << " n=" << n << " mu=" << mu << " r=" << r;
+    EXPECT_LE(err, claim) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " " << e.name << " n=" << n << " mu=" << mu
+                          << " r=" << r << " device " << got << " reference " << want;
+    EXPECT_LE(claim, tight * std::max(err, floor))
+        << ndfNames()[ndf] << "+" << gafNames()[gaf] << " " << e.name << " n=" << n << " mu=" << mu << " r=" << r;
     w.ratio = std::max(w.ratio, err / claim);
     w.claimOver = std::max(w.claimOver, claim / std::max(err, floor));
   }
@@ -165,52 +150,55 @@ TEST(FresnelEdge, TheSweepsEdgesHoldAt128) {
     ADD_FAILURE() << "no edge " << n;
     return all.front();
   };
-  Worst tir = checkTable(NDF_GGX, GAF_SMITH_CORRELATED, named("dielectric eta=0.2"), 128, true, 8);
-  Worst f82 = checkTable(NDF_BECKMANN, GAF_NONE, named("f82-tint F0=0.04 tint=0"), 128, false);
+  Worst tir = checkTable(NDF_GGX, GAF_SMITH_CORRELATED, named("dielectric eta=0.2"), 128, 8);
+  Worst f82 = checkTable(NDF_BECKMANN, GAF_NONE, named("f82-tint F0=0.04 tint=0"), 128);
   std::printf(
       "128^2: eta 0.2 largest error/claim %.2f (claim/max(error, floor) %.2f); f82-tint tint 0 on beckmann + none "
       "%.2f (%.2f)\n",
       tir.ratio, tir.claimOver, f82.ratio, f82.claimOver);
 }
 
-// The corner texels where the independent reference is quick (see the top of this file), against
-// it: value within the device's claim.
-TEST(FresnelEdge, StiffCornerMatchesReference) {
+// The average albedo (albedo-avg with --fresnel) at the stiff corner: the Fresnels with a critical
+// cosine or a graded layer next to eta = 1, at the first two and last two r of a 32-entry table,
+// against the reference's average (adaptive in mu, split at the critical cosine and at lobe widths
+// around it, over the albedo above; 5 to 12 s a value, kept in tests/data/reference_values.txt).
+TEST(FresnelEdge, AverageAlbedoAtTheStiffCorner) {
   const int ndf = NDF_GGX, gaf = GAF_SMITH_CORRELATED, n = 32;
+  double worst = 0;
   for (const Edge& e : edges()) {
-    bool slowRef = (e.model == FRESNEL_DIELECTRIC || e.model == FRESNEL_SCHLICK_TIR || e.model == FRESNEL_CONDUCTOR) &&
-                   e.x < 1 && e.x > 0.99;
-    std::vector<std::pair<int, int>> texels = {{0, 1}, {1, 0}, {3, 3}, {n - 1, n - 1}, {0, n - 1}, {n - 1, 0}};
-    if (slowRef) texels = {{n - 1, n - 1}, {n - 1, 0}};
-    KernelTable t = runner().hemisphere(ndf, gaf, n, n, false, weightOf(e));
+    if (e.name != "dielectric eta=1-0.000100" && e.name != "dielectric eta=1+0.000100" &&
+        e.name != "dielectric eta=0.2" && e.name != "schlick-tir eta=0.9999")
+      continue;
+    KernelTable t = runner().albedoAvg(ndf, gaf, n, false, weightOf(e));
     reference::Weight w{reference::Weight::Fresnel, {e.model, e.x, e.y}};
-    for (auto [i, j] : texels) {
-      double mu = static_cast<float>((i + 0.5) / n), r = static_cast<float>((j + 0.5) / n);
-      double want =
-          testing_ref::cached1(testing_ref::keyOf("albedo " + ndfNames()[ndf] + " " + gafNames()[gaf] + " fresnel-edge",
-                                                  {r, mu, double(e.model), e.x, e.y}),
-                               [&] { return reference::albedo(ndf, gaf, r, mu, w).b; });
-      size_t k = static_cast<size_t>(j) * n + i;
-      double scale = 0;
-      for (int p = 0; p < 3; ++p) scale = std::max(scale, std::fabs(static_cast<double>(t.planes[p][k])));
-      EXPECT_LE(rel(t.planes[1][k], want), t.err[k] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf, true)) +
-                                               fresnelKinkFloat(e.model, e.x, mu, r))
-          << e.name << " mu=" << mu << " r=" << r << " device " << t.planes[1][k] << " reference " << want;
+    for (int j : {0, 1, n - 2, n - 1}) {
+      double r = static_cast<float>((j + 0.5) / n);
+      double want = testing_ref::cached1(
+          testing_ref::keyOf("albedoAvg " + ndfNames()[ndf] + " " + gafNames()[gaf] + " fresnel-edge",
+                             {r, double(e.model), e.x, e.y}),
+          [&] { return reference::albedoAvg(ndf, gaf, r, w); });
+      double err = rel(t.planes[0][j], want);
+      double claim = t.err[j] + avgFloatArithmeticError(t.planes[0][j], ndf, gaf, true);
+      EXPECT_LE(err, claim) << e.name << " r=" << r << " device " << t.planes[0][j] << " reference " << want;
+      worst = std::max(worst, err / claim);
     }
   }
+  std::printf("albedo-avg at the stiff corner: largest error/claim %.2f\n", worst);
 }
 
-// The wider sweep: every NDF/GAF pair of the microfacet family, 32^2, 64^2 and 128^2 (17 minutes on
-// two cores): `ctest -L sweep` (tests/CMakeLists.txt). At 128^2 dielectric eta = 0.2 next to its
-// critical cosine and f82-tint at tint 0 at grazing views fail their claims (docs/accuracy.md,
-// "The whole sweep, and the edge it found").
+// The wider sweep: every NDF/GAF pair of the microfacet family (52), 32^2, 64^2 and 128^2, each
+// corner texel against the reference: `ctest -L sweep` (tests/CMakeLists.txt; 11.6 minutes on two
+// cores). Claims are held to 4 times the error except next to eta = 0.2's critical cosine at
+// 128^2, where the kink's float term is sized on the pair with the largest rounding and reaches
+// 8.4 times max(error, float floor) on pairs whose rounding cancels more (docs/accuracy.md, "The
+// whole sweep, and the edge it found"): 9 there.
 TEST(FresnelEdge, DISABLED_EveryPairEverySize) {
   for (int ndf : {NDF_GGX, NDF_BECKMANN, NDF_BLINN_PHONG, NDF_GAUSSIAN})
     for (int gaf = 0; gaf < static_cast<int>(gafNames().size()); ++gaf) {
       if (!pairSupported(ndf, gaf)) continue;
       for (const Edge& e : edges())
         for (int n : {32, 64, 128}) {
-          Worst w = checkTable(ndf, gaf, e, n, false);
+          Worst w = checkTable(ndf, gaf, e, n, n == 128 && e.name == "dielectric eta=0.2" ? 9 : 4);
           std::printf("%s+%s %-30s %3d^2: largest error/claim %.2f, claim/max(error, floor) %.2f\n",
                       ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), e.name.c_str(), n, w.ratio, w.claimOver);
         }

@@ -99,6 +99,15 @@ TEST(Fresnel, AverageFresnelClosedFormsAndQuadrature) {
       ASSERT_NEAR(fresnelAverage(f, 0), want, 1e-10) << c.name << " x " << c.x << " y " << c.y;
     }
   }
+  // just below eta = 1, where F's square-root end sits next to mu = 0 (the critical cosine 0.0014
+  // at eta = 1 - 1e-6)
+  for (int model : {FRESNEL_DIELECTRIC, FRESNEL_SCHLICK_TIR})
+    for (double eta : {0.999, 0.9999, 0.999999}) {
+      FresnelChoice f;
+      f.model = model;
+      f.eta = {eta};
+      ASSERT_NEAR(fresnelAverage(f, 0), reference::fresnelAvg({model, eta, 0}), 1e-10) << model << " eta " << eta;
+    }
   // the limits: eta -> 1 reflects nothing, eta -> 0 (total internal reflection everywhere) all
   EXPECT_NEAR(fresnelAverage(FRESNEL_DIELECTRIC, 1.0, 0), 0.0, 1e-15);
   EXPECT_NEAR(fresnelAverage(FRESNEL_DIELECTRIC, 1e-4, 0), 1.0, 1e-6);
@@ -234,9 +243,9 @@ TEST(Fresnel, F82SplitSumMatchesDirectAlbedo) {
 }
 
 // The average of a Fresnel albedo (albedo-avg with --fresnel) against the reference's own average
-// (adaptive in mu over its adaptive albedo), at the 4 texel centres of r. Smooth Fresnels only:
-// with a critical angle the reference's adaptive average takes minutes (E_F(mu) is not smooth
-// there); the albedo it averages is checked texel by texel above.
+// (adaptive in mu over its adaptive albedo), at the 4 texel centres of r. Smooth Fresnels here;
+// those with a critical cosine at FresnelEdge.AverageAlbedoAtTheStiffCorner
+// (tests/fresnel_edge_test.cpp).
 TEST(Fresnel, AverageAlbedoMatchesReference) {
   const int ndf = NDF_GGX, gaf = GAF_SMITH_CORRELATED, n = 4;
   for (const Case& c : {kCases[1], kCases[7], kCases[8]}) {

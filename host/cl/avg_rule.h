@@ -20,14 +20,25 @@ struct AvgSum {
   int panels = 0;
 };
 
+// Where an entry's first panels end: the views where the GAF's E(mu) is singular
+// (brdf64::gaf_view_breaks), and for a Fresnel weight with a critical cosine oc (eta < 1), where
+// E_F(mu) bends: oc, and oc +- 1, 3 and 10 lobe widths w = alpha sqrt(1 - oc^2) + alpha^2 (the
+// spread of o.h over the lobe, as tables/error_model.h's fresnelKinkFloat takes it) at the
+// entry's r. Without them, at eta = 0.9999, r = 3/64 the rule's |K - G| saw 2.9e-6 where the
+// average was off by 1.4e-5 (tests/fresnel_edge_test.cpp, AverageAlbedoAtTheStiffCorner).
+struct AvgBreaks {
+  std::vector<double> view;
+  double kink = -1;  // oc, or -1
+  std::vector<double> at(float r) const;
+};
+AvgBreaks avgBreaks(int gaf, double kink);
+
 // E_avg at each r: Gauss-Kronrod panels over mu (GK31; GK15 for the horizon layer's, sharp pairs
 // only: kernels/integrate/albedo_avg.h avg_first_break), halved where the bound is largest until
 // it meets the goal (relative to max(1, E_avg)); sharp: |K - G| rescaled (brdf64::gk_error).
-// breaks: the GAF's view breaks (avgViewBreaks, brdf64::gaf_view_breaks), where the first panels
-// end; no default, so that every caller runs the bake's rule for its GAF.
+// breaks: where the first panels end (avgBreaks); no default, so that every caller runs the
+// bake's rule for its GAF and weight.
 std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double goal, const AvgEvaluator& eval,
-                                const std::vector<double>& breaks);
-// The views where the GAF's E(mu) is singular (brdf64::gaf_view_breaks), for averageRule.
-std::vector<double> avgViewBreaks(int gaf);
+                                const AvgBreaks& breaks);
 
 }  // namespace brdfbake

@@ -90,7 +90,7 @@ double nodeShift(const AvgPanel& p, const double* y, const double* f) {
 }  // namespace
 
 std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double goal, const AvgEvaluator& eval,
-                                const std::vector<double>& breaks) {
+                                const AvgBreaks& breaks) {
   const size_t n = rs.size();
   std::vector<std::vector<AvgPanel>> panels(n);
   std::vector<std::vector<size_t>> fresh(n);
@@ -106,7 +106,7 @@ std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double
     } else {
       ends.push_back(0.0);
     }
-    for (double x : breaks)
+    for (double x : breaks.at(rs[j]))
       if (x > ends.back() && x < 1.0) ends.push_back(x);
     ends.push_back(1.0);
     for (size_t e = 0; e + 1 < ends.size(); ++e) panels[j].push_back(AvgPanel{ends[e], ends[e + 1]});
@@ -175,9 +175,22 @@ std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double
   return out;
 }
 
-std::vector<double> avgViewBreaks(int gaf) {
+AvgBreaks avgBreaks(int gaf, double kink) {
   double mu[GAF_MAX_VIEW_BREAKS];
-  return std::vector<double>(mu, mu + brdf64::gaf_view_breaks(gaf, mu));
+  return AvgBreaks{std::vector<double>(mu, mu + brdf64::gaf_view_breaks(gaf, mu)), kink};
+}
+
+std::vector<double> AvgBreaks::at(float r) const {
+  std::vector<double> out = view;
+  if (kink > 0) {
+    const double alpha = static_cast<double>(r) * r, w = alpha * std::sqrt(1 - kink * kink) + alpha * alpha;
+    for (double k : {0.0, 1.0, 3.0, 10.0})
+      for (double x : {kink - k * w, kink + k * w})
+        if (x > 0 && x < 1) out.push_back(x);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, const HemiWeight& w, float rLo, float rHi) {
@@ -209,7 +222,7 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
         std::vector<std::vector<float>> out = hemisphereNodes(ndf, gaf, in, w, bare);
         for (size_t k = 0; k < nodes.size(); ++k) (*value)[k] = out[0][k], (*bound)[k] = out[1][k];
       },
-      avgViewBreaks(gaf));
+      avgBreaks(gaf, brdf64::fresnel_kink(w.moments, w.fresnel, w.x, w.z)));
   const double floor = bare ? brdf64::avg_floor(ndf, gaf) : 0.0;
   KernelTable t;
   t.width = n;
