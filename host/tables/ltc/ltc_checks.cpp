@@ -79,7 +79,7 @@ Ladder ltcLadder(BakeContext& ctx, const BakeRequest& req) {
     std::vector<double> v(texels), e(texels);
     for (size_t t = 0; t < texels; ++t) {
       v[t] = m[0][t];
-      e[t] = m[1][t] + (f.e[t] >= kLtcNegligibleE ? 0.5 * f.eBound[t] / f.e[t] : 0.0);
+      e[t] = m[1][t] + ltcMagnitudeShare(f.e[t], f.eBound[t]);  // as fitLtc adds it
     }
     L.rungs.push_back(
         ladder::rung("distance estimate (MIS, 16 shifts)", std::to_string(pts) + " points", secs, v, e, ref));

@@ -156,6 +156,8 @@ int refineByReference(const LtcLobeSpec& lobe, int n, const std::vector<float> (
 }
 }  // namespace
 
+double ltcMagnitudeShare(float e, double eBound) { return e >= kLtcNegligibleE ? 0.5 * eBound / e : 0.0; }
+
 LtcFit fitLtc(KernelRunner& runner, const LtcLobeSpec& lobe, int n, const LtcBudget& budget) {
   LtcFit f;
   f.n = n;
@@ -199,10 +201,8 @@ LtcFit fitLtc(KernelRunner& runner, const LtcLobeSpec& lobe, int n, const LtcBud
   }
   remeasureInDouble(lobe, n, f.store, f.e, budget, f.tv, f.tvErr, f.below);
   f.byReference = refineByReference(lobe, n, f.store, f.e, f.tv, f.tvErr);
-  // p is normalised by the stored E, not the lobe's true integral: the distance moves by at most
-  // half their relative difference, which E's claim bounds
   for (size_t t = 0; t < texels; ++t) {
-    if (f.e[t] >= kLtcNegligibleE) f.tvErr[t] += static_cast<float>(0.5 * f.eBound[t] / f.e[t]);
+    f.tvErr[t] += static_cast<float>(ltcMagnitudeShare(f.e[t], f.eBound[t]));
     // a distance is at most 1, and refineByReference replaces estimates above it; should one remain,
     // it is off by at least the excess
     if (f.tv[t] > 1) f.tvErr[t] = std::max(f.tvErr[t], f.tv[t] - 1.0f);

@@ -66,6 +66,11 @@ struct LtcFit {
   double magnitudeSeconds = 0;   // E and B
 };
 
+// E's share of a texel's distance claim: p is normalised by the stored E, not the lobe's true
+// integral, so the distance moves by at most half their relative difference, which E's claim
+// bounds (0 where E is negligible: such texels state distance 1).
+double ltcMagnitudeShare(float e, double eBound);
+
 // Fits every texel, rows from the roughest down, each start from the row above (kernels/ltc.cl).
 // Progress: runner.progress("rows", ...).
 LtcFit fitLtc(KernelRunner& runner, const LtcLobeSpec& lobe, int n, const LtcBudget& budget = {});
