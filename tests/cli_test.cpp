@@ -661,7 +661,7 @@ TEST(CliEvidence, StressIsCleanAndWritesItsPage) {
   CmdResult r = run("stress -o " + d.string());
   ASSERT_EQ(r.code, 0) << r.out;
   // each family's stress points: 96 microfacet, 5 F_avg, 6 Ashikhmin-Shirley, 10 brdf3d, 12 rough glass
-  EXPECT_NE(r.out.find("all 151 points pass: finite, within their bounds, limits met"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("all 153 points pass: finite, within their bounds, limits met"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Tex2(1, v) = exp(-v^2/2) (met)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("brdf3d grazing, r 0.01"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("E_T -> (1 + L) G_T(L, L) as eta -> 1 (met)"), std::string::npos) << r.out;
@@ -680,7 +680,7 @@ TEST(CliEvidence, StressIsCleanAndWritesItsPage) {
   EXPECT_NE(html.find("every measured pixel within its bound"), std::string::npos);
   // the verdict first; the plot's legend below the data, with no failure entry when nothing fails
   EXPECT_EQ(verdictLine(html),
-            "<p class=\"verdict pass\"><strong>PASS: </strong>all 151 points pass: finite, within their bounds, limits "
+            "<p class=\"verdict pass\"><strong>PASS: </strong>all 153 points pass: finite, within their bounds, limits "
             "met</p>")
       << html;
   const std::string gp = bytes(d / "stress/stress.gp");
