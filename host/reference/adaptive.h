@@ -56,6 +56,14 @@ auto adaptPieces(F f, double a, double b, std::vector<double> breaks, double tol
   return sum;
 }
 
+// Breakpoints at multiples of the lobe width, where an adaptive rule could otherwise step over it.
+inline std::vector<double> lobeBreaks(double alpha, double hi) {
+  std::vector<double> b;
+  for (double m : {0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0})
+    if (alpha * m < hi) b.push_back(alpha * m);
+  return b;
+}
+
 // Two quantities integrated together on the same nodes (E and a moment B): the vector value type.
 struct Pair {
   double e = 0, b = 0;

@@ -7,13 +7,12 @@
 #include <cmath>
 #include <complex>
 #include <glm/glm.hpp>
-#include <memory>
-#include <mutex>
 #include <vector>
 
 #include "common/brdf_host.h"
 #include "reference/adaptive.h"
 #include "reference/sheen_reference.h"
+#include "reference/smith_exact_reference.h"
 
 namespace brdfbake::reference {
 namespace {
@@ -35,13 +34,7 @@ auto integrate(F f, double a, double b, std::vector<double> breaks, unsigned dep
   return detail::adaptPieces(f, a, b, std::move(breaks), tol, depth, rel);
 }
 
-// Breakpoints at multiples of the lobe width, where an adaptive rule could otherwise step over it.
-std::vector<double> lobeBreaks(double alpha, double hi) {
-  std::vector<double> b;
-  for (double m : {0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0})
-    if (alpha * m < hi) b.push_back(alpha * m);
-  return b;
-}
+using detail::lobeBreaks;
 
 // ---- the models, written here from the papers (only D comes from kernels/brdf) -----------------
 
@@ -90,99 +83,9 @@ double smithLambda(const Model& m, double c) {
   return -std::erfc(a) / 2 + std::exp(-a * a) / (2 * a * std::sqrt(kPi));
 }
 
-// Exact Smith Lambda of any isotropic NDF from its projected area (Smith 1967; Heitz 2014 eq. 17-18):
-//   cos(theta_o) (1 + Lambda) = int max(0, o.h) D dw_h, int D (n.h) dw_h = 1, so
-//   cos(theta_o) Lambda = int max(0, -o.h) D(h) dw_h   (the back-facing microfacets' projected area).
-// With o = (s, 0, c) and h at (theta, phi), o.h < 0 on |phi| > phi0 once theta > pi/2 - theta_o; the
-// phi-integral is closed: 2 s sin(theta) (sin psi - psi cos psi), cos psi = cot(theta_o) cot(theta),
-// psi = pi - phi0. theta = pi/2 - theta_o + d, d in (0, theta_o]: 1 - cos psi = sin d/(s sin theta)
-// without cancellation. Adaptive GK31 in d, relative tolerance 1e-11 only (Lambda may be tiny).
-double cLambdaQuad(int ndf, const brdf64::BrdfParams& dp, double c) {
-  double s = std::sqrt((1 - c) * (1 + c));
-  if (s <= 0 || dp.alpha <= 0) return 0;
-  double tho = std::atan2(s, c);
-  auto f = [&](double d) {
-    double ct = std::sin(tho - d), st = std::cos(tho - d);  // cos, sin of theta = pi/2 - theta_o + d
-    double om = std::sin(d) / (s * st);                     // 1 - cos psi
-    double x = 1 - om, sp = std::sqrt(std::max(0.0, om * (2 - om)));
-    double psi = std::atan2(sp, x);
-    double g;         // sin psi - psi cos psi
-    if (psi < 0.3) {  // series: the difference cancels (its terms 2k psi^(2k+1)/(2k+1)!)
-      double p2 = psi * psi;
-      g = psi * p2 *
-          (1.0 / 3 - p2 * (1.0 / 30 - p2 * (1.0 / 840 - p2 * (1.0 / 45360 - p2 * (1.0 / 3991680 - p2 / 518918400)))));
-    } else {
-      g = sp - psi * x;
-    }
-    return brdf64::ndf_D(ndf, dp, ct, st * st) * st * 2 * s * st * g;
-  };
-  std::vector<double> br;
-  // the lobe near theta = few alpha, i.e. d = theta - pi/2 + theta_o; and geometric towards d = 0
-  for (double t : lobeBreaks(dp.alpha, kPi / 2)) {
-    double d = t - kPi / 2 + tho;
-    if (d > 0 && d < tho) br.push_back(d);
-  }
-  for (double d = tho / 2; d > tho * 1e-6; d /= 4) br.push_back(d);
-  return integrate(f, 0, tho, br, 18, 1e-300, 1e-11);
-}
-
-// cos(theta) Lambda_exact on a dense grid in z = c/(c + alpha s) (Beckmann's b/(1+b)), from
-// cLambdaQuad, 8-point Lagrange in between: the albedo integrals need it at millions of points.
-// As cLambda/(alpha s), which is smooth in z on [0, 1] for every alpha.
-struct ExactLambdaCache {
-  int ndf = -1;
-  double alpha = -1;
-  std::vector<double> v;  // cLambda/(alpha s) at z_k = k/(N - 1)
-  static constexpr int N = 1025;
-};
-
-// One table per (NDF, alpha) for the whole process, shared by every thread: at alpha ~ 1e-5 one
-// takes 32 s to build, and a test that checks texels on two threads would build it twice a row.
-const ExactLambdaCache& exactLambdaTable(const Model& m) {
-  thread_local std::shared_ptr<const ExactLambdaCache> last;
-  if (last && last->ndf == m.ndf && last->alpha == m.alpha) return *last;
-  static std::mutex mutex;
-  static std::vector<std::shared_ptr<const ExactLambdaCache>> built;
-  std::lock_guard<std::mutex> lock(mutex);  // held while building: a second thread waits for it
-  for (const auto& t : built)
-    if (t->ndf == m.ndf && t->alpha == m.alpha) return *(last = t);
-  const int N = ExactLambdaCache::N;
-  auto t = std::make_shared<ExactLambdaCache>();
-  t->ndf = m.ndf;
-  t->alpha = m.alpha;
-  t->v.assign(N, 0.0);
-  for (int k = 0; k + 1 < N; ++k) {
-    double z = double(k) / (N - 1);
-    // c/(alpha s) = b = z/(1 - z): c = b alpha/sqrt(1 + b^2 alpha^2)
-    double b = z / (1 - z), tb = b * m.alpha, cc = tb / std::sqrt(1 + tb * tb), ss = 1 / std::sqrt(1 + tb * tb);
-    t->v[k] = cLambdaQuad(m.ndf, m.dp, cc) / (m.alpha * ss);
-  }
-  if (built.size() >= 256) built.erase(built.begin());  // 8 KiB each
-  built.push_back(t);
-  return *(last = t);
-}
-
-double cLambdaExact(const Model& m, double c) {
-  if (m.ndf != NDF_BLINN_PHONG && m.ndf != NDF_GAUSSIAN) return -1;  // not used: closed forms exact
-  double s = std::sqrt((1 - c) * (1 + c));
-  if (s <= 0 || m.alpha <= 0) return 0;
-  const ExactLambdaCache& cache = exactLambdaTable(m);
-  const int N = ExactLambdaCache::N;
-  double z = c / (c + m.alpha * s), u = z * (N - 1);
-  int i0 = std::clamp(int(std::floor(u)) - 3, 0, N - 8);
-  double sum = 0;
-  for (int i = 0; i < 8; ++i) {
-    double w = 1;
-    for (int j = 0; j < 8; ++j)
-      if (j != i) w *= (u - (i0 + j)) / double(i - j);
-    sum += w * cache.v[i0 + i];
-  }
-  return sum * m.alpha * s;
-}
-
 double smithLambdaExact(const Model& m, double c) {
   if (m.ndf != NDF_BLINN_PHONG && m.ndf != NDF_GAUSSIAN) return smithLambda(m, c);
-  return (m.direct ? cLambdaQuad(m.ndf, m.dp, c) : cLambdaExact(m, c)) / c;
+  return (m.direct ? detail::cLambdaQuad(m.ndf, m.dp, c) : detail::cLambdaTabled(m.ndf, m.dp, c)) / c;
 }
 
 double gafOf(const Model& m, const dvec3& i, const dvec3& o, const dvec3& h) {
@@ -471,7 +374,7 @@ double albedoAvg(int ndf, int gaf, double r, const Weight& w) {
 
 double smithLambdaExact(int ndf, double r, double mu) {
   Model m = model(ndf, GAF_SMITH_EXACT, r);
-  return cLambdaQuad(ndf, m.dp, mu) / mu;
+  return detail::cLambdaQuad(ndf, m.dp, mu) / mu;
 }
 
 double weakFurnace(int ndf, double r, double mu) { return weakFurnace(ndf, GAF_SMITH, r, mu); }
