@@ -1,7 +1,7 @@
 // The Fresnel albedo at its stiff corner: every Fresnel model at its extreme parameters (eta within
 // 1e-6 to 1e-2 of 1 on both sides, eta 0.2 and 5, a conductor with k -> 0 and k = 10, F82-tint's
 // tint 0 and 1), baked on the device, checked texel by texel where a narrow lobe meets F's steep
-// edge: the first and last four mu columns and r rows of 32^2 and 64^2 tables (128^2 and every
+// edge: the first and last four mu columns and r rows of 32^2 and 64^2 tables (128^2, 256^2 and every
 // pair in the sweep below, ctest's FresnelSweep.EveryPairEverySize behind the label `sweep`).
 //
 // Each texel is checked against the independent reference (host/reference: adaptive in the half
@@ -186,19 +186,21 @@ TEST(FresnelEdge, AverageAlbedoAtTheStiffCorner) {
   std::printf("albedo-avg at the stiff corner: largest error/claim %.2f\n", worst);
 }
 
-// The wider sweep: every NDF/GAF pair of the microfacet family (52), 32^2, 64^2 and 128^2, each
-// corner texel against the reference: `ctest -L sweep` (tests/CMakeLists.txt; 11.6 minutes on two
-// cores). Claims are held to 4 times the error except next to eta = 0.2's critical cosine at
-// 128^2, where the kink's float term is sized on the pair with the largest rounding and reaches
-// 8.4 times max(error, float floor) on pairs whose rounding cancels more (docs/accuracy.md, "The
-// whole sweep, and the edge it found"): 9 there.
+// The wider sweep: every NDF/GAF pair of the microfacet family (52) at 32^2, 64^2 and 128^2, and
+// the default pair at 256^2, each corner texel against the reference: `ctest -L sweep`
+// (tests/CMakeLists.txt; 10.9 minutes on two cores). Claims are held to
+// 4 times the error except next to eta = 0.2's critical cosine from 128^2 up, where the kink's
+// float term is sized on the pair with the largest rounding and reaches 8.4 times max(error,
+// float floor) on pairs whose rounding cancels more (docs/accuracy.md, "The whole sweep, and the
+// edge it found"): 9 there.
 TEST(FresnelEdge, DISABLED_EveryPairEverySize) {
   for (int ndf : {NDF_GGX, NDF_BECKMANN, NDF_BLINN_PHONG, NDF_GAUSSIAN})
     for (int gaf = 0; gaf < static_cast<int>(gafNames().size()); ++gaf) {
       if (!pairSupported(ndf, gaf)) continue;
       for (const Edge& e : edges())
-        for (int n : {32, 64, 128}) {
-          Worst w = checkTable(ndf, gaf, e, n, n == 128 && e.name == "dielectric eta=0.2" ? 9 : 4);
+        for (int n : {32, 64, 128, 256}) {
+          if (n == 256 && !(ndf == NDF_GGX && gaf == GAF_SMITH_CORRELATED)) continue;  // 1.5 s a table
+          Worst w = checkTable(ndf, gaf, e, n, n >= 128 && e.name == "dielectric eta=0.2" ? 9 : 4);
           std::printf("%s+%s %-30s %3d^2: largest error/claim %.2f, claim/max(error, floor) %.2f\n",
                       ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), e.name.c_str(), n, w.ratio, w.claimOver);
         }
