@@ -21,6 +21,7 @@
 #include "common/brdf_host.h"
 #include "formats/exr/table_file.h"
 #include "reference/dielectric_reference.h"
+#include "reference/reference.h"
 #include "test_device.h"
 
 namespace brdfbake {
@@ -88,6 +89,18 @@ TEST(Dielectric, KernelMatchesReference) {
     EXPECT_LE(std::max(er, et), t[2][0] + t[3][0] + 1e-7) << "grazing TIR: E_T " << t[1][0] << " ref " << ref.t;
   }
   std::printf("dielectric: worst device error against the reference %.2e\n", worst);
+}
+
+// E_R of rough glass seen from inside (eta 1/1.5) at mu 0.75, 0.005 above the critical cosine
+// 0.745, by the two references: the o-space one (its circles split where i.h = oc, a plane in o)
+// and the half-vector one (reference.h albedo with F as the weight, split at o.h = oc). They agree
+// to 7e-10; with the o-space circles unsplit it is 1.6e-7 high (tools/bite.sh glass-reference-kink).
+TEST(Dielectric, ReferencesAgreeNextToTheCriticalCosine) {
+  const double mu = 0.75, r = 0.75, eta = 1 / 1.5;
+  const double oSpace = reference::dielectricAlbedo(NDF_GGX, GAF_SMITH, mu, r, eta).r;
+  const double hSpace =
+      reference::albedo(NDF_GGX, GAF_SMITH, r, mu, {reference::Weight::Fresnel, {FRESNEL_DIELECTRIC, eta, 0}}).b;
+  EXPECT_NEAR(oSpace, hSpace, 1e-8);
 }
 
 // The rescaled estimates (kernels/integrate/dielectric.h) against the same rule converged (every inner

@@ -90,6 +90,10 @@ mutation() {
                                "LtcSweep.DistanceEstimateHoldsAtEverySecondRow" ;;
     ltc-e-claim-without-float) set -- "$1" host/tables/ltc/ltc_fit.cpp 'f.eBound[t] = p[1][t] + floatArithmeticError(' \
                                  'f.eBound[t] = p[1][t] + 0 * floatArithmeticError(' "Ltc.MagnitudeWithinItsClaim" ;;
+    avg-kink-breaks) set -- "$1" host/cl/runner_avg.cpp '  if (kink > 0) {' '  if (false) {' \
+                       "FresnelEdge.AverageAlbedoAtTheStiffCorner" ;;
+    glass-reference-kink) set -- "$1" host/reference/dielectric_reference.cpp '  if (s.eta < 1) kinks.push_back(' \
+                            '  if (false) kinks.push_back(' "Dielectric.ReferencesAgreeNextToTheCriticalCosine" ;;
     *) return 64 ;;
   esac
   run_one "$@"
@@ -100,7 +104,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        fresnel-eta-z fresnel-layer fresnel-claim-inflated fresnel-kink-claim fresnel-float-model
        driver-guards exr-header-sizes kind-twice scene-size-keys library-holds-a-client
        ltc-polygon-transposed ltc-distance-halved ltc-distance-in-float ltc-variance-one-pass ltc-claim-without-tenth
-       ltc-e-claim-without-float"
+       ltc-e-claim-without-float avg-kink-breaks glass-reference-kink"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
