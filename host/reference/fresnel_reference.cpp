@@ -19,34 +19,42 @@ double amplitudes(C n, double c, C ct) {
   C rs = (c - n * ct) / (c + n * ct), rp = (n * c - ct) / (n * c + ct);
   return 0.5 * (std::norm(rs) + std::norm(rp));
 }
+double schlick(double f0, double x) { return f0 + (1 - f0) * std::pow(1 - x, 5); }  // Schlick 1994
+
+// F of a real index eta from ct2 = cos_t^2 = 1 - (1 - c^2)/eta^2 (negative under total internal
+// reflection), however the caller computed it: the dielectric from its amplitudes; schlick-tir as
+// Burley 2015, Schlick on the transmitted cosine where eta < 1 and on c above.
+double realIndexFresnel(int model, double eta, double c, double ct2) {
+  if (model == FRESNEL_SCHLICK_TIR) {
+    const double f0 = std::pow((eta - 1) / (eta + 1), 2);
+    if (eta >= 1) return schlick(f0, c);
+    return ct2 < 0 ? 1.0 : schlick(f0, std::sqrt(ct2));
+  }
+  return amplitudes(C(eta, 0), c, std::sqrt(C(ct2)));
+}
+
+// cos_t^2 of a real index as (c^2 + (eta - 1)(eta + 1))/eta^2: written as 1 - (1 - c^2)/eta^2,
+// next to eta = 1 at a grazing c it cancels to c^2 + eta^2 - 1 ~ 1e-6 and keeps 1e-16 of
+// rounding, noise that F's steep layer there magnifies (the reference took 9.4 s a texel at
+// eta = 1 + 1e-6, mu = r = 1/512 that way; 0.02 s this way).
+double transmittedCos2(double eta, double c) { return (c * c + (eta - 1) * (eta + 1)) / (eta * eta); }
 }  // namespace
 
 double complexFresnel(double eta, double k, double c) {
   C n(eta, k);
-  // For a real index, 1 - (1 - c^2)/eta^2 = (c^2 + (eta - 1)(eta + 1))/eta^2: next to eta = 1 at a
-  // grazing c the left side cancels to c^2 + eta^2 - 1 ~ 1e-6 and keeps 1e-16 of rounding, noise
-  // that F's steep layer there magnifies (9.4 s a texel at eta = 1 + 1e-6, mu = r = 1/512; 0.02 s
-  // this way).
-  if (k == 0) return amplitudes(n, c, std::sqrt(C((c * c + (eta - 1) * (eta + 1)) / (eta * eta))));
   return amplitudes(n, c, std::sqrt(C(1.0) - C((1 - c) * (1 + c)) / (n * n)));
 }
 
 double fresnel(const FresnelSpec& f, double c) {
   c = std::min(std::fabs(c), 1.0);
-  auto schlick = [](double f0, double x) { return f0 + (1 - f0) * std::pow(1 - x, 5); };  // Schlick 1994
   switch (f.model) {
     case FRESNEL_SCHLICK:
       return schlick(f.x, c);
     case FRESNEL_DIELECTRIC:
-      return complexFresnel(f.x, 0, c);
+    case FRESNEL_SCHLICK_TIR:
+      return realIndexFresnel(f.model, f.x, c, transmittedCos2(f.x, c));
     case FRESNEL_CONDUCTOR:
       return complexFresnel(f.x, f.y, c);
-    case FRESNEL_SCHLICK_TIR: {  // Burley 2015: Schlick on the transmitted cosine where eta < 1
-      double f0 = std::pow((f.x - 1) / (f.x + 1), 2);
-      if (f.x >= 1) return schlick(f0, c);
-      double ct2 = 1 - (1 - c * c) / (f.x * f.x);
-      return ct2 < 0 ? 1.0 : schlick(f0, std::sqrt(ct2));
-    }
     case FRESNEL_F82_TINT: {  // Hoffman 2019 / OpenPBR: F(1/7) = tint * Schlick(1/7)
       const double mb = 1.0 / 7;
       double b = schlick(f.x, mb) * (1 - f.y) / (mb * std::pow(1 - mb, 6));
@@ -77,12 +85,8 @@ double weightAt(const Weight& w, double c) {
 double weightNearKink(const Weight& w, double c, double delta) {
   double oc = weightKink(w);
   if (oc <= 0) return weightAt(w, c);
-  double eta = w.f.x, ct2 = delta * (c + oc) / (eta * eta);
-  if (w.f.model == FRESNEL_SCHLICK_TIR) {
-    double f0 = std::pow((eta - 1) / (eta + 1), 2);
-    return ct2 < 0 ? 1.0 : f0 + (1 - f0) * std::pow(1 - std::sqrt(ct2), 5);  // Burley 2015, as above
-  }
-  return amplitudes(C(eta, 0), c, std::sqrt(C(ct2)));  // the dielectric, as complexFresnel
+  const double eta = w.f.x;
+  return realIndexFresnel(w.f.model, eta, c, delta * (c + oc) / (eta * eta));
 }
 
 double fresnelAvg(const FresnelSpec& f) {
