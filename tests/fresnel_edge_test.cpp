@@ -15,9 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <atomic>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "cl/runner.h"
@@ -26,6 +24,7 @@
 #include "reference/reference.h"
 #include "reference_cache.h"
 #include "tables/error_model.h"
+#include "tables/ladder.h"
 #include "test_device.h"
 
 namespace {
@@ -65,17 +64,11 @@ HemiWeight weightOf(const Edge& e) {
 std::vector<double> referenceValues(int ndf, int gaf, const Edge& e, int n,
                                     const std::vector<std::pair<int, int>>& texels) {
   std::vector<double> out(texels.size());
-  std::atomic<size_t> next{0};
-  auto work = [&] {
-    for (size_t q; (q = next++) < texels.size();) {
-      auto [i, j] = texels[q];
-      double mu = static_cast<float>((i + 0.5) / n), r = static_cast<float>((j + 0.5) / n);
-      out[q] = reference::albedo(ndf, gaf, r, mu, {reference::Weight::Fresnel, {e.model, e.x, e.y}}).b;
-    }
-  };
-  std::thread other(work);
-  work();
-  other.join();
+  ladder::onTwoThreads(texels.size(), [&](size_t q) {
+    auto [i, j] = texels[q];
+    double mu = static_cast<float>((i + 0.5) / n), r = static_cast<float>((j + 0.5) / n);
+    out[q] = reference::albedo(ndf, gaf, r, mu, {reference::Weight::Fresnel, {e.model, e.x, e.y}}).b;
+  });
   return out;
 }
 
