@@ -94,6 +94,10 @@ mutation() {
                        "FresnelEdge.AverageAlbedoAtTheStiffCorner" ;;
     glass-reference-kink) set -- "$1" host/reference/dielectric_reference.cpp '  if (s.eta < 1) kinks.push_back(' \
                             '  if (false) kinks.push_back(' "Dielectric.ReferencesAgreeNextToTheCriticalCosine" ;;
+    favg-tir-part) set -- "$1" host/reference/fresnel_reference.cpp '  return oc * oc + detail::adapt(graded' \
+                     '  return detail::adapt(graded' "Fresnel.AverageFresnelClosedFormsAndQuadrature" ;;
+    glass-reference-outer) set -- "$1" host/reference/dielectric_reference.cpp 'br[k + 1], 1e-9, 14, 1e-9);' \
+                             'br[k + 1], 1e-8, 10, 1e-8);' "CliEvidence.StressIsCleanAndWritesItsPage" ;;
     *) return 64 ;;
   esac
   run_one "$@"
@@ -104,7 +108,8 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        fresnel-eta-z fresnel-layer fresnel-claim-inflated fresnel-kink-claim fresnel-float-model
        driver-guards exr-header-sizes kind-twice scene-size-keys library-holds-a-client
        ltc-polygon-transposed ltc-distance-halved ltc-distance-in-float ltc-variance-one-pass ltc-claim-without-tenth
-       ltc-e-claim-without-float avg-kink-breaks glass-reference-kink"
+       ltc-e-claim-without-float avg-kink-breaks glass-reference-kink
+       favg-tir-part glass-reference-outer"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
