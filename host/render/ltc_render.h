@@ -1,5 +1,6 @@
 // `brdfbake render --light quad`: spheres over roughness under a rectangle light, shaded on GL with
-// the LTC tables and the generated lookup and polygon code (shader/shader_gen.h ltcPolygonCode), each
+// the LTC tables and the generated lookup and polygon code (shader/shader_gen.h shaderForFiles; the polygon
+// integral from tables/ltc/ltc_shader.cpp), each
 // pixel against the exact integral of the BRDF over the light (host quadrature with kernels/brdf).
 #pragma once
 #include "render/render.h"

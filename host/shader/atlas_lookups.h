@@ -5,7 +5,7 @@
 #include <string>
 
 #include "formats/table_image.h"
-#include "shader/shader_lang.h"
+#include "formats/shader_lang.h"
 
 namespace brdfbake::shadergen {
 

@@ -23,11 +23,9 @@ std::string shaderPrefix(const std::string& path);
 // Throws Error(kExitDataErr) naming the file when the header lacks what the code needs.
 std::string shaderForTable(const std::string& path, const TableImage& header, ShaderLang lang);
 
-// The LTC's integral over a quad light (ltc_polygon), written once with the LTC tables' lookups.
-std::string ltcPolygonCode(ShaderLang lang);
-
 // `brdfbake shader --lang L FILE...`: every file's functions (EXR, KTX2, PNG, the header format; a DDS
-// with the metadata of the file beside it: formats/readers/table_reader.h tableMetadata), plus the glue to
+// with the metadata of the file beside it: formats/readers/table_reader.h tableMetadata), then what a
+// kind among them writes once (the LTC's polygon integral, tables/kind_info.h ShaderCode), plus the glue to
 // shaders/multiscatter.glsl (lookupE, lookupEavg, lookupAB) when the albedo, albedo-avg and
 // split-sum tables of one pair are among the files.
 std::string shaderForFiles(const std::vector<std::string>& paths, ShaderLang lang);

@@ -2,9 +2,12 @@
 // generator, scene manifests, bake reports, argument checks, the furnace) ask this and never switch
 // over kinds; the kind's name is tableName(kind) (common/models.h, the one list of ids and names).
 #pragma once
+#include <functional>
 #include <string>
 
 #include "common/models.h"
+#include "formats/shader_lang.h"
+#include "formats/table_image.h"
 
 namespace brdfbake {
 
@@ -16,7 +19,19 @@ enum class ShaderLookup {
   Volume,       // a 3D texture over the BRDF's angles (brdf3d)
   EtaVolume,    // an atlas of eta slices over (mu, r) (dielectric)
   OwnShader,    // textures that come with their own shader (ashikhmin-shirley): none written
-  Ltc,          // an LTC's matrix or magnitude over (r, sqrt(1 - mu)), and the polygon integral
+  Family,       // the family writes the accessors itself (KindInfo::shaderCode)
+};
+
+// Lookup code a family writes for its kind (ShaderLookup::Family): the generator writes the grid's
+// lookups (P_lookup, P_lookupExact) and asks the family for the accessors built on them.
+struct ShaderCode {
+  // the accessors on one path: variant "" reads P_lookup (the hardware filter), "Exact" P_lookupExact;
+  // header: the table's attributes
+  std::function<std::string(const shadergen::Lang& lang, const std::string& prefix, const TableImage& header,
+                            const std::string& variant)>
+      accessors;
+  // written once after the files' lookups when a table of the kind is among them (empty: nothing)
+  std::function<std::string(const shadergen::Lang& lang)> once;
 };
 
 // What a scene's shading reads a kind for: scene/scene_plan.cpp plans, for each material, the
@@ -48,6 +63,7 @@ struct KindInfo {
   std::string energy = {}, energyChannel = {};
   ShaderLookup shader = ShaderLookup::Value;
   std::string shaderValue = {};  // ShaderLookup::Value: the accessor's name ("E" -> P_E(tex, mu, r))
+  ShaderCode shaderCode = {};    // ShaderLookup::Family: the family's accessors
   bool inScenes = false;         // a scene manifest names it ([output.size] keys) and plans it
   bool furnace = false;          // the furnace render and the report pages' renders read it
   bool muRAxes = false;          // x = mu, y = r: --mu-axis sqrt spaces its x texels in sqrt(mu)

@@ -18,6 +18,7 @@
 #include "tables/ladder.h"
 #include "tables/ltc/ltc_checks.h"
 #include "tables/ltc/ltc_fit.h"
+#include "tables/ltc/ltc_shader.h"
 #include "tables/registry.h"
 #include "tables/table2d.h"
 
@@ -63,7 +64,8 @@ class LtcFamily final : public TableFamily {
   std::vector<KindInfo> describe() const override {
     KindInfo k{TableKind::Ltc};
     k.defaultSize = 64;
-    k.shader = ShaderLookup::Ltc;
+    k.shader = ShaderLookup::Family;
+    k.shaderCode = ltcShaderCode();
     return {k};
   }
 

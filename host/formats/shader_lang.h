@@ -1,4 +1,5 @@
-// What the generated lookups of every table kind share (shader/shader_gen.cpp, shader/atlas_lookups.cpp):
+// What generated lookup code shares (shader/shader_gen.cpp, shader/atlas_lookups.cpp, and the families
+// that write lookups of their own, tables/kind_info.h ShaderCode):
 // the words GLSL and HLSL spell apart, float literals, header attributes.
 #pragma once
 #include <string>
