@@ -89,7 +89,7 @@ int runCommand(Command& cmd) {
         return kExitOk;
       case Command::Kind::Energy: {
         if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
-        std::vector<EnergyResult> res = checkEnergy(cmd.bake);
+        std::vector<EnergyResult> res = checkEnergy(cmd.bake, cmd.energy);
         // the gate stays a fraction of a second; its page, with a GL render per pair, on request
         std::cout << formatEnergy(res) << (cmd.outputGiven ? writeEnergyPage(cmd.bake, res) : std::string());
         for (const auto& r : res)
@@ -120,7 +120,7 @@ int runCommand(Command& cmd) {
       case Command::Kind::Convergence: {
         if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
         std::string pageLine;
-        ConvergenceResult res = runConvergence(cmd.bake, &pageLine);
+        ConvergenceResult res = runConvergence(cmd.bake, cmd.ladder, &pageLine);
         std::cout << formatConvergence(res) << pageLine;
         return kExitOk;
       }

@@ -267,13 +267,13 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       req.etaRange = std::make_pair(v[0], v[1]);
     } else if (opt == "--transmission") {
       once(opt, opt);
-      req.transmission = true;
+      cmd.energy.transmission = true;
     } else if (opt == "--coupling") {
       once(opt, opt);
-      req.coupling = value();
-      if (req.coupling != "sum" && req.coupling != "albedo-scaling")
-        throw Error(kExitUsage, "--coupling must be sum or albedo-scaling, got '" + req.coupling + "'" +
-                                    nearestValue("--coupling", req.coupling));
+      cmd.energy.coupling = value();
+      if (cmd.energy.coupling != "sum" && cmd.energy.coupling != "albedo-scaling")
+        throw Error(kExitUsage, "--coupling must be sum or albedo-scaling, got '" + cmd.energy.coupling + "'" +
+                                    nearestValue("--coupling", cmd.energy.coupling));
     } else if (opt == "--levels" || opt == "--samples") {
       // a budget ladder: increasing integers in range
       once(opt, opt);
@@ -293,7 +293,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
                                       " after " + std::to_string(ladder.back()));
         ladder.push_back(static_cast<int>(v));
       }
-      (lv ? req.levels : req.samples) = ladder;
+      (lv ? cmd.ladder.levels : cmd.ladder.samples) = ladder;
     } else if (opt == "--preset") {
       once(opt, "--preset");
       req.preset = value();
@@ -370,7 +370,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   if (cmd.kind == Command::Kind::Energy) {
     if (req.sigma && req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
       throw Error(kExitUsage, "--sigma: only --diffuse oren-nayar and oren-nayar-as-printed take it");
-    if (req.transmission && (req.fresnel.model != FRESNEL_DIELECTRIC || req.diffuse >= 0))
+    if (cmd.energy.transmission && (req.fresnel.model != FRESNEL_DIELECTRIC || req.diffuse >= 0))
       throw Error(kExitUsage, "--transmission: rough glass takes --fresnel dielectric (its --eta) and no --diffuse");
   }
   if (cmd.kind == Command::Kind::Convergence) {

@@ -7,6 +7,8 @@
 
 #include "brdfbake/request.h"
 #include "render/render.h"
+#include "report/energy.h"
+#include "tables/measures.h"
 #include "scene/scene_run.h"
 
 namespace brdfbake {
@@ -34,6 +36,8 @@ struct Command {
   std::array<double, 3> at{};      // Sample: --at, in degrees
   SceneOptions scene;              // ScenePlan, SceneBake
   RenderOptions render;            // Render
+  EnergyOptions energy;            // Energy: --coupling, --transmission
+  LadderBudgets ladder;            // Convergence: --levels, --samples
   std::vector<std::string> files;  // Shader: the tables
   bool hlsl = false;               // Shader: --lang hlsl (else glsl)
   std::string helpFor;             // Help: the command whose help to print ("" = the overview)

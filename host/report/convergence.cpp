@@ -54,12 +54,12 @@ std::string plotTitle(std::string s) {
 
 }  // namespace
 
-ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine) {
+ConvergenceResult runConvergence(const BakeRequest& req, const LadderBudgets& budgets, std::string* pageLine) {
   if (req.tables.size() != 1)
     throw Error(kExitUsage, "--table: convergence measures one table kind (" + joinNames(tableNames()) + ")");
   const TableKind kind = req.tables.front();
   BakeContext ctx(req.device);
-  Ladder ladder = familyFor(req, kind).convergence(ctx, req, kind);
+  Ladder ladder = familyFor(req, kind).convergence(ctx, req, kind, budgets);
   ConvergenceResult res;
   res.table = ladder.table;
   res.rungs = ladder.rungs;

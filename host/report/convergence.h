@@ -20,7 +20,7 @@ struct ConvergenceResult {
   std::string summary;  // orders and times to tolerance
 };
 
-ConvergenceResult runConvergence(const BakeRequest& req, std::string* pageLine);
+ConvergenceResult runConvergence(const BakeRequest& req, const LadderBudgets& budgets, std::string* pageLine);
 std::string formatConvergence(const ConvergenceResult& r);
 
 }  // namespace brdfbake

@@ -47,7 +47,7 @@ double normalReflectance(const FresnelChoice& f, int c) {
 
 }  // namespace
 
-std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
+std::vector<EnergyResult> checkEnergy(const BakeRequest& req, const EnergyOptions& opts) {
   const int n = req.size ? *req.size : 33;
   if (n < 2)
     throw Error(kExitUsage, "--size must be at least 2 for energy (grid nodes per axis), got " + std::to_string(n));
@@ -65,7 +65,7 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
       EnergyResult res;
       res.material = ndfNames()[ndf] + "+" + gafNames()[gaf] + ", fresnel " + fc.describe() + ", diffuse " +
                      (d >= 0 ? diffuseNames()[d] : std::string("none")) +
-                     (orenNayar && req.sigma ? " sigma=" + fmtG(*req.sigma) : "") + ", coupling " + req.coupling;
+                     (orenNayar && req.sigma ? " sigma=" + fmtG(*req.sigma) : "") + ", coupling " + opts.coupling;
       std::vector<EnergyPoint> pts;
       // the node grid (edges included), or texel centres for the sheen GAFs, whose albedo is
       // infinite at mu = 0 (as verify's white furnace samples them)
@@ -73,7 +73,7 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
       auto at = [nodes](int i, int count, double lo, double hi) {
         return nodes ? node(i, count, lo, hi) : lo + (hi - lo) * (i + 0.5) / count;
       };
-      if (req.transmission) {
+      if (opts.transmission) {
         // rough glass: reflected plus transmitted albedo at the material's eta, node grid of (mu, r)
         if ((ndf != NDF_GGX && ndf != NDF_BECKMANN) || (gaf != GAF_SMITH && gaf != GAF_SMITH_CORRELATED))
           throw Error(kExitUsage,
@@ -96,7 +96,7 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
       // the specular lobe's albedo with its Fresnel over (mu, r) on the node grid, as `brdfbake bake
       // --table albedo --fresnel ...` makes it, with the table's per-texel claims
       Table spec;
-      if (!req.transmission) {
+      if (!opts.transmission) {
         BakeRequest b;
         b.ndfs = {ndf};
         b.gafs = {gaf};
@@ -108,7 +108,7 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
         b.device = req.device;
         spec = std::move(bake(b).at(0));
       }
-      for (int c = 0; c < (req.transmission ? 0 : fc.channels()); ++c) {
+      for (int c = 0; c < (opts.transmission ? 0 : fc.channels()); ++c) {
         // the diffuse lobe's albedo over (mu, its parameter): burley follows r, oren-nayar sigma
         // (swept unless --sigma), the Shirley forms the Fresnel's F0 (swept when F = 1)
         KernelTable dif;
@@ -159,9 +159,9 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req) {
               }
               // sum: the lobes add (each diffuse model's paper; Shirley's carries its 1 - F0);
               // albedo-scaling: the diffuse lobe gets what the specular left, (1 - E_spec) f_d
-              double w = req.coupling == "albedo-scaling" ? 1 - es : 1;
+              double w = opts.coupling == "albedo-scaling" ? 1 - es : 1;
               double total = es + w * ed;
-              double bound = bs * (1 + (req.coupling == "albedo-scaling" ? std::fabs(ed) : 0)) + std::fabs(w) * bd;
+              double bound = bs * (1 + (opts.coupling == "albedo-scaling" ? std::fabs(ed) : 0)) + std::fabs(w) * bd;
               double param = res.paramName.empty() ? NAN : at(q, np, plo, phi);
               pts.push_back({at(i, n, 0, 1), at(j, n, 0, 1), param, c, es, w * ed, total, bound});
             }

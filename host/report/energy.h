@@ -27,10 +27,16 @@ struct EnergyResult {
   std::string secondLobe = "diffuse";  // the column of EnergyPoint::diffuse: "E_T" for rough glass
 };
 
+// How the material's lobes combine (brdfbake energy --coupling, --transmission).
+struct EnergyOptions {
+  std::string coupling = "sum";  // sum | albedo-scaling (the diffuse lobe scaled by 1 - E_spec)
+  bool transmission = false;     // rough glass: E_R + E_T, --fresnel dielectric
+};
+
 // One result per NDF/GAF pair of the request (size = grid nodes per axis, default 33). With
-// --transmission (rough glass: --fresnel dielectric) the total is E_R + E_T of the microfacet BSDF
+// transmission (rough glass: --fresnel dielectric) the total is E_R + E_T of the microfacet BSDF
 // (Walter et al. 2007) at the material's eta.
-std::vector<EnergyResult> checkEnergy(const BakeRequest& req);
+std::vector<EnergyResult> checkEnergy(const BakeRequest& req, const EnergyOptions& opts = {});
 // The verdict lines and the table of worst points.
 std::string formatEnergy(const std::vector<EnergyResult>& results);
 // The page <outDir>/energy/index.html: the verdicts, energy.csv (the worst points) and the white

@@ -111,10 +111,12 @@ class TableFamily {
   // Whether the family bakes a request's `kind`: a measured material (--brdf merl:) goes to the
   // measured family, every other request to the family that lists the kind.
   virtual bool takes(const BakeRequest& req) const { return req.merl.empty(); }
-  // The convergence ladder of `kind` for a request of one pair (req.levels, req.samples, req.size):
+  // The convergence ladder of `kind` for a request of one pair (its size, models, Fresnel), climbing
+  // `budgets`:
   // each method the baker or common practice offers, at rising budgets, against the independent
   // reference. Throws Error(kExitUsage) for requests it cannot measure.
-  virtual Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind) const = 0;
+  virtual Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind,
+                             const LadderBudgets& budgets) const = 0;
   // Its tables' values at the stiff and extreme cases (brdfbake stress), appended to `out`.
   virtual void stress(BakeContext& /*ctx*/, std::vector<StressPoint>& /*out*/) const {}
   // Scenes: everything the job's values and header depend on, as text (content hashes).

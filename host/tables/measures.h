@@ -15,6 +15,12 @@ struct Rung {
   double seconds = 0, estimate = 0, error = 0;
 };
 
+// The budgets a convergence ladder climbs (brdfbake convergence --levels, --samples).
+struct LadderBudgets {
+  std::vector<int> levels = {0, 1, 2, 3};                              // quadrature levels
+  std::vector<int> samples = {16, 64, 256, 1024, 4096, 16384, 65536};  // Monte Carlo samples
+};
+
 // A table kind's error against run time (brdfbake convergence --table KIND).
 struct Ladder {
   std::string table;  // what was measured: the table, models, points

@@ -41,13 +41,9 @@ struct BakeRequest {
   int diffuse = -1;              // --diffuse: DIFFUSE_* id, or -1
   std::string merl;              // --brdf merl:FILE: a measured material's MERL file, or ""
   std::string preset;            // --preset gltf: glTF's reference-shading tables (plan/plan.cpp), or ""
-  std::optional<double> sigma;   // energy: --sigma for oren-nayar (else swept)
-  std::string coupling = "sum";  // energy: --coupling sum | albedo-scaling
-  bool transmission = false;     // energy: --transmission (rough glass: E_R + E_T, --fresnel dielectric)
+  std::optional<double> sigma;   // --sigma: oren-nayar's roughness (brdf3d; energy sweeps it when unset)
   // --table dielectric, dielectric-avg: the eta axis's range (--eta-range LO,HI)
   std::optional<std::pair<double, double>> etaRange;
-  std::vector<int> levels = {0, 1, 2, 3};                              // convergence: quadrature levels
-  std::vector<int> samples = {16, 64, 256, 1024, 4096, 16384, 65536};  // convergence: MC samples
   // --table brdf3d (the others ignore these; given without it, they are a usage error)
   struct Volume {
     Brdf3dParam param = Brdf3dParam::Angles;   // --param

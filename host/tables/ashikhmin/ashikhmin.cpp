@@ -65,7 +65,7 @@ class Ashikhmin final : public TableFamily {
   // bilinearly at 1024 points of the (2, 3) Halton sequence against the formulas as printed (long
   // double), relative to max(1, |v|). Points in [1/16, 1]^2, where every grid of the ladder has
   // texels (Tex1's upper-node grid starts at 1/N).
-  Ladder convergence(BakeContext&, const BakeRequest& req, TableKind) const override {
+  Ladder convergence(BakeContext&, const BakeRequest& req, TableKind, const LadderBudgets& budgets) const override {
     if (!req.ndfs.empty() && req.ndfs.size() != 1)
       throw Error(kExitUsage, "--ndf: ashikhmin-shirley has its own model");
     const int points = 1024;
@@ -84,7 +84,7 @@ class Ashikhmin final : public TableFamily {
     L.table = "ashikhmin-shirley Tex0, Tex1 (R, G, B), Tex2: bilinear lookups at " + std::to_string(points) +
               " points of [1/16, 1]^2";
     std::vector<double> prev;
-    for (int level : req.levels) {
+    for (int level : budgets.levels) {
       const int n = 16 << level;
       std::vector<double> v;
       double secs = ladder::now();

@@ -235,7 +235,7 @@ class Brdf3d final : public TableFamily {
   // trilinearly at 2048 points of the (7, 11, 13) Halton sequence over the axes' ranges against f
   // evaluated in double on the host (the BRDF itself: nothing is integrated), relative to
   // max(1, |f|); the estimate is what the file claims (brdf.interp-error + brdf.error).
-  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind) const override {
+  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind, const LadderBudgets& budgets) const override {
     if (req.ndfs.size() != 1 || req.gafs.size() != 1)
       throw Error(kExitUsage, "convergence measures one pair: give one --ndf and one --gaf");
     auto radical = [](int i, int b) {
@@ -245,7 +245,7 @@ class Brdf3d final : public TableFamily {
     };
     Ladder L;
     std::vector<double> prev;
-    for (int level : req.levels) {
+    for (int level : budgets.levels) {
       BakeRequest r = req;
       r.size = 8 << level;
       r.volume.size.reset();

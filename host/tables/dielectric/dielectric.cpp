@@ -96,7 +96,7 @@ std::string etaText(const std::vector<double>& etas) {
 
 // dielectric over n x n texel centres in (mu, r) at three etas: the device's quadrature at
 // per-texel targets 1e-4 10^-L (levels L) and at the bake's, against the o-space reference.
-Ladder cubeLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
+Ladder cubeLadder(BakeContext& ctx, const BakeRequest& req, const LadderBudgets& budgets, int ndf, int gaf) {
   const int n = ladder::pointsPerAxis(req, 3, 1, 16, "dielectric");
   const std::vector<double> etas = ladderEtas(req);
   Ladder L;
@@ -117,7 +117,7 @@ Ladder cubeLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
   KernelRunner& kr = ctx.runner();
   kr.prepare(KernelNeed{KernelNeed::Dielectric, ndf, gaf});
   std::vector<float> targets;
-  for (int level : req.levels) targets.push_back(static_cast<float>(1e-4 * std::pow(10.0, -level)));
+  for (int level : budgets.levels) targets.push_back(static_cast<float>(1e-4 * std::pow(10.0, -level)));
   targets.push_back(kDielectricTarget);
   kr.dielectricSlab(ndf, gaf, n, n, etas, false, targets.front());  // warm
   for (size_t i = 0; i < targets.size(); ++i) {
@@ -145,7 +145,7 @@ Ladder cubeLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
 // dielectric-avg over n texel centres in r at three etas: the bake's averages rule (panels over mu
 // with E on the device) at entry targets 1e-4 10^-L (levels L) and at the bake's, against
 // 2 int E mu dmu of the o-space reference's E by adaptive Gauss-Kronrod, split at the critical mu.
-Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
+Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, const LadderBudgets& budgets, int ndf, int gaf) {
   const int n = ladder::pointsPerAxis(req, 2, 1, 16, "dielectric-avg");
   Ladder L;
   L.table = "dielectric-avg (E_R,avg and E_T,avg) of " + ndfNames()[ndf] + "+" + gafNames()[gaf] + ", " +
@@ -186,7 +186,7 @@ Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
   KernelRunner& kr = ctx.runner();
   kr.prepare(KernelNeed{KernelNeed::DielectricNodes, ndf, gaf});
   std::vector<std::pair<double, float>> targets;  // entry target, node target
-  for (int level : req.levels) {
+  for (int level : budgets.levels) {
     double t = 1e-4 * std::pow(10.0, -level);
     targets.push_back({t, static_cast<float>(std::max(t, 1e-7))});
   }
@@ -279,14 +279,16 @@ class Dielectric final : public TableFamily {
     set.files.push_back(std::move(f));
   }
 
-  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind) const override {
+  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind,
+                     const LadderBudgets& budgets) const override {
     if (req.ndfs.size() != 1 || req.gafs.size() != 1)
       throw Error(kExitUsage, "convergence measures one pair: give one --ndf and one --gaf");
     BakeRequest r = req;
     r.tables = {kind};
     planDielectric(this, r);  // the same model checks as a bake
     const int ndf = req.ndfs[0], gaf = req.gafs[0];
-    return kind == TableKind::Dielectric ? cubeLadder(ctx, req, ndf, gaf) : avgLadder(ctx, req, ndf, gaf);
+    return kind == TableKind::Dielectric ? cubeLadder(ctx, req, budgets, ndf, gaf)
+                                          : avgLadder(ctx, req, budgets, ndf, gaf);
   }
 
   // Near the interface's limits: eta -> 1 (E_R -> 0, E_T -> the eta = 1 closed form), a nearly

@@ -84,7 +84,7 @@ class FresnelAvg final : public TableFamily {
   // Over n texel centres in eta: the bake's rule (closed form, or adaptive GK31 split at the critical
   // angle) and composite Gauss-Legendre of 2 mu F(mu) over [0, 1] without the split (levels L: 4^L
   // panels of 8 nodes), against the reference (complex Fresnel amplitudes, adaptive GK in double).
-  Ladder convergence(BakeContext&, const BakeRequest& req, TableKind) const override {
+  Ladder convergence(BakeContext&, const BakeRequest& req, TableKind, const LadderBudgets& budgets) const override {
     const int model = req.fresnel.model;
     if (model != FRESNEL_DIELECTRIC && model != FRESNEL_SCHLICK_TIR)
       throw Error(kExitUsage, "--table fresnel-avg runs over eta: it takes --fresnel dielectric or schlick-tir");
@@ -106,7 +106,7 @@ class FresnelAvg final : public TableFamily {
       L.rungs.push_back(ladder::rung("the bake's rule (host, double)", "adaptive", secs, v, e, ref));
     }
     std::vector<double> prev;
-    for (int level : req.levels) {
+    for (int level : budgets.levels) {
       const int panels = 1 << (2 * level);
       std::vector<double> v(n);
       double secs = ladder::best3([&] {

@@ -270,7 +270,9 @@ class LtcFamily final : public TableFamily {
     }
   }
 
-  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind) const override { return ltcLadder(ctx, req); }
+  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind, const LadderBudgets&) const override {
+    return ltcLadder(ctx, req);
+  }
   void stress(BakeContext& ctx, std::vector<StressPoint>& out) const override { ltcStress(ctx, out); }
 
   std::string key(const Job& job) const override {

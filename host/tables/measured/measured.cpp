@@ -84,7 +84,8 @@ class Measured final : public TableFamily {
   // for k in kMerlLadder (levels L take its L-th rule) and the bake's adaptive climb, against the
   // (30, 29) rule: a MERL file's interpolant has no closed form, and the rules converge to it
   // (docs/merl.md, brdfbake-bench --merl). albedo-avg: the direct rule's n nodes per bin and piece.
-  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind) const override {
+  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind,
+                     const LadderBudgets& budgets) const override {
     const MerlData& d = data(ctx, req.merl);
     const RusinkiewiczFn f = merlFunction(d);
     Ladder L;
@@ -94,7 +95,7 @@ class Measured final : public TableFamily {
       std::array<double, 3> truth = directAlbedoAvgRule(f, 10, 2);
       const double refSeconds = ladder::now() - t0;
       std::vector<double> ref(truth.begin(), truth.end()), prev;
-      for (int level : req.levels) {
+      for (int level : budgets.levels) {
         const int nodes = kMerlAvgLadder[std::min<size_t>(static_cast<size_t>(level), kMerlAvgLadder.size() - 1)];
         double secs = ladder::now();
         std::array<double, 3> v = directAlbedoAvgRule(f, nodes, 2);
@@ -120,7 +121,7 @@ class Measured final : public TableFamily {
     });
     const double refSeconds = ladder::now() - t0;
     std::vector<double> prev;
-    for (int level : req.levels) {
+    for (int level : budgets.levels) {
       const int k = kMerlLadder[std::min<size_t>(static_cast<size_t>(level) * 2, kMerlLadder.size() - 1)];
       std::vector<double> v(ref.size());
       double secs = ladder::now();

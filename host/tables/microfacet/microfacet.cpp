@@ -320,8 +320,9 @@ class Microfacet final : public TableFamily {
     return t;
   }
 
-  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind) const override {
-    return microfacetLadder(ctx, req, kind);
+  Ladder convergence(BakeContext& ctx, const BakeRequest& req, TableKind kind,
+                     const LadderBudgets& budgets) const override {
+    return microfacetLadder(ctx, req, kind, budgets);
   }
 
   void stress(BakeContext& ctx, std::vector<StressPoint>& out) const override { microfacetStress(ctx.runner(), out); }

@@ -18,9 +18,10 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
 
 // The convergence ladders of splitsum, albedo, albedo-avg and kp (tables/microfacet/microfacet_ladder.cpp).
 struct Ladder;
+struct LadderBudgets;
 struct BakeRequest;
 class BakeContext;
-Ladder microfacetLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind);
+Ladder microfacetLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind, const LadderBudgets& budgets);
 
 // Its stress points (tables/microfacet/microfacet_stress.cpp).
 struct StressPoint;

@@ -75,7 +75,8 @@ Weights weightsOf(const FresnelChoice& fc) {
 // splitsum (A and B) and albedo (E, or E_F with a Fresnel model) over n x n texel centres: the
 // bake's quadrature on the device at budget levels (every texel at the same level), the same rule in
 // double on the host, and Monte Carlo.
-Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind, int ndf, int gaf) {
+Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, const LadderBudgets& budgets, TableKind kind,
+                        int ndf, int gaf) {
   const int n = ladder::pointsPerAxis(req, 12, 2, 64, tableName(kind));
   const FresnelChoice& fc = req.fresnel;
   const bool split = kind == TableKind::SplitSum;
@@ -110,7 +111,7 @@ Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
   KernelRunner& kr = ctx.runner();
   kr.prepare(KernelNeed{KernelNeed::Hemisphere, ndf, gaf});
   kr.hemisphere(ndf, gaf, n, n, false, w.hw);  // warm: the kernel's compile is not timed
-  for (int level : req.levels) {
+  for (int level : budgets.levels) {
     std::fprintf(stderr, "convergence: quadrature level %d\n", level);
     KernelTable t;
     double secs = best3([&] { t = kr.hemisphereRange(ndf, gaf, n, n, 0, 1, 0, 1, false, w.hw, level); });
@@ -125,7 +126,7 @@ Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
     }
     L.rungs.push_back(ladder::rung("quadrature (device, float)", "level " + std::to_string(level), secs, v, e, ref));
   }
-  for (int level : req.levels) {
+  for (int level : budgets.levels) {
     std::fprintf(stderr, "convergence: quadrature level %d in double\n", level);
     std::vector<double> v(texels * nv), e(texels);
     double s0 = now();
@@ -141,7 +142,7 @@ Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
     L.rungs.push_back(
         ladder::rung("quadrature (host, double)", "level " + std::to_string(level), now() - s0, v, e, ref));
   }
-  for (int ns : req.samples) {
+  for (int ns : budgets.samples) {
     std::fprintf(stderr, "convergence: Monte Carlo %d samples\n", ns);
     std::vector<double> v(texels * nv), e(texels);
     double s0 = now();
@@ -172,7 +173,7 @@ Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
 // albedo-avg over n texel centres in r: the bake's rule (GK panels over mu, halved where the bound
 // is largest, E on the device) and a plain composite Gauss-Legendre over mu of the same device E(mu)
 // at rising panel counts (levels L: 2^L panels of 8 nodes), against the reference's E_avg.
-Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
+Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, const LadderBudgets& budgets, int ndf, int gaf) {
   const int n = ladder::pointsPerAxis(req, 6, 1, 32, "albedo-avg");
   const FresnelChoice& fc = req.fresnel;
   const Weights w = weightsOf(fc);
@@ -201,7 +202,7 @@ Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
                                    secs, v, e, ref));
   }
   std::vector<double> prev;
-  for (int level : req.levels) {
+  for (int level : budgets.levels) {
     const int panels = 1 << level;
     // the nodes of every roughness at once, one device run
     const std::vector<ladder::Node> gl = ladder::gaussLegendreNodes(0, 1, panels);
@@ -238,7 +239,7 @@ Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, int ndf, int gaf) {
 
 // k_p over n texel centres in r: the bake's rule on the device, and composite Gauss-Legendre in
 // theta in double (levels L: 4^L panels of 8 nodes), against the reference's k_p.
-Ladder kpLadder(BakeContext& ctx, const BakeRequest& req, int ndf) {
+Ladder kpLadder(BakeContext& ctx, const BakeRequest& req, const LadderBudgets& budgets, int ndf) {
   const int n = ladder::pointsPerAxis(req, 8, 1, 64, "kp");
   Ladder L;
   L.table = "kp of " + ndfNames()[ndf] + ", " + std::to_string(n) + " texel centres in r";
@@ -260,7 +261,7 @@ Ladder kpLadder(BakeContext& ctx, const BakeRequest& req, int ndf) {
     L.rungs.push_back(ladder::rung("the bake's rule (device, float)", "fixed", secs, v, e, ref));
   }
   std::vector<double> prev;
-  for (int level : req.levels) {
+  for (int level : budgets.levels) {
     const int panels = 1 << (2 * level);
     std::vector<double> v(n);
     double secs = best3([&] {
@@ -292,7 +293,7 @@ Ladder kpLadder(BakeContext& ctx, const BakeRequest& req, int ndf) {
 
 }  // namespace
 
-Ladder microfacetLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind) {
+Ladder microfacetLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind, const LadderBudgets& budgets) {
   if (req.ndfs.size() != 1 || req.gafs.size() != 1)
     throw Error(kExitUsage, "convergence measures one pair: give one --ndf and one --gaf");
   if (req.diffuse >= 0)
@@ -303,11 +304,11 @@ Ladder microfacetLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
   const int ndf = req.ndfs[0], gaf = req.gafs[0];
   if (kind == TableKind::Kp) {
     if (req.fresnelGiven) throw Error(kExitUsage, "--fresnel: --table kp has no Fresnel");
-    return kpLadder(ctx, req, ndf);
+    return kpLadder(ctx, req, budgets, ndf);
   }
   if (gaf == GAF_NONE) throw Error(kExitUsage, "--gaf none: E grows like 1/mu at grazing; pick a GAF");
-  if (kind == TableKind::AlbedoAvg) return avgLadder(ctx, req, ndf, gaf);
-  return hemisphereLadder(ctx, req, kind, ndf, gaf);
+  if (kind == TableKind::AlbedoAvg) return avgLadder(ctx, req, budgets, ndf, gaf);
+  return hemisphereLadder(ctx, req, budgets, kind, ndf, gaf);
 }
 
 }  // namespace brdfbake
