@@ -1,5 +1,6 @@
 // What the tests that run the brdfbake binary share: run it with arguments (stdout and stderr
-// together, the exit status), a scratch directory per test process, a file's bytes.
+// together, the exit status), a scratch directory per test process, a file's bytes, a directory's
+// file count, a report page's verdict line.
 // BRDFBAKE_EXE is the binary's path (tests/CMakeLists.txt defines it per test target).
 #pragma once
 #include <gtest/gtest.h>
@@ -40,6 +41,22 @@ inline std::filesystem::path freshDir(const std::string& prefix, const std::stri
   std::filesystem::remove_all(d);
   if (create) std::filesystem::create_directories(d);
   return d;
+}
+
+// The regular files under d (0 when d does not exist).
+inline size_t countFiles(const std::filesystem::path& d) {
+  if (!std::filesystem::exists(d)) return 0;
+  size_t n = 0;
+  for (auto& e : std::filesystem::recursive_directory_iterator(d)) n += e.is_regular_file();
+  return n;
+}
+
+// A report page's first line under its title: the verdict.
+inline std::string verdictLine(const std::string& html) {
+  const size_t h1 = html.find("</h1>\n");
+  if (h1 == std::string::npos) return "(no title)";
+  const size_t at = h1 + 6;
+  return html.substr(at, html.find('\n', at) - at);
 }
 
 inline std::string bytes(const std::filesystem::path& p) {
