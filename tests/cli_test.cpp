@@ -49,7 +49,7 @@ TEST(Cli, DefaultBakeWritesTheFourTablesIntoOut) {
   for (const char* f : {"splitsum_ggx_smith-correlated.exr", "albedo_ggx_smith-correlated.exr",
                         "albedo-avg_ggx_smith-correlated.exr", "kp_ggx.exr"}) {
     ASSERT_TRUE(fs::exists(out / f)) << f;
-    // every default-size table claims at most 1e-5 (tests/accuracy_test.cpp checks it is honest)
+    // every default-size table claims at most 1e-5 (tests/tables/microfacet/accuracy_test.cpp checks it is honest)
     float claim = brdfbake::readTableExr((out / f).string()).floats["brdf.error"];
     EXPECT_GT(claim, 0.0f) << f;
     EXPECT_LE(claim, 1e-5f) << f;

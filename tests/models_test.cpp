@@ -323,7 +323,7 @@ namespace {
 // horizon layers, without which their bare |K15 - G7| is 1.1e-7 and 9.1e-7 here; the refined
 // budget's of those two are down at double rounding, pinned as below 1e-13: their value there is
 // rounding noise); when the rule changes on purpose,
-// re-measure and re-pin (and rerun the honesty checks in tests/accuracy_test.cpp).
+// re-measure and re-pin (and rerun the honesty checks in tests/tables/microfacet/accuracy_test.cpp).
 TEST(Albedo, PerTexelBoundsArePinned) {
   struct Pin {
     int ndf, gaf;

@@ -3,7 +3,7 @@
 // reflect all the energy, E_ss(mu, r) + int f_ms (n.i) dw_i = 1. The tables are baked here as
 // brdfbake bakes them (albedo 32x32, albedo-avg 32, splitsum 128x128, texel-centre grids), the
 // lookups sample them as a GL sampler does, and E_ss is the true single-scattering albedo on a
-// finer node grid (the device kernel, within 1e-5 of the reference: tests/accuracy_test.cpp).
+// finer node grid (the device kernel, within 1e-5 of the reference: tests/tables/microfacet/accuracy_test.cpp).
 // Needs an OpenCL device, as accuracy_test.cpp does. docs/multiple-scattering.md reports the figures.
 #include <gtest/gtest.h>
 

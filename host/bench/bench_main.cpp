@@ -41,7 +41,7 @@ const char* const kUsage =
               Karis MC baseline stays ggx + smith-correlated's (a time baseline, its errors
               are then not printed).
   --all-pairs [--pair NDF+GAF]...: no timing; every NDF/GAF pair's table (or the given ones;
-              not charlie's, whose reference is tests/sheen_test.cpp's) against the reference
+              not charlie's, whose reference is tests/tables/microfacet/sheen_test.cpp's) against the reference
               (largest error, largest kernel bound, texels whose error exceeds their bound).
               ~26 minutes at --stride 8, most of it the exact-Smith references.
   --albedo-avg: the albedo-avg table (size 32, texel centres) timed against the 32x32 albedo
@@ -268,7 +268,7 @@ int main(int argc, char** argv) {
       for (const auto& pr : pairs)
         if (isSheenNdf(pr.first))
           throw Error(kExitUsage,
-                      "--all-pairs --pair: charlie's pairs have their own reference (tests/sheen_test.cpp)");
+                      "--all-pairs --pair: charlie's pairs have their own reference (tests/tables/microfacet/sheen_test.cpp)");
       return allPairs(device, n, stride, pairs);
     }
     DeviceEntry dev = selectDevice(device);

@@ -26,7 +26,7 @@ int allPairs(const std::string& device, int n, int stride, const std::vector<std
   int over = 0;
   for (int ndf = 0; ndf < static_cast<int>(ndfNames().size()); ++ndf)
     for (int gaf = 0; gaf < static_cast<int>(gafNames().size()); ++gaf) {
-      // (the sheen pairs' reference is reference/sheen_reference.h: tests/sheen_test.cpp)
+      // (the sheen pairs' reference is reference/sheen_reference.h: tests/tables/microfacet/sheen_test.cpp)
       if (!pairSupported(ndf, gaf) || isSheenNdf(ndf)) continue;
       if (!only.empty() && std::find(only.begin(), only.end(), std::pair{ndf, gaf}) == only.end()) continue;
       BakeRequest req;

@@ -1,5 +1,5 @@
 // The average albedo's rule over mu, apart from where E comes from (host/cl/runner_avg.cpp): the
-// bake takes E at the nodes from the device (KernelRunner::albedoAvg), tests/avg_rule_test.cpp from
+// bake takes E at the nodes from the device (KernelRunner::albedoAvg), tests/tables/microfacet/avg_rule_test.cpp from
 // the same estimator in double, to measure what the rule's own bound misses.
 #pragma once
 #include <functional>
@@ -25,7 +25,7 @@ struct AvgSum {
 // E_F(mu) bends: oc, and oc +- 1, 3 and 10 lobe widths w = alpha sqrt(1 - oc^2) + alpha^2 (the
 // spread of o.h over the lobe, as tables/error_model.h's fresnelKinkFloat takes it) at the
 // entry's r. Without them, at eta = 0.9999, r = 3/64 the rule's |K - G| saw 2.9e-6 where the
-// average was off by 1.4e-5 (tests/fresnel_edge_test.cpp, AverageAlbedoAtTheStiffCorner).
+// average was off by 1.4e-5 (tests/tables/microfacet/fresnel_edge_test.cpp, AverageAlbedoAtTheStiffCorner).
 struct AvgBreaks {
   std::vector<double> view;
   double kink = -1;  // oc, or -1

@@ -27,7 +27,7 @@
 // and it is to cost no more than the albedo table it averages.
 // The nodes' bounds: for the plain average of the pairs with rescaled estimates, the rule's bare
 // estimates (no per-node floor) and one floor on E_avg, AVG_ERR_FLOOR, measured on the averages
-// (tests/avg_rule_test.cpp); each node's own floor (1e-7 of E at the default budget) would assume
+// (tests/tables/microfacet/avg_rule_test.cpp); each node's own floor (1e-7 of E at the default budget) would assume
 // every node misses by its worst in one direction, and would make up two thirds of the default
 // pair's quadrature claim (1e-7 of 1.7e-7; the float model and the stored rounding are the rest).
 // The entry's claim here is the quadrature's, plus the one rounding of the double sum to float,
@@ -95,7 +95,7 @@ std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double
   std::vector<std::vector<AvgPanel>> panels(n);
   std::vector<std::vector<size_t>> fresh(n);
   for (size_t j = 0; j < n; ++j) {
-    // the layer panel where it was measured: the rescaled estimates' pairs (tests/avg_rule_test.cpp);
+    // the layer panel where it was measured: the rescaled estimates' pairs (tests/tables/microfacet/avg_rule_test.cpp);
     // charlie's layer is wider and is left to the halving. Then GK31 panels up to 1, ending at the
     // GAF's view breaks (brdf64::gaf_view_breaks)
     std::vector<double> ends;

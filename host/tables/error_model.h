@@ -15,7 +15,7 @@
 // GAF's E = 0.35 carries 2.95 u). A = H - H w is a difference too, but its absolute error stays
 // within u H <= u E: hence the largest moment as the scale.
 // K1 and K0 are measured, not derived: the device's value against the same rule evaluated in
-// double on the host (brdf64), at every texel of tests/accuracy_test.cpp's sweeps for every NDF/GAF
+// double on the host (brdf64), at every texel of tests/tables/microfacet/accuracy_test.cpp's sweeps for every NDF/GAF
 // pair (9x9 node grids with mu = 0, 1 and r = 0, 1; 8x8 texel centres; every edge texel of a
 // 128x128 table; the stiff blinn-phong texels), both budgets, per NDF (what differs between them
 // is the float work of D and its sampling map; ~21,500 channel values each): on PoCL's CPU device
@@ -23,15 +23,15 @@
 // blinn-phong, 6.2 u for the gaussian (smith-exact, mu = 1/256). The models (3.5 s + 3) u,
 // (2.5 s + 3) u, (3.5 s + 3) u and (6 s + 3) u are at least 1.43, 1.41, 1.46 and 1.35 times the
 // error at every one of those texels. Fresnel-weighted moments (E_F, F82-tint's C) take the
-// largest of those, (6 s + 3) u (not measured per NDF; tests/fresnel_test.cpp checks ggx +
+// largest of those, (6 s + 3) u (not measured per NDF; tests/tables/fresnel_avg/fresnel_test.cpp checks ggx +
 // smith-correlated's whole claims against the reference). The charlie NDF is measured the same way
 // on the rescaled estimates' panels (charlie-smith's kink breaks and horizon substitution), every
 // texel of a 32x32 and a 128x128 table against the same rule in double at the closer budget:
 // charlie-smith 36.5 u (mu = 3/256, r = 0.14; its G/(n.o) grows without bound towards grazing
 // views), so (48 s + 4) u, at least 1.42 times; none 8.9 u, (10 s + 4) u at least 1.43 times;
 // neubelt 3.9 u and implicit 1.5 u, (4 s + 3) u at least 1.78 times (none's model would be 3.3 to
-// 5 times their error). tests/accuracy_test.cpp and
-// tests/sheen_test.cpp check the models at every such texel. Another OpenCL device with less
+// 5 times their error). tests/tables/microfacet/accuracy_test.cpp and
+// tests/tables/microfacet/sheen_test.cpp check the models at every such texel. Another OpenCL device with less
 // accurate built-ins (OpenCL 1.2 allows up to 4 ulp for exp and cos) may exceed them:
 // `brdfbake-bench --bounds --device NAME` measures the float part there.
 #pragma once
@@ -138,7 +138,7 @@ inline double floatArithmeticError(double scale, FloatModel m = kHemiFloat) {
 // and is in the entry's own claim (host/cl/runner_avg.cpp), not here. That bound adds
 // every node's worst case, 13 u at E_avg ~ 1; the nodes' errors have both signs and mostly cancel.
 // For the plain average albedo of the four microfacet NDFs the average's own float error is
-// measured instead (tests/avg_float_test.cpp: every pair, the r of 32- and 64-entry tables and a
+// measured instead (tests/tables/microfacet/avg_float_test.cpp: every pair, the r of 32- and 64-entry tables and a
 // 33-node grid, the bake's rule with the device's nodes against the same rule in double), per NDF:
 // at most 1.70 u (ggx + none), 1.59 u (beckmann + none), 1.77 u (blinn-phong + none), 4.26 u
 // (gaussian + none; integrated on GGX's grid with the weight D_gauss/D_ggx, more float operations

@@ -26,7 +26,7 @@ namespace {
 constexpr double kRadToDeg = 57.295779513082320876798;
 
 // The float evaluation's error relative to max(1, |f|), measured against the host's double
-// evaluation over every texel of the tests' tables (tests/brdf3d_test.cpp: at most 4e-7 for all
+// evaluation over every texel of the tests' tables (tests/tables/brdf3d/brdf3d_test.cpp: at most 4e-7 for all
 // four NDFs); the bound keeps a margin of 2.5.
 constexpr double kVolumeFloatError = 1e-6;
 

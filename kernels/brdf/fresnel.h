@@ -149,7 +149,7 @@ BRDF_FN real fresnel_soft_scale(int moments, int model, real x, real z) {
  * fresnel_layer_levels gives. Measured at eta = 0.9999, ggx + smith-correlated, mu = 1/64: without
  * them the values still hold their claims (the estimates see the layer and the texel is refined),
  * but the refined budget's estimate rises to 2.0e-7 against below 2e-9 with them
- * (tests/fresnel_edge_test.cpp, tools/bite.sh fresnel-layer). Returns w (0: no layer to resolve,
+ * (tests/tables/microfacet/fresnel_edge_test.cpp, tools/bite.sh fresnel-layer). Returns w (0: no layer to resolve,
  * w >= FRESNEL_GRADE_MAX or a weight without one) and x0 in *x0; *both: graded on both sides. */
 #define FRESNEL_NGRADES 8
 BRDF_CONST real FRESNEL_GRADES[FRESNEL_NGRADES] = {RC(0.015625), RC(0.0625), RC(0.25), RC(1.0),

@@ -268,7 +268,7 @@ BRDF_FN int gaf_horizon_layer(int gaf) { return gaf == GAF_NONE || gaf == GAF_KE
  * pi/4 and pi/6 (both at phi = 0). The others pair a feature at phi = 0 with one at phi = pi and
  * may be smooth; splitting there costs one panel each, and is what was measured: without any
  * split the rescaled bound of cook-torrance's E_avg missed by 4.1e-7 (ggx, r = 1) and neumann's
- * by 1.5e-8 (r = 0.17), with them by at most 5.2e-10 (tests/avg_rule_test.cpp).
+ * by 1.5e-8 (r = 0.17), with them by at most 5.2e-10 (tests/tables/microfacet/avg_rule_test.cpp).
  * charlie-smith: the view's own Lambda switches branch at mu = 1/2 (E(mu) has a kink there), and
  * its theta breaks meet theta_1 at theta_o = pi/12 ((theta_o + pi/3)/2 = (pi/2 - theta_o)/2) and
  * 5 pi/12 ((theta_o - pi/3)/2 = theta_1). Measured against the sheen reference (E_avg by

@@ -41,7 +41,7 @@
  * rescaled estimate (every NDF; host/cl/runner_avg.cpp): added once to the sum of the outer estimates and the
  * nodes' bare estimates (hemisphere_moments_chosen), in place of every node's floor
  * (HEMI_ERR_FLOOR_*, 1e-7 of E at the default budget), which assumed that each node missed by its
- * worst and all in one direction. Measured (tests/avg_rule_test.cpp with BRDFBAKE_AVG_SWEEP=1: the
+ * worst and all in one direction. Measured (tests/tables/microfacet/avg_rule_test.cpp with BRDFBAKE_AVG_SWEEP=1: the
  * bake's rule with E in double at its nodes, every r of 32- and 64-entry tables and a 33-entry node
  * grid, against the reference): beyond the rule's bound E_avg is off by at most 2.1e-9 of its value
  * (beckmann and blinn-phong + schlick-ggx at r = 7/64, alpha = 0.012, just above

@@ -22,7 +22,7 @@
  * pair, none and charlie included, has the sharpened estimate's floors below). The
  * floor, relative to the value so that it scales with what the rule integrates (and averages into
  * E_avg's node bounds where the average keeps them; the plain average of the rescaled pairs has a
- * floor of its own, albedo_avg.h AVG_ERR_FLOOR), covers both; tests/accuracy_test.cpp checks every such texel against the
+ * floor of its own, albedo_avg.h AVG_ERR_FLOOR), covers both; tests/tables/microfacet/accuracy_test.cpp checks every such texel against the
  * reference. Re-measured there with the arcs graded from n.i = 2 alpha (azimuth.h), against the
  * reference, over every non-exact-Smith pair's 9x9 node and 8x8 centre grids and 128x128 edge
  * texels, both budgets: the sharpened estimates miss by at most 4.4e-8 of the value (7.5e-9 away

@@ -63,7 +63,7 @@ LtcDistance ltcDistanceReference(const LtcLobeSpec& lobe, int x, int y, int n, c
     return std::min(brdf64::ltc_lobe_p(&L, w[0], w[1], w[2]) / d, 1.0);
   };
   // to 1e-7 and to 1e-6: on a 16^2 GGX fit's texels at r 0, 1/15, 8/15 and 1 their difference was
-  // within 3 times the change to 1e-8 (tests/ltc_test.cpp)
+  // within 3 times the change to 1e-8 (tests/tables/ltc/ltc_test.cpp)
   const double coarse = diskMean(g, 1e-6), fine = diskMean(g, 1e-7);
   LtcDistance out;
   out.tv = 1 - fine;

@@ -31,7 +31,7 @@ double scaleOf(const KernelTable& t) {
   return s;
 }
 // The reference approaches mu = 0 and the corner from inside (reference.h): it agrees with the
-// kernels' limits there to ~1e-7 (tests/accuracy_test.cpp); elsewhere to its 1e-9.
+// kernels' limits there to ~1e-7 (tests/tables/microfacet/accuracy_test.cpp); elsewhere to its 1e-9.
 constexpr double kLimitSlack = 1e-7;
 constexpr double kPi = 3.14159265358979323846;
 
@@ -151,7 +151,7 @@ void microfacetStress(KernelRunner& kr, std::vector<StressPoint>& pts) {
   }
   // The stiff corner: a narrow lobe at a grazing view (the 32^2 table's texel mu = 1/64, r = 3/64)
   // on Fresnel's steep layer next to eta = 1, where float eta alone moved the albedo by 1.7e-4
-  // (kernels/brdf/fresnel.h fresnel_e2m1); tests/fresnel_edge_test.cpp checks every corner texel.
+  // (kernels/brdf/fresnel.h fresnel_e2m1); tests/tables/microfacet/fresnel_edge_test.cpp checks every corner texel.
   // Just below eta = 1 the view sits next to the critical cosine (0.0141 at eta = 0.9999).
   for (auto [model, eta, kk] : {std::tuple{FRESNEL_DIELECTRIC, 1.000001, 0.0},
                                 {FRESNEL_DIELECTRIC, 1.0001, 0.0},

@@ -6,7 +6,7 @@
 // its nodes from the same estimator in double on the host (the budget chosen by the same rule in
 // double, which near the threshold can differ from the device's float choice; the float nodes the
 // device would get), so that what it measures is the quadrature
-// alone (the float arithmetic is tests/avg_float_test.cpp's), against the independent reference
+// alone (the float arithmetic is tests/tables/microfacet/avg_float_test.cpp's), against the independent reference
 // (host/reference, adaptive Boost GK in double on other coordinates). It checks every such pair
 // (the rescaled estimate's) at r across the horizon-layer range and the rest,
 // and prints the largest miss, (error - rule bound) / E_avg, per pair; BRDFBAKE_AVG_SWEEP=1 runs

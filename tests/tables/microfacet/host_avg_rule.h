@@ -1,6 +1,6 @@
 // The bake's rule for the average albedo (host/cl/avg_rule.h) with E in double at the nodes it asks
 // for, bare estimates as the bake's kernel gives them: what tests compare the device's tables and
-// the reference with (tests/avg_rule_test.cpp, tests/sheen_test.cpp).
+// the reference with (tests/tables/microfacet/avg_rule_test.cpp, tests/tables/microfacet/sheen_test.cpp).
 #pragma once
 #include <vector>
 

@@ -245,7 +245,7 @@ TEST(Fresnel, F82SplitSumMatchesDirectAlbedo) {
 // The average of a Fresnel albedo (albedo-avg with --fresnel) against the reference's own average
 // (adaptive in mu over its adaptive albedo), at the 4 texel centres of r. Smooth Fresnels here;
 // those with a critical cosine at FresnelEdge.AverageAlbedoAtTheStiffCorner
-// (tests/fresnel_edge_test.cpp).
+// (tests/tables/microfacet/fresnel_edge_test.cpp).
 TEST(Fresnel, AverageAlbedoMatchesReference) {
   const int ndf = NDF_GGX, gaf = GAF_SMITH_CORRELATED, n = 4;
   for (const Case& c : {kCases[1], kCases[7], kCases[8]}) {
