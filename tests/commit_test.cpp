@@ -109,7 +109,7 @@ TEST(Commit, KilledCommitIsFinishedByTheNextBake) {
   fs::remove_all(d / "o");
   fs::create_directory(d / "o");
   const std::string gone = std::to_string(deadPid());
-  for (const std::string n :
+  for (const std::string& n :
        {".kp_ggx.exr.brdfbake-tmp-" + gone + "-AbC123", ".kp_ggx.exr.brdfbake-tmp-" + gone + "-AbC123.old"})
     std::ofstream(d / "o" / n) << "partial";
   std::ofstream(d / "o" / ".mine") << "not ours";
