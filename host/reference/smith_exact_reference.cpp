@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <thread>
 #include <vector>
 
 #include "reference/adaptive.h"
@@ -63,7 +64,7 @@ struct ExactLambdaCache {
 };
 
 // One table per (NDF, alpha) for the whole process, shared by every thread: at alpha ~ 1e-5 one
-// takes 32 s to build, and a test that checks texels on two threads would build it twice a row.
+// takes 32 s to build on one thread, and a test that checks texels on two threads would build it twice a row.
 const ExactLambdaCache& exactLambdaTable(int ndf, const brdf64::BrdfParams& dp) {
   thread_local std::shared_ptr<const ExactLambdaCache> last;
   if (last && last->ndf == ndf && last->alpha == dp.alpha) return *last;
@@ -77,12 +78,21 @@ const ExactLambdaCache& exactLambdaTable(int ndf, const brdf64::BrdfParams& dp) 
   t->ndf = ndf;
   t->alpha = dp.alpha;
   t->v.assign(N, 0.0);
-  for (int k = 0; k + 1 < N; ++k) {
-    double z = double(k) / (N - 1);
-    // c/(alpha s) = b = z/(1 - z): c = b alpha/sqrt(1 + b^2 alpha^2)
-    double b = z / (1 - z), tb = b * dp.alpha, cc = tb / std::sqrt(1 + tb * tb), ss = 1 / std::sqrt(1 + tb * tb);
-    t->v[k] = cLambdaQuad(ndf, dp, cc) / (dp.alpha * ss);
-  }
+  // the entries on every hardware thread (each entry is independent): the caller's other threads
+  // wait on the mutex for this table anyway
+  auto fill = [&](int first, int stride) {
+    for (int k = first; k + 1 < N; k += stride) {
+      double z = double(k) / (N - 1);
+      // c/(alpha s) = b = z/(1 - z): c = b alpha/sqrt(1 + b^2 alpha^2)
+      double b = z / (1 - z), tb = b * dp.alpha, cc = tb / std::sqrt(1 + tb * tb), ss = 1 / std::sqrt(1 + tb * tb);
+      t->v[k] = cLambdaQuad(ndf, dp, cc) / (dp.alpha * ss);
+    }
+  };
+  const int threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads; ++i) pool.emplace_back(fill, i, threads);
+  fill(0, threads);
+  for (auto& th : pool) th.join();
   if (built.size() >= 256) built.erase(built.begin());  // 8 KiB each
   built.push_back(t);
   return *(last = t);

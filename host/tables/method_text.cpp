@@ -40,7 +40,8 @@ std::string hemisphereMethod() {
          " at the refined budget) of the value + float arithmetic (K1 min(1,|value|) + K0) u (u = 2^-24; " +
          "(K1, K0) = " + model(kHemiFloatGgx) + " ggx, " + model(kHemiFloatBeckmann) + " beckmann, " +
          model(kHemiFloatBlinnPhong) + " blinn-phong, " + model(kHemiFloat) + " gaussian, " + model(kFresnelFloat) +
-         " every Fresnel-weighted moment, next to a total-internal-reflection kink plus u mu times F's slope over the "
+         " every Fresnel-weighted moment B (F82-tint's at least 0.3 u E/max(1, |B|), E its F = 1 albedo), "
+         "next to a total-internal-reflection kink plus u mu times F's slope over the "
          "lobe's spread in o.h, " +
          model(kSheenFloatNone) + " charlie with none, " + model(kSheenFloatBounded) + " with neubelt and implicit, " +
          model(kCharlieSmithFloat) + " with charlie-smith) + storage rounding";

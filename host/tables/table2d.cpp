@@ -30,7 +30,8 @@ void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int nd
         arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf));
         break;
       case Arith::HemiWeighted:
-        arith = floatArithmeticError(scale, hemiFloatModel(ndf, gaf, true));
+      case Arith::HemiWeightedCancel:  // planes: A = int H (1 - w), B = int H w, E = int H
+        arith = weightedFloatError(t.planes[1][x], t.planes[2][x], scale, ndf, gaf, a == Arith::HemiWeightedCancel);
         break;
       case Arith::HemiAvg:
         arith = avgFloatArithmeticError(scale, ndf, gaf);

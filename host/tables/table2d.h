@@ -13,13 +13,14 @@ namespace brdfbake {
 
 // How a kernel run's float arithmetic is accounted for in its texels' claims.
 enum class Arith {
-  Hemisphere,      // the hemisphere estimators: floatArithmeticError of the texel's largest moment
-  HemiWeighted,    // the same with a Fresnel weight (E_F, F82-tint's C)
-  HemiAvg,         // E_avg: its float error (measured on the averages), plus its double sum rounded to float
-  HemiAvgFresnel,  // E_F,avg: the nodes' float error bounds averaged, plus the rounding
-  Kp,              // k_p's rule
-  HostDouble,      // computed in double on the host: the rounding to float
-  Diffuse,         // the diffuse kernel: floatArithmeticError of E with its model's diffuseFloatModel
+  Hemisphere,          // the hemisphere estimators: floatArithmeticError of the texel's largest moment
+  HemiWeighted,        // the same with a Fresnel weight (E_F, F82-tint's C)
+  HemiWeightedCancel,  // the same with a weight whose float value cancels (tables/error_model.h weightCancels)
+  HemiAvg,             // E_avg: its float error (measured on the averages), plus its double sum rounded to float
+  HemiAvgFresnel,      // E_F,avg: the nodes' float error bounds averaged, plus the rounding
+  Kp,                  // k_p's rule
+  HostDouble,          // computed in double on the host: the rounding to float
+  Diffuse,             // the diffuse kernel: floatArithmeticError of E with its model's diffuseFloatModel
 };
 
 // Each texel's claim from one kernel run: its quadrature estimate plus its float arithmetic,

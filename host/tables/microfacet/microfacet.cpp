@@ -157,7 +157,8 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
               kink[static_cast<size_t>(j) * job.width + i] = fresnelKinkFloat(fc.model, eta, mu, at(j, job.height));
             }
         }
-        addClaims(claim, t, Arith::HemiWeighted, job.ndf, job.gaf, -1, kink.empty() ? nullptr : &kink);
+        addClaims(claim, t, weightCancels(fc.model) ? Arith::HemiWeightedCancel : Arith::HemiWeighted, job.ndf, job.gaf,
+                  -1, kink.empty() ? nullptr : &kink);
         if (c == 0) kt = t;
       }
       fresnel = fc.describe();

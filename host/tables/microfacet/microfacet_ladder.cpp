@@ -75,8 +75,8 @@ Weights weightsOf(const FresnelChoice& fc) {
 // splitsum (A and B) and albedo (E, or E_F with a Fresnel model) over n x n texel centres: the
 // bake's quadrature on the device at budget levels (every texel at the same level), the same rule in
 // double on the host, and Monte Carlo.
-Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, const LadderBudgets& budgets, TableKind kind,
-                        int ndf, int gaf) {
+Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, const LadderBudgets& budgets, TableKind kind, int ndf,
+                        int gaf) {
   const int n = ladder::pointsPerAxis(req, 12, 2, 64, tableName(kind));
   const FresnelChoice& fc = req.fresnel;
   const bool split = kind == TableKind::SplitSum;
@@ -122,7 +122,9 @@ Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, const LadderBu
       for (size_t c = 0; c < nv; ++c) v[k * nv + c] = x[c];
       // + the float arithmetic's share, as the bake claims it (tables/error_model.h)
       double scale = std::max({std::fabs(t.planes[0][k]), std::fabs(t.planes[1][k]), std::fabs(t.planes[2][k])});
-      e[k] = t.err[k] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf, weighted));
+      e[k] = t.err[k] + (weighted ? weightedFloatError(t.planes[1][k], t.planes[2][k], scale, ndf, gaf,
+                                                       weightCancels(w.hw.fresnel))
+                                  : floatArithmeticError(scale, hemiFloatModel(ndf, gaf)));
     }
     L.rungs.push_back(ladder::rung("quadrature (device, float)", "level " + std::to_string(level), secs, v, e, ref));
   }

@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -84,10 +86,46 @@ struct Worst {
   double ratio = 0, claimOver = 0;  // largest error/claim; largest claim/max(error, floor)
 };
 
-// Bakes one table and checks its corner texels against the reference; returns the worst ratios.
-// tight: how many times max(error, float floor) a claim may be.
-Worst checkTable(int ndf, int gaf, const Edge& e, int n, double tight = 4) {
-  KernelTable t = runner().hemisphere(ndf, gaf, n, n, false, weightOf(e));
+// A corner texel's three planes and its estimate, as the bake's table holds them.
+struct Texel {
+  float a = 0, b = 0, e = 0, err = 0;
+};
+
+// The corner texels of an n x n table, keyed (i, j): the whole table baked (whole = true), or only
+// its four 4 x 4 corner blocks, one hemisphereRange launch each. Each texel is computed on its own
+// (kernels/bake.cl), and a block's texel centres are the table's to the bit (4/n, (i + 0.5) and
+// n - 4 are exact in float), so the blocks hold the table's bits: FresnelEdge.CornerBlocksAreTheTable
+// checks that. The blocks take 64 texels a table, where 256^2 bakes 65536 (1.5 s a table).
+std::map<std::pair<int, int>, Texel> cornerTexels(int ndf, int gaf, const HemiWeight& w, int n, bool whole) {
+  std::map<std::pair<int, int>, Texel> out;
+  if (whole) {
+    KernelTable t = runner().hemisphere(ndf, gaf, n, n, false, w);
+    for (int j : cornerIndices(n))
+      for (int i : cornerIndices(n)) {
+        size_t k = static_cast<size_t>(j) * n + i;
+        out[{i, j}] = {t.planes[0][k], t.planes[1][k], t.planes[2][k], t.err[k]};
+      }
+    return out;
+  }
+  for (int bj : {0, n - 4})
+    for (int bi : {0, n - 4}) {
+      const float lo = static_cast<float>(bi) / n, hi = static_cast<float>(bi + 4) / n;
+      const float rlo = static_cast<float>(bj) / n, rhi = static_cast<float>(bj + 4) / n;
+      KernelTable t = runner().hemisphereRange(ndf, gaf, 4, 4, lo, hi, rlo, rhi, false, w);
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+          size_t k = static_cast<size_t>(j) * 4 + i;
+          out[{bi + i, bj + j}] = {t.planes[0][k], t.planes[1][k], t.planes[2][k], t.err[k]};
+        }
+    }
+  return out;
+}
+
+// Checks one table's corner texels against the reference; returns the worst ratios.
+// tight: how many times max(error, float floor) a claim may be. whole: bake the whole table, else
+// its corner blocks (cornerTexels).
+Worst checkTable(int ndf, int gaf, const Edge& e, int n, double tight = 4, bool whole = true) {
+  const auto corner = cornerTexels(ndf, gaf, weightOf(e), n, whole);
   std::vector<std::pair<int, int>> texels;
   for (int j : cornerIndices(n))
     for (int i : cornerIndices(n)) texels.push_back({i, j});
@@ -99,24 +137,47 @@ Worst checkTable(int ndf, int gaf, const Edge& e, int n, double tight = 4) {
     auto [i, j] = texels[q];
     double mu = static_cast<float>((i + 0.5) / n), r = static_cast<float>((j + 0.5) / n);
     double want = truth[q];
-    size_t k = static_cast<size_t>(j) * n + i;
-    double got = t.planes[1][k];
-    double scale = 0;
-    for (int p = 0; p < 3; ++p) scale = std::max(scale, std::fabs(static_cast<double>(t.planes[p][k])));
+    const Texel& t = corner.at(texels[q]);
+    double got = t.b;
+    double scale = std::max({std::fabs(double(t.a)), std::fabs(double(t.b)), std::fabs(double(t.e))});
     // the bake's claim (host/tables/microfacet/microfacet.cpp): the estimate, the Fresnel-weighted float model
     // and the float term next to a kink
-    double claim =
-        t.err[k] + floatArithmeticError(scale, hemiFloatModel(ndf, gaf, true)) + fresnelKinkFloat(e.model, e.x, mu, r);
+    double claim = t.err + weightedFloatError(t.b, t.e, scale, ndf, gaf, weightCancels(e.model)) +
+                   fresnelKinkFloat(e.model, e.x, mu, r);
     double err = rel(got, want);
     EXPECT_TRUE(std::isfinite(got)) << e.name << " n=" << n << " mu=" << mu << " r=" << r;
     EXPECT_LE(err, claim) << ndfNames()[ndf] << "+" << gafNames()[gaf] << " " << e.name << " n=" << n << " mu=" << mu
                           << " r=" << r << " device " << got << " reference " << want;
     EXPECT_LE(claim, tight * std::max(err, floor))
         << ndfNames()[ndf] << "+" << gafNames()[gaf] << " " << e.name << " n=" << n << " mu=" << mu << " r=" << r;
+    if (std::getenv("BRDFBAKE_SWEEP_TEXELS"))
+      std::printf("texel %s+%s %s n=%d mu=%.6f r=%.6f A=%.6g B=%.6g E=%.6g error/u=%.2f claim/u=%.2f\n",
+                  ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), e.name.c_str(), n, mu, r, t.a, t.b, t.e,
+                  err / kUnitRoundoff, claim / kUnitRoundoff);
     w.ratio = std::max(w.ratio, err / claim);
     w.claimOver = std::max(w.claimOver, claim / std::max(err, floor));
   }
   return w;
+}
+
+// The blocks hold the whole table's bits at every corner texel.
+void expectBlocksAreTheTable(int ndf, int gaf, const HemiWeight& w, int n) {
+  const auto whole = cornerTexels(ndf, gaf, w, n, true);
+  const auto blocks = cornerTexels(ndf, gaf, w, n, false);
+  ASSERT_EQ(whole.size(), 64u);
+  ASSERT_EQ(blocks.size(), 64u);
+  for (const auto& [ij, t] : whole) {
+    const Texel& b = blocks.at(ij);
+    EXPECT_TRUE(t.a == b.a && t.b == b.b && t.e == b.e && t.err == b.err)
+        << "n=" << n << " texel (" << ij.first << ", " << ij.second << "): table " << t.b << " block " << b.b;
+  }
+}
+
+// The sweep's 256^2 tables are their corner blocks: the blocks hold the whole table's bits, for a
+// Fresnel weight with a kink and for the split sum (the sweep checks 256^2 itself on the default pair).
+TEST(FresnelEdge, CornerBlocksAreTheTable) {
+  for (const HemiWeight& w : {fresnelWeight(FRESNEL_DIELECTRIC, 0.2, 0), HemiWeight{}})
+    for (int n : {32, 64}) expectBlocksAreTheTable(NDF_BECKMANN, GAF_SMITH, w, n);
 }
 
 TEST(FresnelEdge, StiffCornerWithinItsClaim) {
@@ -179,21 +240,27 @@ TEST(FresnelEdge, AverageAlbedoAtTheStiffCorner) {
   std::printf("albedo-avg at the stiff corner: largest error/claim %.2f\n", worst);
 }
 
-// The wider sweep: every NDF/GAF pair of the microfacet family (52) at 32^2, 64^2 and 128^2, and
-// the default pair at 256^2, each corner texel against the reference: `ctest -L sweep`
-// (tests/CMakeLists.txt; 10.9 minutes on two cores). Claims are held to
-// 4 times the error except next to eta = 0.2's critical cosine from 128^2 up, where the kink's
-// float term is sized on the pair with the largest rounding and reaches 8.4 times max(error,
-// float floor) on pairs whose rounding cancels more (docs/accuracy.md, "The whole sweep, and the
-// edge it found"): 9 there.
+// The wider sweep: every NDF/GAF pair of the microfacet family (52) at 32^2, 64^2, 128^2 and
+// 256^2 (the last as its corner blocks, cornerTexels; on the default pair also whole, and the two
+// compared), each corner texel against the reference: `ctest -L sweep` (tests/CMakeLists.txt).
+// Claims are held to 4 times the error except next to eta = 0.2's critical cosine from 128^2 up,
+// where the kink's float term is sized on the pair with the largest rounding and reaches 8.4 times
+// max(error, float floor) on pairs whose rounding cancels more (docs/accuracy.md, "The whole sweep,
+// and the edge it found"): 9 there.
+// BRDFBAKE_SWEEP_PAIRS=NDF+GAF,... runs those pairs alone (a slice to rerun after a change);
+// BRDFBAKE_SWEEP_TEXELS=1 prints every corner texel's A, B, E, error and claim (in u = 2^-24).
 TEST(FresnelEdge, DISABLED_EveryPairEverySize) {
+  const char* only = std::getenv("BRDFBAKE_SWEEP_PAIRS");
+  const std::string pairs = only ? "," + std::string(only) + "," : "";
   for (int ndf : {NDF_GGX, NDF_BECKMANN, NDF_BLINN_PHONG, NDF_GAUSSIAN})
     for (int gaf = 0; gaf < static_cast<int>(gafNames().size()); ++gaf) {
       if (!pairSupported(ndf, gaf)) continue;
+      if (only && pairs.find("," + ndfNames()[ndf] + "+" + gafNames()[gaf] + ",") == std::string::npos) continue;
+      const bool defaultPair = ndf == NDF_GGX && gaf == GAF_SMITH_CORRELATED;
       for (const Edge& e : edges())
         for (int n : {32, 64, 128, 256}) {
-          if (n == 256 && !(ndf == NDF_GGX && gaf == GAF_SMITH_CORRELATED)) continue;  // 1.5 s a table
-          Worst w = checkTable(ndf, gaf, e, n, n >= 128 && e.name == "dielectric eta=0.2" ? 9 : 4);
+          if (n == 256 && defaultPair) expectBlocksAreTheTable(ndf, gaf, weightOf(e), n);
+          Worst w = checkTable(ndf, gaf, e, n, n >= 128 && e.name == "dielectric eta=0.2" ? 9 : 4, n < 256);
           std::printf("%s+%s %-30s %3d^2: largest error/claim %.2f, claim/max(error, floor) %.2f\n",
                       ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), e.name.c_str(), n, w.ratio, w.claimOver);
         }
