@@ -49,7 +49,7 @@ static real ltc_fit_from(const LtcLobe* L, real* x, LtcFixed* F, int n_fit, int 
 }
 
 kernel void ltc_fit_row(global float* out, global const float* prev, global const float* mus, global const float* e,
-                        int n, int has_prev, float r, float inv_kp, int kind, int diffuse, float dparam, int n_fit,
+                        global const float* in_double, int n, int has_prev, float r, float inv_kp, int kind, int diffuse, float dparam, int n_fit,
                         int max_evals, int polish_evals, int n_final, int reps) {
   int i = get_global_id(0);
   if (i >= n) return;
@@ -120,8 +120,12 @@ kernel void ltc_fit_row(global float* out, global const float* prev, global cons
   real st[4], tv[3];
   ltc_store(l, st);
   /* the distance of the LTC the table holds: its stored entries, rounded to float (near-singular
-   * matrices at r = 1 moved the distance by 7e-5 between the parameters and the stored entries) */
-  ltc_tv(&L, ltc_from_stored((float)st[0], (float)st[1], (float)st[2], (float)st[3]), n_final, reps, tv);
+   * matrices at r = 1 moved the distance by 7e-5 between the parameters and the stored entries);
+   * not for the texels the host measures in double (in_double[i] != 0: lobes too narrow for float),
+   * whose distance it replaces */
+  tv[0] = tv[1] = tv[2] = RC(0.0);
+  if (in_double[i] == 0.0f)
+    ltc_tv(&L, ltc_from_stored((float)st[0], (float)st[1], (float)st[2], (float)st[3]), n_final, reps, tv);
   for (int j = 0; j < LTC_NP; ++j) out[j * n + i] = (float)best[j];
   for (int j = 0; j < 4; ++j) out[(4 + j) * n + i] = (float)st[j];
   out[8 * n + i] = (float)tv[0];

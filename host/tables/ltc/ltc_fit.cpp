@@ -179,11 +179,14 @@ LtcFit fitLtc(KernelRunner& runner, const LtcLobeSpec& lobe, int n, const LtcBud
   runner.progress("rows", 0, n);
   for (int x = n - 1; x >= 0; --x) {
     for (int y = 0; y < n; ++y) e[y] = f.e[static_cast<size_t>(y) * n + x];
+    // the texels remeasureInDouble measures: the kernel leaves their distance to it
+    std::vector<float> inDouble(n);
+    for (int y = 0; y < n; ++y) inDouble[y] = e[y] >= kLtcNegligibleE && ltcMeasuredInDouble(lobe, x, y, n) ? 1.0f : 0.0f;
     const RowArgs a = rowArgs(lobe, x, n);
     std::vector<std::vector<float>> out = runner.launch(
         ProgramKey::Ltc, ndf, gaf, "ltc_fit_row", n,
         {LaunchArg::output(static_cast<size_t>(kOutPlanes) * n), LaunchArg::input(prev), LaunchArg::input(mus),
-         LaunchArg::input(e), LaunchArg::of(n), LaunchArg::of(prev.empty() ? 0 : 1), LaunchArg::of(a.r),
+         LaunchArg::input(e), LaunchArg::input(inDouble), LaunchArg::of(n), LaunchArg::of(prev.empty() ? 0 : 1), LaunchArg::of(a.r),
          LaunchArg::of(a.invKp), LaunchArg::of(a.kind), LaunchArg::of(a.diffuse), LaunchArg::of(a.dparam),
          LaunchArg::of(budget.fitPoints), LaunchArg::of(budget.evals), LaunchArg::of(budget.polishEvals),
          LaunchArg::of(budget.finalPoints), LaunchArg::of(budget.shifts)});
