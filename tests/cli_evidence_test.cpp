@@ -25,11 +25,7 @@
 
 namespace fs = std::filesystem;
 namespace {
-using brdfbake::testing_cli::bytes;
-using brdfbake::testing_cli::CmdResult;
-using brdfbake::testing_cli::countFiles;
-using brdfbake::testing_cli::run;
-using brdfbake::testing_cli::verdictLine;
+using namespace brdfbake::testing_cli;
 fs::path freshDir(const std::string& name) { return brdfbake::testing_cli::freshDir("cli", name); }
 
 // --- evidence: verify ----------------------------------------------------------------------------
