@@ -71,9 +71,9 @@ mutation() {
     fresnel-eta-z) set -- "$1" host/cl/runner_launch.cpp 'w.z = static_cast<float>(' 'w.z = 0 * static_cast<float>(' \
                      "FresnelEdge.StiffCornerWithinItsClaim" ;;
     fresnel-kink-claim) set -- "$1" host/tables/error_model.h '  return kUnitRoundoff * mu * slope;' '  return 0 * kUnitRoundoff * mu * slope;' \
-                          "FresnelEdge.TheSweepsEdgesHoldAt128" ;;
+                          "FresnelEdge.TheSweepsEdgesHold" ;;
     fresnel-float-model) set -- "$1" host/tables/error_model.h 'constexpr FloatModel kFresnelFloat{10, 4};' \
-                           'constexpr FloatModel kFresnelFloat{6, 3};' "FresnelEdge.TheSweepsEdgesHoldAt128" ;;
+                           'constexpr FloatModel kFresnelFloat{6, 3};' "FresnelEdge.TheSweepsEdgesHold" ;;
     fresnel-layer) set -- "$1" kernels/brdf/fresnel.h '  return w < FRESNEL_GRADE_MAX ? w : RC(0.0);' '  return RC(0.0);' \
                      "FresnelEdge.StiffCornerWithinItsClaim" ;;
     fresnel-claim-inflated) set -- "$1" kernels/bake.cl '    out_err[t] = hemi_rel_error(h);' \
@@ -94,6 +94,10 @@ mutation() {
                        "FresnelEdge.AverageAlbedoAtTheStiffCorner" ;;
     glass-reference-kink) set -- "$1" host/reference/dielectric_reference.cpp '  if (s.eta < 1) kinks.push_back(' \
                             '  if (false) kinks.push_back(' "Dielectric.ReferencesAgreeNextToTheCriticalCosine" ;;
+    f82-share-of-e) set -- "$1" host/tables/error_model.h 'return cancels ? std::max(plain, 0.3 * kUnitRoundoff' \
+                      'return cancels ? std::max(plain, 0.0 * kUnitRoundoff' "FresnelEdge.TheSweepsEdgesHold" ;;
+    doc-figure) set -- "$1" docs/materials.md '  F_avg (2 int F mu dmu, closed form): 0.0857143' \
+                  '  F_avg (2 int F mu dmu, closed form): 0.0957143' "Docs.ShownCommandsPrintWhatThePagesShow" ;;
     favg-tir-part) set -- "$1" host/reference/fresnel_reference.cpp '  return oc * oc + detail::adapt(graded' \
                      '  return detail::adapt(graded' "Fresnel.AverageFresnelClosedFormsAndQuadrature" ;;
     glass-reference-outer) set -- "$1" host/reference/dielectric_reference.cpp 'br[k + 1], 1e-9, 14, 1e-9);' \
@@ -109,7 +113,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        driver-guards exr-header-sizes kind-twice scene-size-keys library-holds-a-client
        ltc-polygon-transposed ltc-distance-halved ltc-distance-in-float ltc-variance-one-pass ltc-claim-without-tenth
        ltc-e-claim-without-float avg-kink-breaks glass-reference-kink
-       favg-tir-part glass-reference-outer"
+       favg-tir-part glass-reference-outer f82-share-of-e doc-figure"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
