@@ -6,6 +6,9 @@
 // the rest of the suite's CLI tests together.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -180,38 +183,83 @@ TEST(Docs, LibraryPageShowsTheExample) {
       << "docs/library.md's code differs from examples/library/bake_lut.cpp";
 }
 
+// Whether an output line is the line a page shows. Words are compared one by one: a number within
+// 2% of the shown one (the figures a page quotes to three or four digits, rounding that may differ
+// between CPUs' vector widths), a word the page marks with a leading "~" not at all (seconds, and
+// what varies from run to run), every other word exactly. A shown line ending in "..." shows the
+// output line's first words (the last one's beginning where "..." follows it without a space).
+bool shownLineMatches(const std::string& shownLine, const std::string& got) {
+  std::string shown = shownLine;
+  const bool prefix = shown.size() > 3 && shown.compare(shown.size() - 3, 3, "...") == 0;
+  if (prefix) shown.resize(shown.size() - 3);
+  const bool partialLast = prefix && !shown.empty() && shown.back() != ' ';
+  std::istringstream ws(shown), wg(got);
+  std::vector<std::string> a, b;
+  for (std::string w; ws >> w;) a.push_back(w);
+  for (std::string w; wg >> w;) b.push_back(w);
+  if (prefix ? a.size() > b.size() : a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (partialLast && i + 1 == a.size()) return b[i].compare(0, a[i].size(), a[i]) == 0;
+    if (a[i] == b[i] || a[i][0] == '~') continue;
+    char *ea = nullptr, *eb = nullptr;
+    const double x = std::strtod(a[i].c_str(), &ea), y = std::strtod(b[i].c_str(), &eb);
+    // a number with the same text around it (a trailing ",", ")" or unit)
+    if (ea == a[i].c_str() || eb == b[i].c_str() || std::string(ea) != std::string(eb)) return false;
+    if (!(std::fabs(x - y) <= 0.02 * std::max(std::fabs(x), std::fabs(y)))) return false;
+  }
+  return true;
+}
+
 // Every `$ brdfbake ARGS` a page in docs/ shows runs, from a directory holding what it names, and
-// prints the line shown under it first (a line ending in "..." is a prefix): the figures a page
-// quotes from a command are the command's.
+// prints the lines shown under it (up to the next `$ ` line or the block's end), in order: the first
+// is the output's first line (its standard output, or the error line when there is none), each
+// next one the output's next line, and a shown line "..." skips output lines up to the one that
+// matches the line after it (shownLineMatches). The figures a page quotes from a command are the
+// command's.
 TEST(Docs, ShownCommandsPrintWhatThePagesShow) {
   const fs::path d = freshDir("readme", "shown");
   fs::create_directory_symlink(fs::path(BRDFBAKE_SOURCE_DIR) / "examples", d / "examples");
   ASSERT_EQ(run("", d.string()).code, 0);
   ASSERT_EQ(run("bake --table brdf3d -o out", d.string()).code, 0);
-  int shown = 0;
+  int shown = 0, lines = 0;
   for (const auto& e : fs::directory_iterator(fs::path(BRDFBAKE_SOURCE_DIR) / "docs")) {
     if (e.path().extension() != ".md") continue;
     std::istringstream in(bytes(e.path()));
-    std::vector<std::string> lines;
-    for (std::string l; std::getline(in, l);) lines.push_back(l);
-    for (size_t i = 0; i + 1 < lines.size(); ++i) {
-      if (lines[i].rfind("$ brdfbake ", 0) != 0) continue;
+    std::vector<std::string> page;
+    for (std::string l; std::getline(in, l);) page.push_back(l);
+    for (size_t i = 0; i + 1 < page.size(); ++i) {
+      if (page[i].rfind("$ brdfbake ", 0) != 0) continue;
       ++shown;
-      const std::string args = lines[i].substr(11), want = lines[i + 1];
-      // what the page shows: standard output, or the error line when there is none
+      const std::string args = page[i].substr(11);
+      std::vector<std::string> want;
+      for (size_t k = i + 1; k < page.size() && page[k].rfind("$ ", 0) != 0 && page[k].rfind("```", 0) != 0; ++k)
+        want.push_back(page[k]);
+      // what the page shows: standard output, or the error lines when there is none
       const std::string cmd = "cd '" + d.string() + "' && '" BRDFBAKE_EXE "' " + args + " 2>stderr.txt";
       FILE* p = popen(cmd.c_str(), "r");
       std::string out;
       char buf[4096];
       for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
       pclose(p);
-      const std::string got = firstLine(out.empty() ? bytes(d / "stderr.txt") : out);
-      if (want.size() > 3 && want.compare(want.size() - 3, 3, "...") == 0)
-        EXPECT_EQ(got.substr(0, want.size() - 3), want.substr(0, want.size() - 3))
-            << e.path().filename() << ": " << lines[i];
-      else
-        EXPECT_EQ(got, want) << e.path().filename() << ": " << lines[i];
+      std::istringstream os(out.empty() ? bytes(d / "stderr.txt") : out);
+      std::vector<std::string> got;
+      for (std::string l; std::getline(os, l);) got.push_back(l);
+      size_t at = 0;
+      for (size_t w = 0; w < want.size(); ++w) {
+        ++lines;
+        if (want[w] == "...") {
+          // skip to the output line that matches the next shown line
+          if (w + 1 == want.size()) break;
+          while (at < got.size() && !shownLineMatches(want[w + 1], got[at])) ++at;
+          continue;
+        }
+        const std::string line = at < got.size() ? got[at] : "(no more output)";
+        EXPECT_TRUE(shownLineMatches(want[w], line))
+            << e.path().filename() << ": " << page[i] << "\n  shown: " << want[w] << "\n  got:   " << line;
+        ++at;
+      }
     }
   }
   EXPECT_GE(shown, 8);
+  std::printf("%d shown commands, %d shown lines checked\n", shown, lines);
 }
