@@ -51,6 +51,14 @@ bool ltcMeasuredInDouble(const LtcLobeSpec& lobe, int x, int y, int n) {
 }
 
 namespace {
+// Whether the fit's texel (x, y) with magnitude e has its distance measured in double on the host
+// (remeasureInDouble) rather than by the kernel: a lobe too narrow for float, and not negligible.
+bool remeasured(const LtcLobeSpec& lobe, float e, int x, int y, int n) {
+  return e >= kLtcNegligibleE && ltcMeasuredInDouble(lobe, x, y, n);
+}
+}  // namespace
+
+namespace {
 // The roughness the lobe of row x is fitted at: alpha = r^2 floored at kLtcMinAlpha (the kernel's
 // LTC_MIN_ALPHA), so that E and B describe the lobe fitted.
 double fittedRoughness(const LtcLobeSpec& lobe, int x, int n) {
@@ -122,7 +130,7 @@ void remeasureInDouble(const LtcLobeSpec& lobe, int n, const std::vector<float> 
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
       const size_t t = static_cast<size_t>(y) * n + x;
-      if (e[t] >= kLtcNegligibleE && ltcMeasuredInDouble(lobe, x, y, n)) at.push_back(t);
+      if (remeasured(lobe, e[t], x, y, n)) at.push_back(t);
     }
   ladder::onTwoThreads(at.size(), [&](size_t k) {
     const size_t t = at[k];
@@ -181,15 +189,15 @@ LtcFit fitLtc(KernelRunner& runner, const LtcLobeSpec& lobe, int n, const LtcBud
     for (int y = 0; y < n; ++y) e[y] = f.e[static_cast<size_t>(y) * n + x];
     // the texels remeasureInDouble measures: the kernel leaves their distance to it
     std::vector<float> inDouble(n);
-    for (int y = 0; y < n; ++y) inDouble[y] = e[y] >= kLtcNegligibleE && ltcMeasuredInDouble(lobe, x, y, n) ? 1.0f : 0.0f;
+    for (int y = 0; y < n; ++y) inDouble[y] = remeasured(lobe, e[y], x, y, n) ? 1.0f : 0.0f;
     const RowArgs a = rowArgs(lobe, x, n);
     std::vector<std::vector<float>> out = runner.launch(
         ProgramKey::Ltc, ndf, gaf, "ltc_fit_row", n,
         {LaunchArg::output(static_cast<size_t>(kOutPlanes) * n), LaunchArg::input(prev), LaunchArg::input(mus),
-         LaunchArg::input(e), LaunchArg::input(inDouble), LaunchArg::of(n), LaunchArg::of(prev.empty() ? 0 : 1), LaunchArg::of(a.r),
-         LaunchArg::of(a.invKp), LaunchArg::of(a.kind), LaunchArg::of(a.diffuse), LaunchArg::of(a.dparam),
-         LaunchArg::of(budget.fitPoints), LaunchArg::of(budget.evals), LaunchArg::of(budget.polishEvals),
-         LaunchArg::of(budget.finalPoints), LaunchArg::of(budget.shifts)});
+         LaunchArg::input(e), LaunchArg::input(inDouble), LaunchArg::of(n), LaunchArg::of(prev.empty() ? 0 : 1),
+         LaunchArg::of(a.r), LaunchArg::of(a.invKp), LaunchArg::of(a.kind), LaunchArg::of(a.diffuse),
+         LaunchArg::of(a.dparam), LaunchArg::of(budget.fitPoints), LaunchArg::of(budget.evals),
+         LaunchArg::of(budget.polishEvals), LaunchArg::of(budget.finalPoints), LaunchArg::of(budget.shifts)});
     const std::vector<float>& o = out[0];
     prev.assign(o.begin(), o.begin() + 4 * n);
     for (int y = 0; y < n; ++y) {
