@@ -96,6 +96,8 @@ mutation() {
                             '  if (false) kinks.push_back(' "Dielectric.ReferencesAgreeNextToTheCriticalCosine" ;;
     f82-share-of-e) set -- "$1" host/tables/error_model.h 'return cancels ? std::max(plain, 0.3 * kUnitRoundoff' \
                       'return cancels ? std::max(plain, 0.0 * kUnitRoundoff' "FresnelEdge.TheSweepsEdgesHold" ;;
+    corner-block-offset) set -- "$1" tests/tables/microfacet/fresnel_edge_test.cpp 'hi = static_cast<float>(bi + 4) / n;' \
+                           'hi = static_cast<float>(bi + 4.001) / n;' "FresnelEdge.CornerBlocksAreTheTable" ;;
     doc-figure) set -- "$1" docs/materials.md '  F_avg (2 int F mu dmu, closed form): 0.0857143' \
                   '  F_avg (2 int F mu dmu, closed form): 0.0957143' "Docs.ShownCommandsPrintWhatThePagesShow" ;;
     favg-tir-part) set -- "$1" host/reference/fresnel_reference.cpp '  return oc * oc + detail::adapt(graded' \
@@ -113,7 +115,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        driver-guards exr-header-sizes kind-twice scene-size-keys library-holds-a-client
        ltc-polygon-transposed ltc-distance-halved ltc-distance-in-float ltc-variance-one-pass ltc-claim-without-tenth
        ltc-e-claim-without-float avg-kink-breaks glass-reference-kink
-       favg-tir-part glass-reference-outer f82-share-of-e doc-figure"
+       favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
