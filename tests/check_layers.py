@@ -22,9 +22,9 @@ STAGES = {
     "common": 9,
 }
 # public headers by what they are: the API, the request (and its observer) the planner and the families read, the
-# error type every stage throws
+# table kinds the families describe, the error type every stage throws
 FILE_STAGES = {"brdfbake/brdfbake.h": 2, "brdfbake/request.h": 5, "brdfbake/report.h": 5, "brdfbake/observer.h": 5,
-               "brdfbake/error.h": 9}
+               "brdfbake/table_kind.h": 5, "brdfbake/error.h": 9}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 
 

@@ -15,7 +15,7 @@
 #include "tables/interp_estimate.h"
 #include "cli_run.h"
 #include "common/brdf_host.h"
-#include "common/models.h"
+#include "brdfbake/table_kind.h"
 #include "formats/exr/table_file.h"
 #include "formats/readers/table_reader.h"
 #include "reference/reference.h"

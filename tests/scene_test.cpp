@@ -160,11 +160,21 @@ TEST(Scene, DamagedTablesAreBakedAgain) {
   EXPECT_NE(r.out.find("all 6 table(s) up to date"), std::string::npos) << r.out;
 }
 
-// Each table kind is described once, by a family that bakes it (tables/kind_info.h), and --size's
-// defaults are the documented ones (docs/commands.md): 128 for splitsum, fresnel-avg and the
-// Ashikhmin-Shirley textures, 64 for ltc (the engines' size), 32 for the others.
+// Each table kind is described once, by a family that bakes it (tables/kind_info.h), with the name
+// the command line, scenes and files spell (the families give the names; --table's list is theirs in
+// id order), and --size's defaults are the documented ones (docs/commands.md): 128 for splitsum,
+// fresnel-avg and the Ashikhmin-Shirley textures, 64 for ltc (the engines' size), 32 for the others.
 TEST(Registry, EveryKindIsDescribedOnceByAFamilyThatBakesIt) {
-  ASSERT_EQ(allKinds().size(), tableNames().size());
+  ASSERT_EQ(allKinds().size(), static_cast<size_t>(kTableKindCount));
+  ASSERT_EQ(tableNames().size(), static_cast<size_t>(kTableKindCount));
+  EXPECT_EQ(
+      joinNames(tableNames()),
+      "splitsum, albedo, albedo-avg, kp, fresnel-avg, brdf3d, ashikhmin-shirley, dielectric, dielectric-avg, ltc");
+  for (size_t id = 0; id < allKinds().size(); ++id) {
+    EXPECT_EQ(static_cast<size_t>(allKinds()[id].kind), id);
+    EXPECT_EQ(tableKind(allKinds()[id].name), allKinds()[id].kind);
+    EXPECT_EQ(tableName(allKinds()[id].kind), allKinds()[id].name);
+  }
   for (const KindInfo& k : allKinds()) {
     int describers = 0;
     for (const TableFamily* f : families())
@@ -174,8 +184,8 @@ TEST(Registry, EveryKindIsDescribedOnceByAFamilyThatBakesIt) {
     EXPECT_NE(std::find(baked.begin(), baked.end(), k.kind), baked.end()) << tableName(k.kind);
     const std::string n = tableName(k.kind);
     EXPECT_EQ(defaultSize(k.kind), n == "splitsum" || n == "fresnel-avg" || n == "ashikhmin-shirley" ? 128
-                                   : n == "ltc"                                                    ? 64
-                                                                                                   : 32)
+                                   : n == "ltc"                                                      ? 64
+                                                                                                     : 32)
         << n;
     EXPECT_EQ(findKind(n), &kindInfo(k.kind));
     if (k.shader == ShaderLookup::Value) {

@@ -23,6 +23,7 @@
 #include "cl/runner.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
+#include "brdfbake/table_kind.h"
 #include "common/models.h"
 #include "reference/reference.h"
 

@@ -28,7 +28,7 @@ int merlBench(const std::string& file, int size) {
   std::printf("%-10s %8s %12s %14s %8s %s\n", "table", "seconds", "brdf.error", "largest error", "ratio", "reference");
 
   auto t0 = std::chrono::steady_clock::now();
-  TableImage albedo = merlTable(d, name, TableKind::Albedo, size, false, false);
+  TableImage albedo = merlTable(d, name, MerlTableSpec{"albedo", false, ""}, size, false, false);
   const double ta = seconds(t0);
   std::vector<std::array<double, 3>> ref(size);
   onTwoThreads(size, [&](size_t i) { ref[i] = hSpaceIntegral(f, (i + 0.5) / size, HSpaceRule{30, 29}); });
@@ -40,7 +40,7 @@ int merlBench(const std::string& file, int size) {
   std::printf("%-10s %8.1f %12.3e %14.3e %8.2f %s\n", "albedo", ta, ca, worst, ca / worst, "h-space rule (30,29)");
 
   t0 = std::chrono::steady_clock::now();
-  TableImage avg = merlTable(d, name, TableKind::AlbedoAvg, 1, false, false);
+  TableImage avg = merlTable(d, name, MerlTableSpec{"albedo-avg", true, ""}, 1, false, false);
   const double tv = seconds(t0);
   std::array<double, 3> q = directAlbedoAvgRule(f, 10);
   double worstAvg = 0;

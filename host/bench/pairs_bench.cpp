@@ -9,6 +9,7 @@
 
 #include "bench/bench_util.h"
 #include "brdfbake/brdfbake.h"
+#include "brdfbake/table_kind.h"
 #include "common/models.h"
 #include "reference/reference.h"
 

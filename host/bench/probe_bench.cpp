@@ -14,6 +14,7 @@
 
 #include "bench/bench_util.h"
 #include "cl/runner.h"
+#include "brdfbake/table_kind.h"
 #include "common/models.h"
 #include "tables/interp_estimate.h"
 #include "tables/interp_probe.h"

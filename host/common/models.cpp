@@ -31,13 +31,6 @@ const std::vector<std::string>& gafNames() {
   return n;
 }
 
-const std::vector<std::string>& tableNames() {
-  static const std::vector<std::string> n = {"splitsum",      "albedo", "albedo-avg",        "kp",
-                                             "fresnel-avg",   "brdf3d", "ashikhmin-shirley", "dielectric",
-                                             "dielectric-avg", "ltc"};
-  return n;
-}
-
 std::string joinNames(const std::vector<std::string>& names) {
   std::string s;
   for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
@@ -78,21 +71,16 @@ std::string didYouMean(const std::string& word, const std::vector<std::string>& 
   return near.empty() ? std::string() : " (did you mean '" + near + "'?)";
 }
 
-namespace {
-int lookup(const std::vector<std::string>& names, const std::string& name, const std::string& field, const char* what) {
+int nameIndex(const std::vector<std::string>& names, const std::string& name, const std::string& field,
+              const char* what) {
   for (size_t i = 0; i < names.size(); ++i)
     if (names[i] == name) return static_cast<int>(i);
   throw Error(kExitUsage, field + ": unknown " + what + " '" + name + "'" + didYouMean(name, names) +
                               "; valid: " + joinNames(names));
 }
-}  // namespace
 
-int ndfId(const std::string& name, const std::string& field) { return lookup(ndfNames(), name, field, "NDF"); }
-int gafId(const std::string& name, const std::string& field) { return lookup(gafNames(), name, field, "GAF"); }
-TableKind tableKind(const std::string& name, const std::string& field) {
-  return static_cast<TableKind>(lookup(tableNames(), name, field, "table"));
-}
-const std::string& tableName(TableKind kind) { return tableNames()[static_cast<int>(kind)]; }
+int ndfId(const std::string& name, const std::string& field) { return nameIndex(ndfNames(), name, field, "NDF"); }
+int gafId(const std::string& name, const std::string& field) { return nameIndex(gafNames(), name, field, "GAF"); }
 
 std::string roughnessMapping(int ndf) {
   switch (ndf) {

@@ -214,22 +214,13 @@ AlbedoEstimate hSpaceAlbedo(const RusinkiewiczFn& f, double mu) {
   });
 }
 
-std::string merlChannels(TableKind kind) {
-  return kind == TableKind::Albedo
-             ? "R,G,B=E (the measured material's directional albedo per colour channel)"
-             : "R,G,B=E (the split sum's second factor of a measured material: its directional albedo, Fresnel and "
-               "colour included; shade with prefiltered radiance times E(mu))";
-}
-
-TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind, int width, bool nodeGrid, bool half,
-                     const ProgressFn& progress) {
-  if (kind != TableKind::Albedo && kind != TableKind::SplitSum && kind != TableKind::AlbedoAvg)
-    throw Error(kExitUsage, "--brdf merl: --table " + tableName(kind) + " has no measured form");
+TableImage merlTable(const MerlData& d, const std::string& name, const MerlTableSpec& spec, int width, bool nodeGrid,
+                     bool half, const ProgressFn& progress) {
   RusinkiewiczFn f = merlFunction(d);
   TableImage img;
   img.channels = {"R", "G", "B"};
   std::vector<AlbedoEstimate> est;
-  if (kind == TableKind::AlbedoAvg) {
+  if (spec.average) {
     img.width = img.height = 1;
     est = {directAlbedoAvg(f, 0, progress)};
   } else {
@@ -252,7 +243,7 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
       float v = static_cast<float>(est[i].e[c]);
       img.planes[c][i] = v;
       if (!std::isfinite(v))
-        throw Error(kExitDataErr, "MERL file " + d.path + ": the " + tableName(kind) + " texel " + std::to_string(i) +
+        throw Error(kExitDataErr, "MERL file " + d.path + ": the " + spec.table + " texel " + std::to_string(i) +
                                       " is not finite (the data's values are too large); nothing was written");
       double stored = half ? static_cast<double>(static_cast<float>(Imath::half(v))) : static_cast<double>(v);
       claim =
@@ -261,7 +252,7 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
   }
   claim += kMerlArithmetic;
   img.strings["brdf.schema"] = "brdfbake/1";
-  img.strings["brdf.table"] = tableName(kind);
+  img.strings["brdf.table"] = spec.table;
   img.strings["brdf.material"] = "merl:" + name;
   // the share of the lit bins the file measures, per channel (formats/merl.h kMerlMinMeasured)
   img.strings["brdf.merl.measured"] =
@@ -280,10 +271,10 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
       "the MERL table's trilinear interpolant (sqrt theta_h bins, phi_d period pi, unmeasured and below-horizon bins "
       "left out of the weights)";
   const std::string claimText =
-      std::string(" is within ") + (kind == TableKind::AlbedoAvg ? "max(1e-10, 2^-28 |E|)" : "max(1e-9, 2^-25 |E|)") +
+      std::string(" is within ") + (spec.average ? "max(1e-10, 2^-28 |E|)" : "max(1e-9, 2^-25 |E|)") +
       " in every channel (the largest n used: " + largest +
       "); error: that estimate + the value's storage rounding, the largest over the table, + 1e-11";
-  if (kind == TableKind::AlbedoAvg) {
+  if (spec.average) {
     img.strings["brdf.axes"] = "none";
     img.strings["brdf.channels"] = "R,G,B=E_avg (2 int E(mu) mu dmu of the measured material, per colour channel)";
     img.strings["brdf.method"] =
@@ -298,7 +289,7 @@ TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind,
     img.strings["brdf.axes"] = "mu";
     img.strings["brdf.grid"] = nodeGrid ? "node" : "texel-center";
     img.v2f["brdf.mu.range"] = {0.0f, 1.0f};
-    img.strings["brdf.channels"] = merlChannels(kind);
+    img.strings["brdf.channels"] = spec.channels;
     img.strings["brdf.method"] =
         "h-space quadrature of " + interpolant +
         ": theta_h by Gauss-Legendre n per bin (bins cut where the horizon "

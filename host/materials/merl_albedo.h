@@ -73,16 +73,23 @@ AlbedoEstimate directAlbedoAvg(const RusinkiewiczFn& f, int threads = 0, const P
 // One rule of directAlbedoAvg's, n nodes per bin and piece (n <= 31), for checks above its ladder.
 std::array<double, 3> directAlbedoAvgRule(const RusinkiewiczFn& f, int n, int threads = 0);
 
+// What a measured material's table holds, as the measured family (tables/measured/measured.cpp)
+// names it: the table's name (brdf.table, and messages), and E(mu) with its channels' description,
+// or E_avg.
+struct MerlTableSpec {
+  std::string table;     // brdf.table
+  bool average = false;  // E_avg (1 x 1) instead of E(mu)
+  std::string channels;  // brdf.channels of an E(mu) table
+};
+
 // The table of a measured material, RGB, no roughness axis, with its metadata:
-//   albedo, splitsum: E(mu) per channel over `width` mu texels (height 1; mu at texel centres or,
-//     nodeGrid, at i/(width-1)); splitsum holds the same numbers as albedo, labelled as the split
-//     sum's whole second factor (README, "MERL in and out");
-//   albedo-avg: 1 x 1, E_avg per channel.
+//   E(mu) per channel over `width` mu texels (height 1; mu at texel centres or, nodeGrid, at
+//     i/(width-1)): the measured family's albedo, and its splitsum, the same numbers labelled as the
+//     split sum's whole second factor (README, "MERL in and out");
+//   average: 1 x 1, E_avg per channel.
 // `name` is the material's name (brdf.material = "merl:<name>"); progress lines go to stderr when
 // a table takes more than two seconds.
-// brdf.channels of a measured material's albedo or splitsum table (the same values, two uses).
-std::string merlChannels(TableKind kind);
-TableImage merlTable(const MerlData& d, const std::string& name, TableKind kind, int width, bool nodeGrid, bool half,
-                     const ProgressFn& progress = {});
+TableImage merlTable(const MerlData& d, const std::string& name, const MerlTableSpec& spec, int width, bool nodeGrid,
+                     bool half, const ProgressFn& progress = {});
 
 }  // namespace brdfbake

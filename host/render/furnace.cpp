@@ -12,6 +12,7 @@
 #include "brdfbake/brdfbake.h"
 #include "common/errors.h"
 #include "common/format.h"
+#include "brdfbake/table_kind.h"
 #include "common/models.h"
 #include "reference/dielectric_reference.h"
 #include "reference/reference.h"

@@ -8,6 +8,7 @@
 #include "brdfbake/brdfbake.h"
 #include "common/errors.h"
 #include "common/format.h"
+#include "brdfbake/table_kind.h"
 #include "common/models.h"
 #include "formats/exr/table_file.h"
 #include "formats/output_set.h"

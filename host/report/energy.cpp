@@ -12,6 +12,7 @@
 #include "common/errors.h"
 #include "common/format.h"
 #include "common/material.h"
+#include "brdfbake/table_kind.h"
 #include "common/models.h"
 #include "report/furnace_figure.h"
 #include "report/report_page.h"

@@ -16,6 +16,7 @@
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"
+#include "brdfbake/table_kind.h"
 #include "common/models.h"
 #include "reference/reference.h"
 #include "report/furnace_figure.h"

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "common/brdf_host.h"
-#include "common/models.h"
+#include "brdfbake/table_kind.h"
 
 namespace brdfbake {
 

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "brdfbake/table_kind.h"
 #include "common/brdf3d_grid.h"
 #include "common/errors.h"
 #include "common/material.h"

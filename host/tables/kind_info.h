@@ -1,11 +1,12 @@
 // A table kind as the family that defines it describes it. Stages outside the families (the shader
 // generator, scene manifests, bake reports, argument checks, the furnace) ask this and never switch
-// over kinds; the kind's name is tableName(kind) (common/models.h, the one list of ids and names).
+// over kinds. The registry collects every family's descriptions; tableName and tableKind
+// (brdfbake/table_kind.h) read the names given here.
 #pragma once
 #include <functional>
 #include <string>
 
-#include "common/models.h"
+#include "brdfbake/table_kind.h"
 #include "formats/shader_lang.h"
 #include "formats/table_image.h"
 
@@ -50,6 +51,7 @@ enum SceneUse : unsigned {
 
 struct KindInfo {
   TableKind kind;
+  std::string name;      // --table NAME, a scene's [output.size] key, a file's brdf.table
   int defaultSize = 32;  // --size's default
   int sizeAxes = 1;      // 3: --size takes NX,NY,NZ (brdf3d, dielectric)
   bool volume = false;   // a 3D texture written slab by slab, with brdf3d's options; [output.size] takes N or [X, Y, Z]

@@ -2,7 +2,7 @@
 #pragma once
 #include <string>
 
-#include "common/models.h"
+#include "brdfbake/table_kind.h"
 
 namespace brdfbake {
 

@@ -61,25 +61,43 @@ std::string kindNames(const std::vector<TableKind>& kinds, const std::string& la
   return s;
 }
 
+// Every kind's description, indexed by its id; each id described by exactly one family.
 const std::vector<KindInfo>& allKinds() {
   static const std::vector<KindInfo> all = [] {
-    std::vector<KindInfo> v;
-    for (size_t k = 0; k < tableNames().size(); ++k) {
-      const TableKind kind = static_cast<TableKind>(k);
-      const KindInfo* found = nullptr;
-      for (const TableFamily* f : families())
-        for (const KindInfo& info : f->describe())
-          if (info.kind == kind) {
-            if (found) throw Error(kExitSoftware, "internal: two families describe " + tableName(kind));
-            v.push_back(info);
-            found = &v.back();
-          }
-      if (!found) throw Error(kExitSoftware, "internal: no table family describes " + tableName(kind));
-    }
+    std::vector<KindInfo> v(kTableKindCount);
+    std::vector<bool> described(kTableKindCount, false);
+    for (const TableFamily* f : families())
+      for (const KindInfo& info : f->describe()) {
+        const int id = static_cast<int>(info.kind);
+        // names are not known yet: messages name the id and the family
+        if (id < 0 || id >= kTableKindCount || described[id] || info.name.empty())
+          throw Error(kExitSoftware, "internal: family " + f->name() + " describes kind " + std::to_string(id) +
+                                         (info.name.empty() ? " without a name" : " (" + info.name + ")") +
+                                         ", which is out of range or described twice");
+        v[id] = info;
+        described[id] = true;
+      }
+    for (int id = 0; id < kTableKindCount; ++id)
+      if (!described[id]) throw Error(kExitSoftware, "internal: no table family describes kind " + std::to_string(id));
     return v;
   }();
   return all;
 }
+
+const std::vector<std::string>& tableNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const KindInfo& k : allKinds()) v.push_back(k.name);
+    return v;
+  }();
+  return names;
+}
+
+TableKind tableKind(const std::string& name, const std::string& field) {
+  return static_cast<TableKind>(nameIndex(tableNames(), name, field, "table"));
+}
+
+const std::string& tableName(TableKind kind) { return allKinds()[static_cast<size_t>(kind)].name; }
 
 std::vector<TableKind> kindsServing(unsigned uses) {
   std::vector<TableKind> v;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "brdfbake/observer.h"
+#include "brdfbake/table_kind.h"
 #include "common/brdf3d_grid.h"
 #include "common/material.h"
 #include "common/models.h"

@@ -22,7 +22,7 @@ class Ashikhmin final : public TableFamily {
  public:
   std::string name() const override { return "ashikhmin-shirley"; }
   std::vector<KindInfo> describe() const override {
-    KindInfo k{TableKind::AshikhminShirley};
+    KindInfo k{TableKind::AshikhminShirley, "ashikhmin-shirley"};
     k.defaultSize = 128;
     k.shader = ShaderLookup::OwnShader;
     return {k};

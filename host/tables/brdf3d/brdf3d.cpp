@@ -118,7 +118,7 @@ class Brdf3d final : public TableFamily {
  public:
   std::string name() const override { return "brdf3d"; }
   std::vector<KindInfo> describe() const override {
-    KindInfo k{TableKind::Brdf3d};
+    KindInfo k{TableKind::Brdf3d, "brdf3d"};
     k.sizeAxes = 3;
     k.volume = true;
     k.sceneUses = kUseWholeMaterial;

@@ -217,12 +217,12 @@ class Dielectric final : public TableFamily {
  public:
   std::string name() const override { return "dielectric"; }
   std::vector<KindInfo> describe() const override {
-    KindInfo cube{TableKind::Dielectric};
+    KindInfo cube{TableKind::Dielectric, "dielectric"};
     cube.shader = ShaderLookup::EtaVolume;
     cube.inScenes = cube.furnace = true;
     cube.sizeAxes = 3;
     cube.sceneUses = kUseTransmission;
-    KindInfo avg{TableKind::DielectricAvg};
+    KindInfo avg{TableKind::DielectricAvg, "dielectric-avg"};
     avg.shader = ShaderLookup::EtaAverages;
     avg.inScenes = avg.furnace = avg.average = true;
     avg.sceneUses = kUseTransmission;

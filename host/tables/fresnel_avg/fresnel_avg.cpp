@@ -25,7 +25,7 @@ class FresnelAvg final : public TableFamily {
  public:
   std::string name() const override { return "fresnel-avg"; }
   std::vector<KindInfo> describe() const override {
-    KindInfo k{TableKind::FresnelAvg};
+    KindInfo k{TableKind::FresnelAvg, "fresnel-avg"};
     k.defaultSize = 128;
     k.shaderValue = "Favg";
     return {k};

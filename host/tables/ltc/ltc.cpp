@@ -62,7 +62,7 @@ class LtcFamily final : public TableFamily {
  public:
   std::string name() const override { return "ltc"; }
   std::vector<KindInfo> describe() const override {
-    KindInfo k{TableKind::Ltc};
+    KindInfo k{TableKind::Ltc, "ltc"};
     k.defaultSize = 64;
     k.shader = ShaderLookup::Family;
     k.shaderCode = ltcShaderCode();

@@ -17,6 +17,19 @@ namespace brdfbake {
 
 namespace {
 
+// What merlTable computes for a kind: E(mu) for albedo and splitsum (the same values, two uses), E_avg
+// for albedo-avg.
+MerlTableSpec merlSpec(TableKind kind) {
+  MerlTableSpec s;
+  s.table = tableName(kind);
+  s.average = kind == TableKind::AlbedoAvg;
+  s.channels = kind == TableKind::Albedo
+                   ? "R,G,B=E (the measured material's directional albedo per colour channel)"
+                   : "R,G,B=E (the split sum's second factor of a measured material: its directional albedo, Fresnel "
+                     "and colour included; shade with prefiltered radiance times E(mu))";
+  return s;
+}
+
 class Measured final : public TableFamily {
  public:
   std::string name() const override { return "measured"; }
@@ -62,7 +75,7 @@ class Measured final : public TableFamily {
     if (it != ctx.cache.end()) {
       t.image = dynamic_cast<const ComputedTable&>(*it->second).image;
       t.image.strings["brdf.table"] = tableName(job.kind);
-      t.image.strings["brdf.channels"] = merlChannels(job.kind);
+      if (job.kind != TableKind::AlbedoAvg) t.image.strings["brdf.channels"] = merlSpec(job.kind).channels;
     } else {
       // progress through the request's observer: a terminal's line, or nothing in a log
       BakeObserver* obs = ctx.observer();
@@ -72,8 +85,8 @@ class Measured final : public TableFamily {
         progress = [obs, what](double done, double total, double seconds) {
           obs->progress(what, "texels", done, total, seconds);
         };
-      t.image = merlTable(data(ctx, job.merl), merlMaterialName(job.merl), job.kind, job.width, job.nodeGrid, job.half,
-                          progress);
+      t.image = merlTable(data(ctx, job.merl), merlMaterialName(job.merl), merlSpec(job.kind), job.width, job.nodeGrid,
+                          job.half, progress);
       ctx.cache[key] = std::make_shared<const ComputedTable>(t.image);
     }
     t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

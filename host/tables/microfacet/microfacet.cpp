@@ -217,23 +217,23 @@ class Microfacet final : public TableFamily {
  public:
   std::string name() const override { return "microfacet"; }
   std::vector<KindInfo> describe() const override {
-    KindInfo splitsum{TableKind::SplitSum};
+    KindInfo splitsum{TableKind::SplitSum, "splitsum"};
     splitsum.defaultSize = 128;
     splitsum.energy = "A+B", splitsum.energyChannel = "B";
     splitsum.shader = ShaderLookup::SplitSum;
     splitsum.inScenes = splitsum.furnace = splitsum.muRAxes = splitsum.layouts = splitsum.inDefaultSet = true;
     splitsum.sceneUses = kUseIbl | kUseSheenIbl;
-    KindInfo albedo{TableKind::Albedo};
+    KindInfo albedo{TableKind::Albedo, "albedo"};
     albedo.energy = "E", albedo.energyChannel = "R";
     albedo.shaderValue = "E";
     albedo.inScenes = albedo.furnace = albedo.muRAxes = albedo.inDefaultSet = albedo.albedo = true;
     albedo.sceneUses = kUseIblFresnel | kUseMultiscatter | kUseAlbedoScaling | kUseSheen;
-    KindInfo avg{TableKind::AlbedoAvg};
+    KindInfo avg{TableKind::AlbedoAvg, "albedo-avg"};
     avg.energy = "E_avg", avg.energyChannel = "R";
     avg.shaderValue = "Eavg";
     avg.inScenes = avg.furnace = avg.inDefaultSet = avg.albedo = avg.average = true;
     avg.sceneUses = kUseMultiscatter | kUseAlbedoScaling;
-    KindInfo kp{TableKind::Kp};
+    KindInfo kp{TableKind::Kp, "kp"};
     kp.shaderValue = "Kp";
     kp.inScenes = kp.inDefaultSet = true;
     kp.sceneUses = kUseNormalisation;

@@ -300,7 +300,7 @@ TEST(MerlAlbedo, TableClaimBoundsTheStoredValuesWithinFourTimes) {
   MerlData d = readMerl(merlFileOf(0.3).string());
   RusinkiewiczFn f = merlFunction(d);
   const int n = 8;
-  TableImage t = merlTable(d, "ggx", TableKind::Albedo, n, false, false);
+  TableImage t = merlTable(d, "ggx", MerlTableSpec{"albedo", false, ""}, n, false, false);
   std::vector<double> ref(n);
   std::vector<std::thread> workers;
   for (int w = 0; w < 2; ++w)  // the reference is ~3 times the table's work: two threads
