@@ -132,6 +132,10 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   if (parseSceneCommand(args, cmd)) return cmd;
   if (parseRenderCommand(args, cmd)) return cmd;
   BakeRequest req;
+  // --fresnel and its parameters as given (the parameters may come first); the request holds the
+  // Fresnel only when --fresnel names one
+  FresnelChoice fresnel;
+  bool fresnelGiven = false;
   std::vector<std::string> volumeFlags;  // the brdf3d-only options given (cli/volume_args.h)
   if (first == "bake") {
     i = 1;
@@ -240,8 +244,8 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       if (req.cacheDir.empty()) throw Error(kExitUsage, "--cache-dir: empty directory name");
     } else if (opt == "--fresnel") {
       once(opt, "--fresnel");
-      req.fresnel.model = fresnelId(value());
-      req.fresnelGiven = true;
+      fresnel.model = fresnelId(value());
+      fresnelGiven = true;
     } else if (opt == "--sigma") {
       once(opt, opt);
       std::vector<double> v = parseValues(opt, value());
@@ -312,10 +316,10 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       req.diffuse = diffuseId(value());
     } else if (opt == "--f0" || opt == "--eta" || opt == "--k" || opt == "--f82") {
       once(opt, opt);
-      std::vector<double>& slot = opt == "--f0"    ? req.fresnel.f0
-                                  : opt == "--eta" ? req.fresnel.eta
-                                  : opt == "--k"   ? req.fresnel.k
-                                                   : req.fresnel.f82;
+      std::vector<double>& slot = opt == "--f0"    ? fresnel.f0
+                                  : opt == "--eta" ? fresnel.eta
+                                  : opt == "--k"   ? fresnel.k
+                                                   : fresnel.f82;
       slot = parseValues(opt, value());
     } else {
       throw Error(kExitSoftware, "internal: " + opt + " is in the option table (cli/option_table.cpp) but not parsed");
@@ -328,8 +332,8 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     // a measured material: the data is the whole material, and only the 2D tables' kinds have a form
     if (cmd.kind != Command::Kind::Bake && cmd.kind != Command::Kind::Convergence)
       throw Error(kExitUsage, "--brdf: only bake and convergence take a measured material");
-    if (modelsGiven || req.fresnelGiven || !req.fresnel.f0.empty() || !req.fresnel.eta.empty() ||
-        !req.fresnel.k.empty() || !req.fresnel.f82.empty())
+    if (modelsGiven || fresnelGiven || !fresnel.f0.empty() || !fresnel.eta.empty() || !fresnel.k.empty() ||
+        !fresnel.f82.empty())
       throw Error(kExitUsage, "--brdf merl:" + req.merl +
                                   ": the measured data is the whole material; --ndf, --gaf, "
                                   "--fresnel, --diffuse and their parameters do not apply");
@@ -342,7 +346,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   }
   if (!req.preset.empty()) {
     // the preset names its own models and tables (plan/plan.cpp makePresetPlan)
-    if (modelsGiven || req.fresnelGiven || !req.tables.empty() || !req.merl.empty())
+    if (modelsGiven || fresnelGiven || !req.tables.empty() || !req.merl.empty())
       throw Error(kExitUsage, "--preset " + req.preset +
                                   " bakes its own models and tables; --ndf, --gaf, --table, "
                                   "--fresnel, --diffuse and --brdf do not apply (--size, --grid, --half, -o do)");
@@ -361,16 +365,16 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
     for (int n : req.ndfs)
       for (int g : req.gafs) checkPair(n, g);
     bool sheen = std::any_of(req.ndfs.begin(), req.ndfs.end(), isSheenNdf);
-    if (sheen && (req.fresnelGiven || req.diffuse >= 0))
+    if (sheen && (fresnelGiven || req.diffuse >= 0))
       throw Error(kExitUsage,
-                  std::string(req.fresnelGiven ? "--fresnel" : "--diffuse") +
+                  std::string(fresnelGiven ? "--fresnel" : "--diffuse") +
                       ": the sheen NDF (charlie) has no Fresnel or diffuse form (KHR_materials_sheen: F = 1, "
                       "the sheen colour scales the lobe); bake charlie without it");
   }
   if (cmd.kind == Command::Kind::Energy) {
     if (req.sigma && req.diffuse != DIFFUSE_OREN_NAYAR && req.diffuse != DIFFUSE_OREN_NAYAR_AS_PRINTED)
       throw Error(kExitUsage, "--sigma: only --diffuse oren-nayar and oren-nayar-as-printed take it");
-    if (cmd.energy.transmission && (req.fresnel.model != FRESNEL_DIELECTRIC || req.diffuse >= 0))
+    if (cmd.energy.transmission && (fresnel.model != FRESNEL_DIELECTRIC || req.diffuse >= 0))
       throw Error(kExitUsage, "--transmission: rough glass takes --fresnel dielectric (its --eta) and no --diffuse");
   }
   if (cmd.kind == Command::Kind::Convergence) {
@@ -388,7 +392,7 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   if (!req.tables.empty()) {
   } else if (req.diffuse >= 0) {
     req.tables = kindsWhere([](const KindInfo& k) { return k.albedo && k.muRAxes; });  // the diffuse model's albedo
-  } else if (req.fresnelGiven) {
+  } else if (fresnelGiven) {
     req.tables = albedoKinds(false);  // the tables a Fresnel model enters
   } else if (req.layoutPreset || !req.layout.identity()) {
     req.tables = kindsWhere([](const KindInfo& k) { return k.layouts; });  // the one table a layout arranges
@@ -397,10 +401,10 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
   } else {
     req.tables = def.tables;
   }
-  if (!req.fresnelGiven &&
-      (!req.fresnel.f0.empty() || !req.fresnel.eta.empty() || !req.fresnel.k.empty() || !req.fresnel.f82.empty()))
+  if (!fresnelGiven && (!fresnel.f0.empty() || !fresnel.eta.empty() || !fresnel.k.empty() || !fresnel.f82.empty()))
     throw Error(kExitUsage, "--f0, --eta, --k and --f82 need --fresnel MODEL (" + joinNames(fresnelNames()) + ")");
-  validateFresnel(req.fresnel);
+  validateFresnel(fresnel);
+  if (fresnelGiven) req.fresnel = fresnel;
   validateMuAxis(!gridName.empty(), req);
   if (req.nodeGrid && req.size && *req.size < 2)
     throw Error(kExitUsage, "--size must be at least 2 on the node grid, got " + std::to_string(*req.size));

@@ -22,7 +22,8 @@ namespace brdfbake {
 namespace {
 
 // The diffuse and dielectric kernels' float arithmetic, as in the bake (host/tables/table2d.cpp,
-// host/tables/dielectric/dielectric_bake.cpp): once per lobe; the specular lobe's is modelled per texel (tables/error_model.h).
+// host/tables/dielectric/dielectric_bake.cpp): once per lobe; the specular lobe's is modelled per texel
+// (tables/error_model.h).
 constexpr double kAllowance = 1e-6;
 constexpr size_t kWorstShown = 5;
 
@@ -54,7 +55,7 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req, const EnergyOption
     throw Error(kExitUsage, "--size must be at least 2 for energy (grid nodes per axis), got " + std::to_string(n));
   DeviceEntry dev = selectDevice(req.device);
   KernelRunner runner(dev.device);
-  const FresnelChoice& fc = req.fresnel;
+  const FresnelChoice& fc = fresnelOf(req);
   const int d = req.diffuse;
   const bool shirley = d == DIFFUSE_SHIRLEY || d == DIFFUSE_ASHIKHMIN_SHIRLEY || d == DIFFUSE_SHIRLEY_AS_PRINTED;
   const bool orenNayar = d == DIFFUSE_OREN_NAYAR || d == DIFFUSE_OREN_NAYAR_AS_PRINTED;
@@ -104,8 +105,7 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req, const EnergyOption
         b.tables = {TableKind::Albedo};
         b.size = n;
         b.nodeGrid = nodes;
-        b.fresnel = fc;
-        b.fresnelGiven = req.fresnelGiven;
+        b.fresnel = req.fresnel;
         b.device = req.device;
         spec = std::move(bake(b).at(0));
       }

@@ -150,12 +150,13 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
       if (schlickLike || fm == FRESNEL_F82_TINT) {
         for (TableKind k : kindsServing(kUseIbl)) {
           BakeRequest r = request(m, k);
-          r.fresnel.model = fm == FRESNEL_F82_TINT ? FRESNEL_F82_TINT : FRESNEL_SCHLICK;
-          if (fm == FRESNEL_F82_TINT) r.fresnel = m.fresnel;  // its split has a third channel, F0-free
-          r.fresnel.f0.clear();
-          r.fresnel.f82.clear();
-          validateFresnel(r.fresnel);
-          r.fresnelGiven = true;
+          FresnelChoice split;
+          split.model = fm == FRESNEL_F82_TINT ? FRESNEL_F82_TINT : FRESNEL_SCHLICK;
+          if (fm == FRESNEL_F82_TINT) split = m.fresnel;  // its split has a third channel, F0-free
+          split.f0.clear();
+          split.f82.clear();
+          validateFresnel(split);
+          r.fresnel = split;
           if (m.diffuse == DIFFUSE_BURLEY) r.diffuse = DIFFUSE_BURLEY;
           addTables(sp, r, m,
                     std::string("image-based lighting (split-sum DFG") +
@@ -165,7 +166,6 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
         for (TableKind k : kindsServing(kUseIblFresnel)) {
           BakeRequest r = request(m, k);
           r.fresnel = m.fresnel;
-          r.fresnelGiven = true;
           addTables(sp, r, m,
                     "image-based lighting (" + fresnelNames()[fm] +
                         " has no Schlick split: its DFG is the "
@@ -184,8 +184,7 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
     if (m.coupling == "albedo-scaling")
       for (TableKind k : kindsServing(kUseAlbedoScaling)) {
         BakeRequest r = request(m, k);
-        r.fresnel = m.fresnel;
-        r.fresnelGiven = !m.fresnel.isOne();
+        if (!m.fresnel.isOne()) r.fresnel = m.fresnel;
         addTables(sp, r, m, "albedo-scaling coupling (the diffuse lobe scaled by 1 - E_F, with E_F,avg)");
       }
     if (m.brdf3d)
@@ -193,7 +192,6 @@ ScenePlan planScene(const Scene& scene, const std::string& outDir) {
         anyVolume = true;
         BakeRequest r = request(m, k);
         r.fresnel = m.fresnel;
-        r.fresnelGiven = true;
         r.diffuse = m.diffuse;
         r.sigma = m.sigma;
         r.size.reset();

@@ -37,12 +37,13 @@ struct BakeRequest {
   std::string cacheDir;                    // PoCL kernel cache (POCL_CACHE_DIR); "" = PoCL's default
   bool noWait = false;                     // another bake writing into outDir: Error(kExitTempFail) instead of waiting
   std::shared_ptr<BakeObserver> observer;  // stages and progress as the bake runs (brdfbake/observer.h); optional
-  FresnelChoice fresnel;                   // --fresnel and its parameters (validated)
-  bool fresnelGiven = false;
-  int diffuse = -1;              // --diffuse: DIFFUSE_* id, or -1
-  std::string merl;              // --brdf merl:FILE: a measured material's MERL file, or ""
-  std::string preset;            // --preset gltf: glTF's reference-shading tables (plan/plan.cpp), or ""
-  std::optional<double> sigma;   // --sigma: oren-nayar's roughness (brdf3d; energy sweeps it when unset)
+  // --fresnel and its parameters (validated); unset: no Fresnel chosen, and a table that takes one
+  // holds F = 1 (fresnelOf)
+  std::optional<FresnelChoice> fresnel;
+  int diffuse = -1;             // --diffuse: DIFFUSE_* id, or -1
+  std::string merl;             // --brdf merl:FILE: a measured material's MERL file, or ""
+  std::string preset;           // --preset gltf: glTF's reference-shading tables (plan/plan.cpp), or ""
+  std::optional<double> sigma;  // --sigma: oren-nayar's roughness (brdf3d; energy sweeps it when unset)
   // --table dielectric, dielectric-avg: the eta axis's range (--eta-range LO,HI)
   std::optional<std::pair<double, double>> etaRange;
   // --table brdf3d (the others ignore these; given without it, they are a usage error)
@@ -57,6 +58,12 @@ struct BakeRequest {
     bool merl = false;                         // --format merl
   } volume;
 };
+
+// The request's Fresnel: the chosen one, or F = 1 (model one) when none is.
+inline const FresnelChoice& fresnelOf(const BakeRequest& r) {
+  static const FresnelChoice one;
+  return r.fresnel ? *r.fresnel : one;
+}
 
 // Whether the request's tables store float16 (an EXR's HALF channels): --half is --precision float16.
 inline bool storesHalf(const BakeRequest& r) { return r.precision == Precision::Float16; }

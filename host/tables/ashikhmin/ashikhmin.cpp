@@ -31,8 +31,8 @@ class Ashikhmin final : public TableFamily {
   std::vector<Job> plan(const BakeRequest& req) const override {
     if (!req.merl.empty() || !req.preset.empty()) return {};
     if (std::find(req.tables.begin(), req.tables.end(), TableKind::AshikhminShirley) == req.tables.end()) return {};
-    if (req.fresnelGiven)
-      throw Error(kExitUsage, "--fresnel " + fresnelNames()[req.fresnel.model] +
+    if (req.fresnel)
+      throw Error(kExitUsage, "--fresnel " + fresnelNames()[req.fresnel->model] +
                                   ": --table ashikhmin-shirley holds Schlick's F split as R_s R + G (R_s enters in "
                                   "the shader); bake it without --fresnel");
     int n = req.size ? *req.size : brdfbake::defaultSize(TableKind::AshikhminShirley);
@@ -110,7 +110,8 @@ class Ashikhmin final : public TableFamily {
           ladder::rung("bilinear lookup (float texels)", std::to_string(n) + " texels per axis", secs, v, e, ref));
     }
     L.note =
-        "The reference: the seed's formulas as printed, in long double (tables/ashikhmin/ashikhmin_textures.cpp); a rung's "
+        "The reference: the seed's formulas as printed, in long double (tables/ashikhmin/ashikhmin_textures.cpp); a "
+        "rung's "
         "estimate is its change from the previous rung\n";
     return L;
   }

@@ -58,7 +58,7 @@ std::vector<Job> planVolumes(const TableFamily* family, const BakeRequest& req) 
       s.ndf = ndf;
       s.gaf = gaf;
       s.roughness = v.roughness;
-      s.fresnel = req.fresnel;
+      s.fresnel = fresnelOf(req);
       s.diffuse = req.diffuse;
       s.rho = v.rho;
       // the diffuse model's own parameter: F0 (the Shirley forms: the specular's, else 0.04),
@@ -68,7 +68,7 @@ std::vector<Job> planVolumes(const TableFamily* family, const BakeRequest& req) 
       else if (req.diffuse == DIFFUSE_BURLEY)
         s.diffuseParam = v.roughness;
       else
-        s.diffuseParam = req.fresnel.f0.empty() ? DIFFUSE_DEFAULT_F0 : req.fresnel.f0[0];
+        s.diffuseParam = fresnelOf(req).f0.empty() ? DIFFUSE_DEFAULT_F0 : fresnelOf(req).f0[0];
       s.param = v.param;
       s.thetaHSqrt = v.thetaHSqrt;
       s.timesCos = v.timesCos;

@@ -40,7 +40,7 @@ std::vector<Job> planDielectric(const TableFamily* family, const BakeRequest& re
                                   ": the rough dielectric takes --gaf smith or smith-correlated (Smith's G for "
                                   "reflection and transmission), not " +
                                   gafNames()[gaf]);
-  if (req.fresnelGiven || req.diffuse >= 0 || !req.fresnel.eta.empty() || !req.fresnel.f0.empty())
+  if (req.fresnel || req.diffuse >= 0)
     throw Error(kExitUsage, t + ": the Fresnel is the exact dielectric one over the eta axis (--eta-range); leave "
                                 "--fresnel, --eta, --f0 and --diffuse out");
   // --size NX,NY,NZ: the cube's own axes (mu, r, eta slices), e.g. a slice or two around one
@@ -288,7 +288,7 @@ class Dielectric final : public TableFamily {
     planDielectric(this, r);  // the same model checks as a bake
     const int ndf = req.ndfs[0], gaf = req.gafs[0];
     return kind == TableKind::Dielectric ? cubeLadder(ctx, req, budgets, ndf, gaf)
-                                          : avgLadder(ctx, req, budgets, ndf, gaf);
+                                         : avgLadder(ctx, req, budgets, ndf, gaf);
   }
 
   // Near the interface's limits: eta -> 1 (E_R -> 0, E_T -> the eta = 1 closed form), a nearly

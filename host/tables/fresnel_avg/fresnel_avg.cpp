@@ -34,7 +34,8 @@ class FresnelAvg final : public TableFamily {
   std::vector<Job> plan(const BakeRequest& req) const override {
     if (!req.merl.empty() || !req.preset.empty()) return {};
     if (std::find(req.tables.begin(), req.tables.end(), TableKind::FresnelAvg) == req.tables.end()) return {};
-    if (req.fresnel.model != FRESNEL_DIELECTRIC && req.fresnel.model != FRESNEL_SCHLICK_TIR)
+    const FresnelChoice& fresnel = fresnelOf(req);
+    if (fresnel.model != FRESNEL_DIELECTRIC && fresnel.model != FRESNEL_SCHLICK_TIR)
       throw Error(kExitUsage,
                   "--table fresnel-avg runs over eta: it takes --fresnel dielectric or schlick-tir (for "
                   "other models brdfbake energy prints F_avg, and every Fresnel table records it as "
@@ -42,7 +43,7 @@ class FresnelAvg final : public TableFamily {
     int n = req.size ? *req.size : brdfbake::defaultSize(TableKind::FresnelAvg);
     if (n < 2) throw Error(kExitUsage, "--size must be at least 2 for fresnel-avg, got " + std::to_string(n));
     TableJob job = tableJob(TableKind::FresnelAvg, -1, -1, n, 1, req.nodeGrid, storesHalf(req));
-    job.fresnel = req.fresnel;
+    job.fresnel = fresnel;
     job.path = req.outDir + "/fresnel-avg_" + fresnelNames()[job.fresnel.model] + ".exr";
     applyFormats(req, job);
     return {makeJob(this, job.kind, job)};
@@ -85,7 +86,7 @@ class FresnelAvg final : public TableFamily {
   // angle) and composite Gauss-Legendre of 2 mu F(mu) over [0, 1] without the split (levels L: 4^L
   // panels of 8 nodes), against the reference (complex Fresnel amplitudes, adaptive GK in double).
   Ladder convergence(BakeContext&, const BakeRequest& req, TableKind, const LadderBudgets& budgets) const override {
-    const int model = req.fresnel.model;
+    const int model = fresnelOf(req).model;
     if (model != FRESNEL_DIELECTRIC && model != FRESNEL_SCHLICK_TIR)
       throw Error(kExitUsage, "--table fresnel-avg runs over eta: it takes --fresnel dielectric or schlick-tir");
     const int n = ladder::pointsPerAxis(req, 8, 1, 256, "fresnel-avg");

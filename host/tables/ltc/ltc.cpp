@@ -72,8 +72,8 @@ class LtcFamily final : public TableFamily {
   std::vector<Job> plan(const BakeRequest& req) const override {
     if (std::find(req.tables.begin(), req.tables.end(), TableKind::Ltc) == req.tables.end()) return {};
     if (!req.merl.empty() || !req.preset.empty()) return {};
-    if (req.fresnelGiven)
-      throw Error(kExitUsage, "--fresnel " + fresnelNames()[req.fresnel.model] +
+    if (req.fresnel)
+      throw Error(kExitUsage, "--fresnel " + fresnelNames()[req.fresnel->model] +
                                   ": --table ltc stores the magnitude and Schlick's Fresnel moment, as engines "
                                   "read them (F0 enters in the shader); bake it without --fresnel");
     const int n = req.size ? *req.size : brdfbake::defaultSize(TableKind::Ltc);

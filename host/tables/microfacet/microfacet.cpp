@@ -245,15 +245,15 @@ class Microfacet final : public TableFamily {
     if (!req.preset.empty()) return presetPlan(req);
     std::vector<Job> jobs;
     const int gafNone = 0;
-    if (req.fresnelGiven) {
+    if (req.fresnel) {
       // where the chosen Fresnel makes no sense
-      const std::string f = "--fresnel " + fresnelNames()[req.fresnel.model];
+      const std::string f = "--fresnel " + fresnelNames()[req.fresnel->model];
       for (TableKind kind : req.tables) {
         if (kind == TableKind::Kp)
           throw Error(kExitUsage,
                       f + ": --table kp is the NDF's normalisation, which has no Fresnel; bake it without --fresnel");
-        if (kind == TableKind::SplitSum && req.fresnel.model != FRESNEL_SCHLICK &&
-            req.fresnel.model != FRESNEL_F82_TINT)
+        if (kind == TableKind::SplitSum && req.fresnel->model != FRESNEL_SCHLICK &&
+            req.fresnel->model != FRESNEL_F82_TINT)
           throw Error(kExitUsage, f + ": --table splitsum is Schlick's split (F0 A + B); it takes --fresnel schlick or "
                                       "f82-tint (a third channel); bake --table albedo for this model");
       }
@@ -268,7 +268,7 @@ class Microfacet final : public TableFamily {
         if (kind == TableKind::SplitSum && req.diffuse != DIFFUSE_BURLEY)
           throw Error(kExitUsage, d + ": --table splitsum takes --diffuse burley only (its parameter is the table's "
                                       "roughness r); bake --table albedo for this model");
-        if (kind == TableKind::Albedo && req.fresnelGiven)
+        if (kind == TableKind::Albedo && req.fresnel)
           throw Error(kExitUsage, d + ": --table albedo bakes the diffuse model's albedo, --fresnel the specular's; "
                                       "bake them in two runs (or check the whole material with brdfbake energy)");
       }
@@ -302,7 +302,7 @@ class Microfacet final : public TableFamily {
                                                 : "its fitted Lambda is finite at grazing, so G/(n.o) is not") +
                             "), the grid's first column; use --grid texel-center for " + tableName(kind));
           TableJob job = tableJob(kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, storesHalf(req));
-          job.fresnel = req.fresnel;
+          job.fresnel = fresnelOf(req);
           job.diffuse = kind == TableKind::SplitSum ? req.diffuse : -1;
           job.muSqrt = twoD && req.muSqrt.value_or(false);  // validated: cli/layout_args.cpp
           jobs.push_back(add(req, job));

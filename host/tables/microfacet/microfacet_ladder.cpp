@@ -78,7 +78,7 @@ Weights weightsOf(const FresnelChoice& fc) {
 Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, const LadderBudgets& budgets, TableKind kind, int ndf,
                         int gaf) {
   const int n = ladder::pointsPerAxis(req, 12, 2, 64, tableName(kind));
-  const FresnelChoice& fc = req.fresnel;
+  const FresnelChoice& fc = fresnelOf(req);
   const bool split = kind == TableKind::SplitSum;
   if (split && !fc.isOne() && fc.model != FRESNEL_SCHLICK)
     throw Error(kExitUsage,
@@ -177,7 +177,7 @@ Ladder hemisphereLadder(BakeContext& ctx, const BakeRequest& req, const LadderBu
 // at rising panel counts (levels L: 2^L panels of 8 nodes), against the reference's E_avg.
 Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, const LadderBudgets& budgets, int ndf, int gaf) {
   const int n = ladder::pointsPerAxis(req, 6, 1, 32, "albedo-avg");
-  const FresnelChoice& fc = req.fresnel;
+  const FresnelChoice& fc = fresnelOf(req);
   const Weights w = weightsOf(fc);
   const bool weighted = w.hw.moments == HEMI_FRESNEL;
   Ladder L;
@@ -301,11 +301,11 @@ Ladder microfacetLadder(BakeContext& ctx, const BakeRequest& req, TableKind kind
   if (req.diffuse >= 0)
     throw Error(kExitUsage,
                 "--diffuse: convergence measures the specular estimators (the diffuse albedo has one budget)");
-  if (req.fresnel.channels() != 1)
+  if (fresnelOf(req).channels() != 1)
     throw Error(kExitUsage, "convergence takes one value per Fresnel parameter, not R,G,B");
   const int ndf = req.ndfs[0], gaf = req.gafs[0];
   if (kind == TableKind::Kp) {
-    if (req.fresnelGiven) throw Error(kExitUsage, "--fresnel: --table kp has no Fresnel");
+    if (req.fresnel) throw Error(kExitUsage, "--fresnel: --table kp has no Fresnel");
     return kpLadder(ctx, req, budgets, ndf);
   }
   if (gaf == GAF_NONE) throw Error(kExitUsage, "--gaf none: E grows like 1/mu at grazing; pick a GAF");
