@@ -59,9 +59,8 @@ static inline float lane_sum(float16 x) {
 }
 /* lane_sum of four (two) lane vectors at once, (lane_sum(a), lane_sum(b), ...): one reduction tree,
  * each step halving a vector that holds all of them, instead of one tree each. A GK15 panel reduces
- * six vectors (azimuth.h), a trapezoid six too; measured: ggx + smith-correlated's 128^2 split-sum
- * kernel took 0.0356 to 0.0374 s with these against 0.0383 to 0.0395 s with six lane_sum each
- * (brdfbake-bench --times-only --repeat 5, two builds, three interleaved runs each). */
+ * six vectors (azimuth.h), a trapezoid six too; these measured faster than six lane_sum each
+ * (docs/performance.md, "Kernel choices"). */
 static inline float4 lane_sum4(float16 a, float16 b, float16 c, float16 d) {
   float16 ab = (float16)(a.lo + a.hi, b.lo + b.hi);
   float16 cd = (float16)(c.lo + c.hi, d.lo + d.hi);

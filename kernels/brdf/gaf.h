@@ -96,10 +96,8 @@ BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, param_t no, 
                                 gaf == GAF_SMITH_CORRELATED_EXACT)) {
     /* The Smith forms below with GGX's c Lambda(i) = x/(2q) (ggx_cLambda_q; its exact Lambda is the
      * same) and q multiplied through: one division per node instead of two.
-     * Measured with the integrand's 1/cos theta_h taken once per call too (integrand.h): ggx +
-     * smith-correlated's 128^2 split-sum kernel 0.0350 to 0.0357 s with one lane division per node
-     * against 0.0397 to 0.0405 s with three (brdfbake-bench --times-only --repeat 5, two builds,
-     * three interleaved runs each) */
+     * With the integrand's 1/cos theta_h taken once per call too (integrand.h), one lane division
+     * per node measured faster than three (docs/performance.md, "Kernel choices") */
     real x;
     real q = ggx_cLambda_q(p, ni, s2i, &x);
     if (gaf == GAF_SMITH || gaf == GAF_SMITH_EXACT)

@@ -131,8 +131,7 @@ BRDF_FN real charlie_L(param_t alpha, real x) {
 }
 BRDF_FN real charlie_lambda(param_t alpha, real c) {
   /* one L per value, its argument chosen first (lanes compute both sides of a select): two
-   * transcendental calls per lane instead of eight; charlie + charlie-smith's split sum 0.52 s
-   * against 0.57 s (brdfbake bake --timings) */
+   * transcendental calls per lane instead of eight, measured faster (docs/performance.md, "Kernel choices") */
   real l = charlie_L(alpha, c < RC(0.5) ? c : RC(1.0) - c);
   param_t lh = RC(2.0) * charlie_L(alpha, (param_t)RC(0.5));
   return exp(c < RC(0.5) ? l : lh - l);
@@ -152,8 +151,8 @@ BRDF_FN real charlie_lambda(param_t alpha, real c) {
  * arithmetic, tools/fit_polynomials.py lambda); above 4 the asymptotic series of erfc (Abramowitz and
  * Stegun 7.1.23) to 1/a^8, within 7.4e-4 of L where L exp(-a^2) a < 2e-9 of c. In double (the
  * host's reference-precision models, device programs in double) libm's erfc, as written above.
- * Measured: beckmann + smith's 128^2 split-sum kernel takes 0.13 s with it, 0.19 s with exp and
- * erfc (brdfbake-bench --times-only --pair beckmann+smith); tests/float_forms_test.cpp. */
+ * Faster than exp and erfc in float (docs/performance.md, "Kernel choices");
+ * tests/float_forms_test.cpp holds its error. */
 #ifndef BRDF_LANE_PASS
 BRDF_CONST real BECKMANN_L_P[13] = {
     RC(0.56851845943975654),    RC(0.064183925545320347),  RC(-0.091686504761588697), RC(0.022163713757722109),
@@ -228,8 +227,7 @@ BRDF_FN int smith_row_weights(BrdfParams p, real* wy) {
 }
 /* The correction V(z, alpha^2) interpolated along alpha^2 at p.alpha, for every z node: the
  * estimators fix alpha per texel, so each lane then interpolates in z alone (4 gathers instead
- * of 16). Measured: gaussian + smith-exact's 128^2 split-sum kernel 0.24 s with the column,
- * 0.39 s without (brdfbake-bench --times-only --pair gaussian+smith-exact). Returns col, or 0
+ * of 16), measured faster than without the column (docs/performance.md, "Kernel choices"). Returns col, or 0
  * where the pair's Lambda is not tabulated. */
 BRDF_FN const float* smith_column(int ndf, BrdfParams p, float* col) {
   if (ndf != NDF_BLINN_PHONG && ndf != NDF_GAUSSIAN) return 0;

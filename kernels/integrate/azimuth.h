@@ -141,10 +141,9 @@ BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAn
  * one's sq_lo + 2 sq_hi. The same bits as the two calls: each lane vector goes through the same
  * reduction tree as alone (compat.h lane_sum4), and gk_error4 works lane by lane. What it saves is
  * the wait: a panel's resasc waits on its mean and its estimate on its resasc, and the other
- * panel's reductions run beside them. Measured: ggx + smith-correlated's 128^2 split-sum kernel
- * 0.0364 to 0.0367 s against 0.0375 to 0.0383 s with one panel at a time (brdfbake-bench
- * --times-only --repeat 5, two builds, five interleaved runs each); pairing the panels of
- * neighbouring outer nodes as well, or two nodes' trapezoids, gained nothing more. */
+ * panel's reductions run beside them. It measured faster than one panel at a time; pairing the
+ * panels of neighbouring outer nodes as well, or two nodes' trapezoids, gained nothing more
+ * (docs/performance.md, "Kernel choices"). */
 BRDF_FN void hemi_phi_gk_pair(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, float4 p12,
                               int2 sq12, real* ka, real* kb, real* ea, real* eb) {
   lane_t fa1, fb1, fa2, fb2;
@@ -197,11 +196,10 @@ BRDF_FN void hemi_trap_finish(TrapSums t, real fa, real fb, real* ia, real* ib, 
 /* Trapezoid on the whole half-circle with n = 16 or 32 intervals (nodes cos(k pi/n)), all but the
  * last node (phi = pi): its sums, which hemi_trap_finish completes into the values and the error
  * estimates from the n/2- and n/4-interval rules (trap_error). Lane vectors of nodes. The last
- * nodes of a panel's 15 outer nodes go in one lane vector (hemisphere.h): one by one, in scalar
- * code, ggx + smith-correlated's split-sum kernel took 0.0547 s against 0.0456 s (brdfbake-bench
- * --times-only --repeat 5). On the device a panel whose nodes all take the 16 intervals plainly
- * runs transposed instead (hemi_trap_lanes, the same bits); this form serves the refined budget,
- * the panels with kinks and the host. */
+ * nodes of a panel's 15 outer nodes go in one lane vector (hemisphere.h), faster than one by one
+ * in scalar code (docs/performance.md, "Kernel choices"). On the device a panel whose nodes all
+ * take the 16 intervals plainly runs transposed instead (hemi_trap_lanes, the same bits); this form
+ * serves the refined budget, the panels with kinks and the host. */
 BRDF_FN TrapSums hemi_phi_trap(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, int n) {
   BRDF_TABLE real* cs = n == 32 ? COS_PI32 : COS_PI16;
   BRDF_TABLE real* w = n == 32 ? TRAP32_W : TRAP16_W;
@@ -246,8 +244,7 @@ BRDF_FN TrapSums hemi_phi_trap(int ndf, int gaf, BrdfParams p, real mu, real s, 
  * sq_lo + 2 sq_hi (hemi_phi_gk: the ends at Fresnel's kink, and the horizon end where G is
  * singular there); *np panels, at most HEMI_ARC_PANELS. st: the stride, 1 for hemi_phi's own
  * arrays, 16 where hemi_arcs_lanes keeps a panel of every outer node side by side (written in
- * place there: a copy through one node's arrays took the kernel to 0.0242 to 0.0244 s against
- * 0.0238 to 0.0239 s, brdfbake-bench --times-only --repeat 5, three interleaved runs). */
+ * place there: a copy through one node's arrays measured slower (docs/performance.md, "Kernel choices")). */
 BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, int full,
                           real phimax, real sinmax, int refine, real* lo_, real* hi_, int* sq_, int st, int* np) {
   /* zeroed: only the first nk are read, which GCC's host build cannot see (-Wmaybe-uninitialized) */

@@ -48,9 +48,7 @@ BRDF_FN void hemi_trap_quad(int ndf, int gaf, BrdfParams p, real mu, real s, lan
  * hemi_node does). Each lane's sums add the weighted nodes in the order of the reduction tree
  * hemi_phi_trap uses (compat.h lane_sum4, lane_sum2) and the phi = pi node last, so every node's
  * values and estimates are the bits hemi_phi gives; what goes is the horizontal reductions and
- * the scalar set-up per node. Measured: ggx + smith-correlated's 128^2 split-sum kernel 0.0334 to
- * 0.0336 s against 0.0364 to 0.0366 s (brdfbake-bench --times-only --repeat 5, three interleaved
- * runs of both builds). */
+ * the scalar set-up per node, which measured faster (docs/performance.md, "Kernel choices"). */
 BRDF_FN void hemi_trap_lanes(int ndf, int gaf, BrdfParams p, real mu, real s, lane_t c, lane_t sn, lane_t* ia,
                              lane_t* ib, lane_t* ea, lane_t* eb) {
   lane_t t0[6], t1[6], t2[6], t3[6], sum[6];
@@ -91,10 +89,9 @@ BRDF_FN lane_t hemi_tree16(const lane_t* v) {
  * estimate gk_error's operations, and the panels are added in hemi_phi's order, so every node's
  * values and estimates are hemi_phi's bits. c, sn, phimax: per outer node (16 lanes, the 16th
  * unused); the results go to ia, ib, ea, eb (16 each). Over the default split sum's partial
- * panels 0.86 of the lanes' passes do work; ggx + smith-correlated's 128^2 split-sum kernel 0.0235
- * to 0.0237 s against 0.0333 to 0.0336 s with a vector of GK15 nodes per panel (brdfbake-bench
- * --times-only --repeat 5, interleaved runs of both builds). Only the passes a node sits out get
- * their ends written: setting all 17 x 16 of them first took the kernel to 0.0283 to 0.0285 s. */
+ * panels 0.86 of the lanes' passes do work, and the form measured faster than a vector of GK15
+ * nodes per panel. Only the passes a node sits out get their ends written: setting all 17 x 16 of
+ * them first measured slower (docs/performance.md, "Kernel choices"). */
 BRDF_FN void hemi_arcs_lanes(int ndf, int gaf, BrdfParams p, real mu, real s, const real* nc, const real* ns2,
                              const real* nt2, const real* nsn, const real* nphi, const real* nsin, real* ia, real* ib,
                              real* ea, real* eb) {

@@ -389,11 +389,11 @@ BRDF_FN real ndf_kp(int ndf, BrdfParams p, real* err) {
 }
 
 /* The same value with a panel's nodes in lanes, without the bound: brdf_params needs the gaussian's
- * k_p per texel; gaussian + none's 128^2 split-sum kernel takes 0.12 s with this, 0.18 s with the
- * 75 nodes one by one (brdfbake-bench --times-only --pair gaussian+none). The kp
- * table keeps ndf_kp: its |K15 - G7| is rounding noise on the closed-form NDFs, and in the lanes'
- * summation order the ggx table claimed 2.9e-7 against a true error of 6.1e-8, 4.7 times
- * (sequential: 2.65e-7 against 1.13e-7; brdfbake-bench --bounds --size 64 --stride 8). */
+ * k_p per texel, and the lanes evaluate it faster than the 75 nodes one by one
+ * (docs/performance.md, "Kernel choices"). The kp table keeps ndf_kp: its |K15 - G7| is rounding
+ * noise on the closed-form NDFs, and in the lanes' summation order the ggx table claimed 2.9e-7
+ * against a true error of 6.1e-8, 4.7 times (sequential: 2.65e-7 against 1.13e-7;
+ * brdfbake-bench --bounds --size 64 --stride 8). */
 BRDF_FN real ndf_kp_lanes(int ndf, BrdfParams p) {
   acc_t sum = 0;
   real cur = RC(0.0);

@@ -54,9 +54,8 @@ BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, Br
 
 /* The same with theta_h per lane (c = cos theta_h, sn = sin theta_h) at one azimuth: hemisphere.h
  * batches the trapezoids' phi = pi nodes so. Written out rather than shared with hemi_node: with
- * hemi_node calling it (theta_h a lane vector there too), ggx + smith-correlated's split-sum
- * kernel took 0.050 s instead of 0.046 s; with a shared weight-and-split helper, 0.050 s too
- * (brdfbake-bench --times-only --repeat 5). */
+ * hemi_node calling it (theta_h a lane vector there too), or with a shared weight-and-split helper,
+ * the split-sum kernel measured slower (docs/performance.md, "Kernel choices"). */
 BRDF_FN void hemi_node_c(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, real c, real sn, real cphi,
                          real* fa, real* fb) {
   real oh = fmin(s * sn * cphi + mu * c, RC(1.0));

@@ -83,8 +83,8 @@ BRDF_FN LtcLobe ltc_lobe(int kind, int ndf, int gaf, int diffuse, real mu, real 
 
 /* The view's GAF term and the exact Lambda's column, set once for the texel (as the integrators'
  * hemi_view does): p then evaluates Lambda at the light's direction only. Call it on the lobe where it
- * stays (smith_col points into L->col). Measured on 64^2 tables (brdfbake-bench --ltc --pair):
- * beckmann + smith 23.0 s -> 20.5 s, blinn-phong + smith-exact 45.8 s -> 24.4 s. */
+ * stays (smith_col points into L->col). Setting them per evaluation instead made the fit measurably
+ * slower, most for the exact Lambda (docs/performance.md, "Kernel choices"). */
 BRDF_FN void ltc_lobe_view(LtcLobe* L) {
   if (L->kind != LTC_LOBE_SPECULAR) return;
   if (gaf_lambda_tabulated(L->m.ndf, L->m.gaf)) L->m.p.smith_col = smith_column(L->m.ndf, L->m.p, L->col);
@@ -239,8 +239,8 @@ BRDF_FN real ltc_l1(const LtcLobe* L, Ltc l, int n, real su, real sv, real* belo
 
 /* The fit's points that do not move with M: the lobe's own and the cosine's, with p and the two
  * strategies' share of the balance heuristic's denominator, computed once per texel (the objective
- * then evaluates the BRDF at the LTC's n points only, not at 3n: the fit of beckmann + smith ran
- * 48 s for 64^2 evaluating all of them). n per strategy, at most LTC_MAX_FIXED / 2. */
+ * then evaluates the BRDF at the LTC's n points only, not at 3n, which measured slower
+ * (docs/performance.md, "Kernel choices")). n per strategy, at most LTC_MAX_FIXED / 2. */
 #define LTC_MAX_FIXED 768
 typedef struct LtcFixed {
   int count, n;
