@@ -80,9 +80,9 @@ int dielectricBench(KernelRunner& runner, int samplesLog2) {
   job.ndf = ndf;
   job.gaf = gaf;
   std::vector<double> etas = dielectricEtas(job, 0, n);
-  runner.dielectricSlab(ndf, gaf, 1, 1, {1.5}, false, kDielectricTarget);  // builds the program: not timed
+  dielectricSlab(runner, ndf, gaf, 1, 1, {1.5}, false, kDielectricTarget);  // builds the program: not timed
   auto t0 = std::chrono::steady_clock::now();
-  auto table = runner.dielectricSlab(ndf, gaf, n, n, etas, false, kDielectricTarget);
+  auto table = dielectricSlab(runner, ndf, gaf, n, n, etas, false, kDielectricTarget);
   double tTable = bench::seconds(t0);
   double maxBound = 0;
   for (float b : table[2]) maxBound = std::max(maxBound, static_cast<double>(b));
@@ -155,7 +155,7 @@ int dielectricAvgBench(KernelRunner& runner, int n, int ndf, int gaf) {
   job.avg = true;
   job.nx = job.ny = n;
   job.nz = 1;
-  runner.dielectricPoints(ndf, gaf, {0.5}, {0.5}, {1.5}, kDielectricAvgNodeTarget);  // builds the program: not timed
+  dielectricPoints(runner, ndf, gaf, {0.5}, {0.5}, {1.5}, kDielectricAvgNodeTarget);  // builds the program: not timed
   double tBake = 0;
   DielectricTable table = computeDielectric(runner, job, &tBake);
   std::vector<double> etas = dielectricEtas(job, 0, n), rs, es;

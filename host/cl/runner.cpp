@@ -50,26 +50,6 @@ void emptyArgs(cl::Kernel& k, const std::string& name, const cl::Buffer& dummy) 
     k.setArg(12 + kWeightArgs, 0);
     k.setArg(13 + kWeightArgs, dummy);
     setPairArgs(k, 14 + kWeightArgs, 0, 0);
-  } else if (name == kDielectric || name == kDielectricNodes) {
-    // (out, etas, nx, ny, zn, grid, target) or (out, mus, rs, etas, n, target)
-    int bufs = name == kDielectric ? 2 : 4, ints = name == kDielectric ? 4 : 1;
-    for (int i = 0; i < bufs; ++i) k.setArg(i, dummy);
-    for (int i = bufs; i < bufs + ints; ++i) k.setArg(i, 0);
-    k.setArg(bufs + ints, 0.0f);
-  } else if (name == kBrdf3d) {
-    k.setArg(0, dummy);
-    k.setArg(1, dummy);
-    for (int i = 2; i < 8; ++i) k.setArg(i, 0);
-    k.setArg(8, 0.5f);
-    k.setArg(9, 0.0f);
-    k.setArg(10, 0);
-    cl_float4 zero = {{0, 0, 0, 0}};
-    k.setArg(11, zero);
-    k.setArg(12, zero);
-    k.setArg(13, -1);
-    k.setArg(14, 0.0f);
-    k.setArg(15, zero);
-    k.setArg(16, 0);
   } else {
     k.setArg(0, dummy);
     k.setArg(1, dummy);
@@ -149,14 +129,19 @@ void KernelRunner::build(Slot& slot, int slotIndex, const Work& w, Compiled* don
 
 void KernelRunner::compileKernel(Compiled& c, const std::string& name) {
   if (c.has(name)) return;
-  // the tables' kernels launch once empty here; a family's own kernels compile at their first launch
-  const bool known = name == kHemisphere || name == kKp || name == kBrdf3d || name == kDielectric ||
-                     name == kDielectricNodes || name == "bake_diffuse_albedo";
+  // the integrators' kernels, and a family's kernels with warm arguments, launch once empty here;
+  // a family's other kernels compile at their first launch
+  const auto warm = warm_.find(name);
+  const bool known = name == kHemisphere || name == kKp || name == "bake_diffuse_albedo" || warm != warm_.end();
   if (cpu_ && known) {
     Slot& s = *slots_[c.slot];
     cl::Kernel k(c.program, name.c_str());
     cl::Buffer dummy(s.context, CL_MEM_READ_WRITE, 64);
-    emptyArgs(k, name, dummy);
+    std::vector<cl::Buffer> ins, outs;
+    if (warm != warm_.end())
+      setLaunchArgs(k, s.context, warm->second, fp64_, &ins, &outs);
+    else
+      emptyArgs(k, name, dummy);
     bool twoD = name != kKp;
     s.queue.enqueueNDRangeKernel(k, cl::NullRange, twoD ? cl::NDRange(kLocalX, kLocalY) : cl::NDRange(kLocalX),
                                  twoD ? cl::NDRange(kLocalX, kLocalY) : cl::NDRange(kLocalX));
@@ -237,12 +222,6 @@ namespace {
 // The program and kernel of a need other than the integrators' (which the plan shares or not).
 std::pair<ProgramKey, const char*> ownProgram(const KernelNeed& need) {
   switch (need.kernel) {
-    case KernelNeed::Brdf3d:
-      return {{ProgramKey::Volume, need.ndf, need.gaf}, kBrdf3d};
-    case KernelNeed::Dielectric:
-      return {{ProgramKey::Dielectric, need.ndf, need.gaf}, kDielectric};
-    case KernelNeed::DielectricNodes:
-      return {{ProgramKey::Dielectric, need.ndf, need.gaf}, kDielectricNodes};
     case KernelNeed::Own:
       return {{need.program, need.ndf, need.gaf}, need.name};
     case KernelNeed::Hemisphere:
@@ -254,7 +233,12 @@ std::pair<ProgramKey, const char*> ownProgram(const KernelNeed& need) {
 }
 }  // namespace
 
+void KernelRunner::remember(const KernelNeed& need) {
+  if (need.kernel == KernelNeed::Own && !need.warm.empty()) warm_[need.name] = need.warm;
+}
+
 void KernelRunner::prepare(const KernelNeed& need) {
+  remember(need);
   if (need.kernel == KernelNeed::Kp) {
     if (Compiled* c = kpProgram(need.ndf))
       compileKernel(*c, kKp);
@@ -331,6 +315,7 @@ std::vector<KernelRunner::Work> KernelRunner::plan(const std::vector<KernelNeed>
 
 void KernelRunner::prepareAll(const std::vector<KernelNeed>& tables) {
   planned_ = true;
+  for (const KernelNeed& t : tables) remember(t);  // before the build threads read warm_
   std::vector<Work> work = plan(tables);
   // drop what is compiled already
   std::vector<Work> todo;

@@ -33,28 +33,80 @@
 
 namespace brdfbake {
 
-struct Brdf3dSpec;  // common/brdf3d_grid.h
+// An argument of KernelRunner::launch: a number, a float4, floats or reals the kernel reads, or
+// floats or reals it writes. Reals are the program's `real`: double where the device has fp64
+// (KernelRunner::hasDouble), else float.
+struct LaunchArg {
+  enum Type { Int, Float, Float4, In, InReals, Out, OutReals } type = Int;
+  int i = 0;
+  float f = 0;
+  cl_float4 f4 = {{0, 0, 0, 0}};
+  const std::vector<float>* in = nullptr;      // In (nullptr: an empty input)
+  const std::vector<double>* reals = nullptr;  // InReals (nullptr: an empty input)
+  size_t out = 0;                              // Out, OutReals: how many values
+  static LaunchArg of(int v) {
+    return with(Int, [&](LaunchArg& a) { a.i = v; });
+  }
+  static LaunchArg of(float v) {
+    return with(Float, [&](LaunchArg& a) { a.f = v; });
+  }
+  static LaunchArg of(cl_float4 v) {
+    return with(Float4, [&](LaunchArg& a) { a.f4 = v; });
+  }
+  static LaunchArg input(const std::vector<float>& v) {
+    return with(In, [&](LaunchArg& a) { a.in = &v; });
+  }
+  static LaunchArg inputReals(const std::vector<double>& v) {
+    return with(InReals, [&](LaunchArg& a) { a.reals = &v; });
+  }
+  // an input with nothing in it (a kernel's warm arguments, KernelNeed::warm)
+  static LaunchArg noInput(Type t) {
+    return with(t, [](LaunchArg&) {});
+  }
+  static LaunchArg output(size_t n) {
+    return with(Out, [&](LaunchArg& a) { a.out = n; });
+  }
+  static LaunchArg outputReals(size_t n) {
+    return with(OutReals, [&](LaunchArg& a) { a.out = n; });
+  }
+
+ private:
+  template <class F>
+  static LaunchArg with(Type t, F set) {
+    LaunchArg a;
+    a.type = t;
+    set(a);
+    return a;
+  }
+};
 
 // A kernel a table needs compiled, for an NDF/GAF pair (kp: the NDF alone, gaf ignored). Own: a
 // family's own kernel (`name`) in its own program (`program`), launched with KernelRunner::launch.
+// `warm`: arguments with which the kernel does nothing (sizes 0, inputs and outputs empty); on a
+// CPU device prepare enqueues it so, once, so that PoCL generates its work-group function for the
+// tables' local size then, in parallel with the other builds (LaunchShape::Texels). Empty: the kernel
+// compiles at its first launch.
 struct KernelNeed {
-  enum Kernel { Hemisphere, Kp, Brdf3d, Dielectric, DielectricNodes, Own } kernel;
+  enum Kernel { Hemisphere, Kp, Own } kernel;
   int ndf, gaf;
   ProgramKey::Kind program = ProgramKey::Integrators;
   const char* name = nullptr;
+  std::vector<LaunchArg> warm = {};
 };
 
-// An argument of KernelRunner::launch: a number, floats the kernel reads, or floats it writes.
-struct LaunchArg {
-  enum Type { Int, Float, In, Out } type = Int;
-  int i = 0;
-  float f = 0;
-  const std::vector<float>* in = nullptr;
-  size_t out = 0;  // Out: how many floats
-  static LaunchArg of(int v) { return {Int, v}; }
-  static LaunchArg of(float v) { return {Float, 0, v}; }
-  static LaunchArg input(const std::vector<float>& v) { return {In, 0, 0, &v}; }
-  static LaunchArg output(size_t n) { return {Out, 0, 0, nullptr, n}; }
+// How KernelRunner::launch spreads its work-items: gx (x gy; gy = 0: a 1D range), on a CPU device
+// either in the tables' fixed local size that prepare compiles (Texels: many short work-items, a
+// texel or a point each) or in groups of one (One: long, uneven work-items, an LTC fit at ~3 ms each,
+// which groups of one balance over the cores).
+struct LaunchShape {
+  size_t gx = 1, gy = 0;
+  enum Groups { Texels, One } groups = One;
+};
+
+// What a launch's Out and OutReals arguments hold, each list in the arguments' order.
+struct LaunchOutputs {
+  std::vector<std::vector<float>> floats;
+  std::vector<std::vector<double>> reals;
 };
 
 // What the albedo's two moments are (kernels/brdf/ndf.h BrdfParams): the split-sum pair by
@@ -122,26 +174,16 @@ class KernelRunner {
   // k_p over r.
   KernelTable kp(int ndf, int n, bool nodeGrid, float rLo = 0.0f, float rHi = 1.0f);
 
-  // One slab of a 3D BRDF table (kernels/brdf3d.cl): slices z0 .. z0 + zn - 1 of the spec's table,
-  // one plane per channel, [((z - z0) * ny + y) * nx + x].
-  std::vector<std::vector<float>> brdf3dSlab(const Brdf3dSpec& spec, int z0, int zn);
-
-  // The rough dielectric (kernels/dielectric.cl): planes E_R, E_T and the bound (relative to
-  // max(1, |value|)) over mu (nx) x r (ny) at each of the given etas, [(z * ny + y) * nx + x].
-  std::vector<std::vector<float>> dielectricSlab(int ndf, int gaf, int nx, int ny, const std::vector<double>& etas,
-                                                 bool nodeGrid, float target);
-  // E_R, E_T and their bounds (absolute, each lobe's) at points (mus[k], rs[k], etas[k]): the nodes
-  // of the averages' rule (tables/dielectric_avg.h), one plane each, in the program's precision (double
-  // where the device has fp64: unrounded, so that only the averages' stored entries round).
-  std::vector<std::vector<double>> dielectricPoints(int ndf, int gaf, const std::vector<double>& mus,
-                                                    const std::vector<double>& rs, const std::vector<double>& etas,
-                                                    float target);
-
-  // A family's own kernel: `kernel` of the pair's program of kind `program` (kernels/<its .cl>), gx
-  // work-items in one dimension, its arguments in order; returns what each Out argument holds, in
-  // order. The kernel compiles at its first launch.
+  // A family's own kernel: `kernel` of the pair's program of kind `program` (kernels/<its .cl>),
+  // its work-items spread as `shape` says, its arguments in order; returns what the Out and OutReals
+  // arguments hold. The kernel compiles at its first launch unless prepare has (KernelNeed::warm).
+  LaunchOutputs launch(ProgramKey::Kind program, int ndf, int gaf, const char* kernel, const LaunchShape& shape,
+                       const std::vector<LaunchArg>& args);
+  // The same, gx work-items in groups of one: what each Out argument holds.
   std::vector<std::vector<float>> launch(ProgramKey::Kind program, int ndf, int gaf, const char* kernel, size_t gx,
-                                         const std::vector<LaunchArg>& args);
+                                         const std::vector<LaunchArg>& args) {
+    return launch(program, ndf, gaf, kernel, LaunchShape{gx, 0, LaunchShape::One}, args).floats;
+  }
 
   // Whether the device has cl_khr_fp64 (the 3D and dielectric programs then compute in double).
   bool hasDouble() const { return fp64_; }
@@ -225,6 +267,7 @@ class KernelRunner {
   void build(Slot& slot, int slotIndex, const Work& w, Compiled* done);
   void buildHere(const ProgramKey& key);
   void compileKernel(Compiled& c, const std::string& kernel);
+  void remember(const KernelNeed& need);
   std::vector<Work> plan(const std::vector<KernelNeed>& needs) const;
   int pairPrograms() const;
   bool shareFor(int newPairs) const;
@@ -245,6 +288,9 @@ class KernelRunner {
   bool cpu_ = false;
   bool fp64_ = false;     // the device has cl_khr_fp64: the 3D tables' programs compute in double
   bool planned_ = false;  // prepareAll() has run
+  // the warm arguments of the families' kernels named in prepare (KernelNeed::warm), by kernel name;
+  // written before builds start, read by the build threads
+  std::map<std::string, std::vector<LaunchArg>> warm_;
   int buildThreads_ = 0;
   Sharing sharing_ = Sharing::Auto;
   std::vector<std::unique_ptr<Slot>> slots_;  // [0]: the main context

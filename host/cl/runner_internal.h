@@ -1,6 +1,6 @@
 // Shared by host/cl/runner.cpp (building programs), host/cl/runner_launch.cpp and
-// host/cl/runner_points.cpp (running the kernels): the kernels' names, the fixed CPU local size, and the private
-// structs.
+// host/cl/runner_own.cpp (running the kernels): the integrators' kernel names, the fixed CPU local
+// size, the arguments of a family's kernel, and the private structs.
 #pragma once
 #include <CL/opencl.hpp>
 #include <algorithm>
@@ -13,9 +13,6 @@ namespace brdfbake::runner_detail {
 
 inline const char* const kHemisphere = "bake_hemisphere";
 inline const char* const kKp = "bake_kp";
-inline const char* const kBrdf3d = "bake_brdf3d";
-inline const char* const kDielectric = "bake_dielectric";
-inline const char* const kDielectricNodes = "bake_dielectric_points";
 
 // On a CPU device (PoCL) every launch uses these local sizes: PoCL generates one work-group
 // function per kernel and local size, a few tenths of a second each, so one size per kernel keeps
@@ -32,6 +29,13 @@ std::vector<T> readBack(cl::CommandQueue& q, const cl::Buffer& b, size_t n) {
   return v;
 }
 inline size_t roundUp(size_t n, size_t m) { return (n + m - 1) / m * m; }
+
+// Sets `args` (KernelRunner::launch) on k in order: In and InReals copied into buffers of `ctx`
+// (reals as double when fp64, else float; an empty or absent input as one value, so that the
+// buffer is valid), Out and OutReals as buffers of their sizes (at least one value). The buffers go
+// to *ins and *outs, which keep them alive until the launch has run (setArg keeps no reference).
+void setLaunchArgs(cl::Kernel& k, const cl::Context& ctx, const std::vector<LaunchArg>& args, bool fp64,
+                   std::vector<cl::Buffer>* ins, std::vector<cl::Buffer>* outs);
 
 // The weight arguments (moments, fresnel, fr_x, fr_y, fr_z) from index `first` on: kWeightArgs.
 constexpr int kWeightArgs = 5;

@@ -1,6 +1,6 @@
 // The integrators' launches (KernelRunner's table methods: the split sum and albedo, their nodes,
-// k_p, the diffuse albedo), the fixed CPU local size, the kept results; the point-evaluating
-// programs' launches are host/cl/runner_points.cpp, building the programs host/cl/runner.cpp.
+// k_p, the diffuse albedo), the fixed CPU local size, the kept results; the families' own kernels'
+// launches are host/cl/runner_own.cpp, building the programs host/cl/runner.cpp.
 #include <algorithm>
 #include <cmath>
 

@@ -7,6 +7,7 @@
 
 #include "cl/device.h"
 #include "cl/runner.h"
+#include "tables/dielectric/dielectric_bake.h"
 #include "brdfbake/brdfbake.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
@@ -86,7 +87,7 @@ std::vector<EnergyResult> checkEnergy(const BakeRequest& req, const EnergyOption
         res.material = ndfNames()[ndf] + "+" + gafNames()[gaf] + ", rough glass (transmission), " + fc.describe();
         for (int c = 0; c < fc.channels(); ++c) {
           double eta = fc.modelParams(c).first;
-          auto t = runner.dielectricSlab(ndf, gaf, n, n, {eta}, true, 2e-6f);
+          auto t = dielectricSlab(runner, ndf, gaf, n, n, {eta}, true, 2e-6f);
           for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
               size_t k = static_cast<size_t>(j) * n + i;

@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "cl/runner.h"
+#include "tables/brdf3d/brdf3d.h"
 #include "common/brdf_host.h"
 #include "common/errors.h"
 #include "common/format.h"
@@ -175,7 +176,7 @@ OutputFile volumeOutput(KernelRunner& runner, const VolumeJob& job, const TableI
   auto timed = [seconds, peakSlab, &runner, s, path = job.path](int z0, int zn) {
     auto t0 = std::chrono::steady_clock::now();
     runner.setProgressLabel(path);
-    auto planes = runner.brdf3dSlab(s, z0, zn);
+    auto planes = brdf3dSlab(runner, s, z0, zn);
     runner.progress("slices", z0 + zn, s.nz);
     if (seconds) *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (peakSlab) *peakSlab = std::max<uint64_t>(*peakSlab, planes.size() * planes[0].size() * sizeof(float));
@@ -321,7 +322,7 @@ std::vector<PlannedFile> volumeFormatOutputs(KernelRunner& runner, const VolumeJ
   src.fill = [&runner, s, seconds, path = job.path](int z0, int zn, std::vector<std::vector<float>>& planes) {
     auto t0 = std::chrono::steady_clock::now();
     runner.setProgressLabel(path);
-    planes = runner.brdf3dSlab(s, z0, zn);
+    planes = brdf3dSlab(runner, s, z0, zn);
     runner.progress("slices", z0 + zn, s.nz);
     if (seconds) *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (planes.size() == 1) planes = {planes[0], planes[0], planes[0]};  // R=G=B tables

@@ -135,7 +135,7 @@ class Brdf3d final : public TableFamily {
 
   std::vector<KernelNeed> kernels(const Job& job) const override {
     const VolumeJob& v = job.get<VolumeJob>();
-    return {{KernelNeed::Brdf3d, v.spec.ndf, v.spec.gaf}};
+    return {brdf3dKernel(v.spec.ndf, v.spec.gaf)};
   }
 
   void preflight(BakeContext&, const std::string& outDir, const std::vector<const Job*>& jobs) const override {
@@ -150,7 +150,7 @@ class Brdf3d final : public TableFamily {
     BakedTable t;
     t.image = volumeHeader(v);
     auto t0 = std::chrono::steady_clock::now();
-    t.volume = ctx.runner().brdf3dSlab(v.spec, 0, v.spec.nz);
+    t.volume = brdf3dSlab(ctx.runner(), v.spec, 0, v.spec.nz);
     if (t.volume.size() == 1) t.volume = {t.volume[0], t.volume[0], t.volume[0]};  // R=G=B tables
     t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     t.depth = v.spec.nz;
@@ -257,9 +257,9 @@ class Brdf3d final : public TableFamily {
         L.table = "brdf3d of " + ndfNames()[s.ndf] + "+" + gafNames()[s.gaf] + ", r " + fmtG(s.roughness) + ", " +
                   (s.param == Brdf3dParam::Angles ? "angles" : "rusinkiewicz") + ": trilinear lookups at 2048 points";
       KernelRunner& kr = ctx.runner();
-      kr.prepare(KernelNeed{KernelNeed::Brdf3d, s.ndf, s.gaf});
+      kr.prepare(brdf3dKernel(s.ndf, s.gaf));
       std::vector<std::vector<float>> planes;
-      double secs = ladder::best3([&] { planes = kr.brdf3dSlab(s, 0, s.nz); });
+      double secs = ladder::best3([&] { planes = brdf3dSlab(kr, s, 0, s.nz); });
       const auto ax = s.axes();
       std::vector<double> val, ref, est;
       const TableImage header = volumeHeader(v);
@@ -299,8 +299,8 @@ class Brdf3d final : public TableFamily {
       const VolumeJob v = planVolumes(this, r).front().get<VolumeJob>();
       const Brdf3dSpec& s = v.spec;
       KernelRunner& kr = ctx.runner();
-      kr.prepare(KernelNeed{KernelNeed::Brdf3d, s.ndf, s.gaf});
-      const std::vector<float> f = kr.brdf3dSlab(s, 0, s.nz).front();
+      kr.prepare(brdf3dKernel(s.ndf, s.gaf));
+      const std::vector<float> f = brdf3dSlab(kr, s, 0, s.nz).front();
       auto at = [&](int x, int y, int z) {
         return static_cast<double>(f[(static_cast<size_t>(z) * s.ny + y) * s.nx + x]);
       };

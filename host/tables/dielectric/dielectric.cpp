@@ -115,14 +115,14 @@ Ladder cubeLadder(BakeContext& ctx, const BakeRequest& req, const LadderBudgets&
   });
   const double refSeconds = ladder::now() - t0;
   KernelRunner& kr = ctx.runner();
-  kr.prepare(KernelNeed{KernelNeed::Dielectric, ndf, gaf});
+  kr.prepare(dielectricKernel(ndf, gaf));
   std::vector<float> targets;
   for (int level : budgets.levels) targets.push_back(static_cast<float>(1e-4 * std::pow(10.0, -level)));
   targets.push_back(kDielectricTarget);
-  kr.dielectricSlab(ndf, gaf, n, n, etas, false, targets.front());  // warm
+  dielectricSlab(kr, ndf, gaf, n, n, etas, false, targets.front());  // warm
   for (size_t i = 0; i < targets.size(); ++i) {
     std::vector<std::vector<float>> p;
-    double secs = ladder::best3([&] { p = kr.dielectricSlab(ndf, gaf, n, n, etas, false, targets[i]); });
+    double secs = ladder::best3([&] { p = dielectricSlab(kr, ndf, gaf, n, n, etas, false, targets[i]); });
     std::vector<double> v(texels * 2), e(texels);
     for (size_t k = 0; k < texels; ++k) {
       v[2 * k] = p[0][k];
@@ -184,7 +184,7 @@ Ladder avgLadder(BakeContext& ctx, const BakeRequest& req, const LadderBudgets& 
   });
   const double refSeconds = ladder::now() - t0;
   KernelRunner& kr = ctx.runner();
-  kr.prepare(KernelNeed{KernelNeed::DielectricNodes, ndf, gaf});
+  kr.prepare(dielectricPointsKernel(ndf, gaf));
   std::vector<std::pair<double, float>> targets;  // entry target, node target
   for (int level : budgets.levels) {
     double t = 1e-4 * std::pow(10.0, -level);
@@ -236,7 +236,7 @@ class Dielectric final : public TableFamily {
 
   std::vector<KernelNeed> kernels(const Job& job) const override {
     const DielectricJob& d = job.get<DielectricJob>();
-    return {{d.avg ? KernelNeed::DielectricNodes : KernelNeed::Dielectric, d.ndf, d.gaf}};
+    return {d.avg ? dielectricPointsKernel(d.ndf, d.gaf) : dielectricKernel(d.ndf, d.gaf)};
   }
 
   BakedTable compute(BakeContext& ctx, const Job& job) const override {
@@ -297,7 +297,7 @@ class Dielectric final : public TableFamily {
   void stress(BakeContext& ctx, std::vector<StressPoint>& out) const override {
     KernelRunner& kr = ctx.runner();
     const int ndf = NDF_GGX, gaf = GAF_SMITH_CORRELATED;
-    kr.prepare(KernelNeed{KernelNeed::DielectricNodes, ndf, gaf});
+    kr.prepare(dielectricPointsKernel(ndf, gaf));
     struct Case {
       double mu, r, eta;
       const char* sweep;
@@ -308,7 +308,7 @@ class Dielectric final : public TableFamily {
                           {0.5, 1.0, 2.5, "dielectric dense, rough"}};
     std::vector<double> mus, rs, etas;
     for (const Case& c : cases) mus.push_back(c.mu), rs.push_back(c.r), etas.push_back(c.eta);
-    std::vector<std::vector<double>> p = kr.dielectricPoints(ndf, gaf, mus, rs, etas, kDielectricAvgNodeTarget);
+    std::vector<std::vector<double>> p = dielectricPoints(kr, ndf, gaf, mus, rs, etas, kDielectricAvgNodeTarget);
     for (size_t k = 0; k < mus.size(); ++k) {
       reference::DielectricAlbedo a = reference::dielectricAlbedo(ndf, gaf, mus[k], rs[k], etas[k]);
       const bool nearOne = std::fabs(etas[k] - 1) < 1e-3;

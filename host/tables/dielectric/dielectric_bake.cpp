@@ -71,9 +71,75 @@ std::vector<double> dielectricEtas(const DielectricJob& job, int z0, int n) {
   return etas;
 }
 
+namespace {
+const char* const kSlabKernel = "bake_dielectric";
+const char* const kPointsKernel = "bake_dielectric_points";
+}  // namespace
+
+KernelNeed dielectricKernel(int ndf, int gaf) {
+  using A = LaunchArg;
+  // (out, etas, nx, ny, zn, grid, target): zn = 0, nothing to do
+  return {KernelNeed::Own,
+          ndf,
+          gaf,
+          ProgramKey::Dielectric,
+          kSlabKernel,
+          {A::output(0), A::noInput(A::InReals), A::of(0), A::of(0), A::of(0), A::of(0), A::of(0.0f)}};
+}
+
+KernelNeed dielectricPointsKernel(int ndf, int gaf) {
+  using A = LaunchArg;
+  // (out, mus, rs, etas, n, target): n = 0, nothing to do
+  return {KernelNeed::Own,
+          ndf,
+          gaf,
+          ProgramKey::Dielectric,
+          kPointsKernel,
+          {A::outputReals(0), A::noInput(A::InReals), A::noInput(A::InReals), A::noInput(A::InReals), A::of(0),
+           A::of(0.0f)}};
+}
+
+std::vector<std::vector<float>> dielectricSlab(KernelRunner& runner, int ndf, int gaf, int nx, int ny,
+                                               const std::vector<double>& etas, bool nodeGrid, float target) {
+  const int zn = static_cast<int>(etas.size());
+  const size_t plane = static_cast<size_t>(nx) * ny * zn;
+  using A = LaunchArg;
+  std::vector<float> all =
+      runner
+          .launch(ProgramKey::Dielectric, ndf, gaf, kSlabKernel,
+                  LaunchShape{static_cast<size_t>(nx), static_cast<size_t>(ny) * zn, LaunchShape::Texels},
+                  {A::output(plane * 3), A::inputReals(etas), A::of(nx), A::of(ny), A::of(zn), A::of(nodeGrid ? 1 : 0),
+                   A::of(target)})
+          .floats.at(0);
+  std::vector<std::vector<float>> planes(3);
+  for (int ch = 0; ch < 3; ++ch)
+    planes[ch].assign(all.begin() + static_cast<std::ptrdiff_t>(ch * plane),
+                      all.begin() + static_cast<std::ptrdiff_t>((ch + 1) * plane));
+  return planes;
+}
+
+std::vector<std::vector<double>> dielectricPoints(KernelRunner& runner, int ndf, int gaf,
+                                                  const std::vector<double>& mus, const std::vector<double>& rs,
+                                                  const std::vector<double>& etas, float target) {
+  const size_t n = mus.size();
+  std::vector<std::vector<double>> planes(4);
+  if (n == 0) return planes;
+  using A = LaunchArg;
+  std::vector<double> all =
+      runner
+          .launch(ProgramKey::Dielectric, ndf, gaf, kPointsKernel, LaunchShape{n, 0, LaunchShape::Texels},
+                  {A::outputReals(n * 4), A::inputReals(mus), A::inputReals(rs), A::inputReals(etas),
+                   A::of(static_cast<int>(n)), A::of(target)})
+          .reals.at(0);
+  for (size_t ch = 0; ch < 4; ++ch)
+    planes[ch].assign(all.begin() + static_cast<std::ptrdiff_t>(ch * n),
+                      all.begin() + static_cast<std::ptrdiff_t>((ch + 1) * n));
+  return planes;
+}
+
 DielectricEval dielectricDeviceEval(KernelRunner& runner, int ndf, int gaf, float target) {
   return [&runner, ndf, gaf, target](const DielectricPoints& p) {
-    auto pl = runner.dielectricPoints(ndf, gaf, p.mu, p.r, p.eta, target);
+    auto pl = dielectricPoints(runner, ndf, gaf, p.mu, p.r, p.eta, target);
     return DielectricValues{pl[0], pl[1], pl[2], pl[3]};
   };
 }
@@ -116,8 +182,8 @@ DielectricTable computeDielectric(KernelRunner& runner, const DielectricJob& job
     out.cube.assign(3, {});
     for (int z0 = 0; z0 < job.nz; z0 += job.cols) {
       int zn = std::min(job.cols, job.nz - z0);
-      auto p = runner.dielectricSlab(job.ndf, job.gaf, job.nx, job.ny, dielectricEtas(job, z0, zn), job.nodeGrid,
-                                     kDielectricTarget);
+      auto p = dielectricSlab(runner, job.ndf, job.gaf, job.nx, job.ny, dielectricEtas(job, z0, zn), job.nodeGrid,
+                              kDielectricTarget);
       runner.progress("eta slices", z0 + zn, job.nz);
       out.cube[0].insert(out.cube[0].end(), p[0].begin(), p[0].end());
       out.cube[1].insert(out.cube[1].end(), p[1].begin(), p[1].end());

@@ -7,11 +7,10 @@
 #include "tables/dielectric_avg.h"
 #include "formats/output_set.h"
 #include "formats/exr/table_file.h"
+#include "cl/runner.h"
 #include "tables/job.h"
 
 namespace brdfbake {
-
-class KernelRunner;
 
 // The eta axis's coordinate and back: s = (eta - 1)/(eta + 1) = sign(eta - 1) sqrt(F0), in (-1, 1).
 double dielectricCoord(double eta);
@@ -25,7 +24,22 @@ std::vector<double> dielectricEtas(const DielectricJob& job, int z0, int n);
 // float table claims about 2e-7.
 constexpr float kDielectricTarget = 5e-8f;
 
-// The averages' rule's E(mu) on the device (KernelRunner::dielectricPoints) with its nodes to
+// The rough dielectric's kernels (kernels/dielectric.cl) for the pair, to prepare: the 3D table's
+// slabs (bake_dielectric) and the averages' points (bake_dielectric_points).
+KernelNeed dielectricKernel(int ndf, int gaf);
+KernelNeed dielectricPointsKernel(int ndf, int gaf);
+// Planes E_R, E_T and the bound (relative to max(1, |value|)) over mu (nx) x r (ny) at each of the
+// given etas, [(z * ny + y) * nx + x]; each texel's quadrature aims at `target` per lobe.
+std::vector<std::vector<float>> dielectricSlab(KernelRunner& runner, int ndf, int gaf, int nx, int ny,
+                                               const std::vector<double>& etas, bool nodeGrid, float target);
+// E_R, E_T and their bounds (absolute, each lobe's) at points (mus[k], rs[k], etas[k]): the nodes
+// of the averages' rule (tables/dielectric_avg.h), one plane each, in the program's precision
+// (double where the device has fp64: unrounded, so that only the averages' stored entries round).
+std::vector<std::vector<double>> dielectricPoints(KernelRunner& runner, int ndf, int gaf,
+                                                  const std::vector<double>& mus, const std::vector<double>& rs,
+                                                  const std::vector<double>& etas, float target);
+
+// The averages' rule's E(mu) on the device (dielectricPoints) with its nodes to
 // `target` per lobe: what the bake uses (kDielectricAvgNodeTarget), and tests and the bench tighter.
 DielectricEval dielectricDeviceEval(KernelRunner& runner, int ndf, int gaf, float target);
 

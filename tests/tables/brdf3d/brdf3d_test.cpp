@@ -58,7 +58,7 @@ struct Agreement {
   double got = 0, want = 0;
 };
 Agreement compare(const Brdf3dSpec& s) {
-  auto planes = runner().brdf3dSlab(s, 0, s.nz);
+  auto planes = brdf3dSlab(runner(), s, 0, s.nz);
   Agreement a;
   double peak = 0;
   std::vector<double> want(planes[0].size());
@@ -121,7 +121,7 @@ TEST(Brdf3d, WholeMaterialChannelsMatchHost) {
   s.rho = {0.8, 0.5, 0.2};
   s.timesCos = true;
   ASSERT_EQ(s.channels(), 3);
-  auto planes = runner().brdf3dSlab(s, 0, s.nz);
+  auto planes = brdf3dSlab(runner(), s, 0, s.nz);
   ASSERT_EQ(planes.size(), 3u);
   for (int c = 0; c < 3; ++c)
     for (int z = 0; z < s.nz; ++z)
@@ -142,7 +142,7 @@ TEST(Brdf3d, ReciprocityAndPhiSymmetry) {
   for (int ndf = 0; ndf < NDF_COUNT; ++ndf) {
     if (!pairSupported(ndf, GAF_SMITH_CORRELATED)) continue;
     Brdf3dSpec a = spec(ndf, GAF_SMITH_CORRELATED, Brdf3dParam::Angles, false, Brdf3dGrid::TexelCenter, 14, 0.3);
-    auto p = runner().brdf3dSlab(a, 0, a.nz)[0];
+    auto p = brdf3dSlab(runner(), a, 0, a.nz)[0];
     for (int z = 0; z < a.nz; ++z)
       for (int y = 0; y < a.ny; ++y)
         for (int x = 0; x < y; ++x) {
@@ -151,7 +151,7 @@ TEST(Brdf3d, ReciprocityAndPhiSymmetry) {
           ASSERT_NEAR(u, v, 1e-6 * std::max(1.0f, std::fabs(u))) << ndfNames()[ndf] << " " << x << " " << y << " " << z;
         }
     Brdf3dSpec r = spec(ndf, GAF_SMITH_CORRELATED, Brdf3dParam::Rusinkiewicz, true, Brdf3dGrid::TexelCenter, 14, 0.3);
-    auto q = runner().brdf3dSlab(r, 0, r.nz)[0];
+    auto q = brdf3dSlab(runner(), r, 0, r.nz)[0];
     for (int z = 0; z < r.nz; ++z)
       for (int y = 0; y < r.ny; ++y)
         for (int x = 0; x < r.nx; ++x) {
@@ -208,7 +208,7 @@ TEST(Brdf3d, AtlasRoundTrip) {
   EXPECT_EQ(s.nz, 7);
   EXPECT_TRUE(s.thetaHSqrt);
   EXPECT_DOUBLE_EQ(s.roughness, 0.35f);
-  auto want = runner().brdf3dSlab(s, 0, s.nz)[0];
+  auto want = brdf3dSlab(runner(), s, 0, s.nz)[0];
   auto got = volumeFromAtlas(img, s, cols);
   ASSERT_EQ(got[0].size(), want.size());
   for (size_t t = 0; t < want.size(); ++t) ASSERT_EQ(got[0][t], want[t]) << t;

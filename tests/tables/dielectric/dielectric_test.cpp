@@ -37,7 +37,7 @@ const int kPairs[4][2] = {{NDF_GGX, GAF_SMITH},
 
 // A node grid over mu and r (n x n: mu, r = 0, 1/(n-1), ..., 1) at the given etas: planes E_R, E_T, bound.
 std::vector<std::vector<float>> bake(int ndf, int gaf, int n, const std::vector<double>& etas) {
-  return runner().dielectricSlab(ndf, gaf, n, n, etas, true, kDielectricTarget);
+  return dielectricSlab(runner(), ndf, gaf, n, n, etas, true, kDielectricTarget);
 }
 size_t at(int n, int z, int y, int x) { return (static_cast<size_t>(z) * n + y) * n + x; }
 
@@ -72,7 +72,7 @@ TEST(Dielectric, KernelMatchesReference) {
   // here (a cell of brdfbake-bench --dielectric over its bound 7.6e-7).
   {
     double mu = 15.5 / 32, r = 29.5 / 32, eta = 2.13;  // the device run tight (bound ~5e-10)
-    auto t = runner().dielectricPoints(NDF_GGX, GAF_SMITH_CORRELATED, {mu}, {r}, {eta}, 1e-9f);
+    auto t = dielectricPoints(runner(), NDF_GGX, GAF_SMITH_CORRELATED, {mu}, {r}, {eta}, 1e-9f);
     auto ref = reference::dielectricAlbedo(NDF_GGX, GAF_SMITH_CORRELATED, mu, r, eta);
     double er = rel(t[0][0], ref.r), et = rel(t[1][0], ref.t);
     EXPECT_LE(std::max(er, et), t[2][0] + t[3][0] + 1e-7) << "E_T " << t[1][0] << " reference " << ref.t;
@@ -82,7 +82,7 @@ TEST(Dielectric, KernelMatchesReference) {
   // here (brdfbake-bench --dielectric; Monte Carlo at 2^25 samples sides with the table).
   {
     double mu = 1.5 / 32, r = 15.5 / 32, eta = 0.44051;
-    auto t = runner().dielectricPoints(NDF_GGX, GAF_SMITH_CORRELATED, {mu}, {r}, {eta}, kDielectricTarget);
+    auto t = dielectricPoints(runner(), NDF_GGX, GAF_SMITH_CORRELATED, {mu}, {r}, {eta}, kDielectricTarget);
     auto ref = reference::dielectricAlbedo(NDF_GGX, GAF_SMITH_CORRELATED, mu, r, eta);
     double er = rel(t[0][0], ref.r), et = rel(t[1][0], ref.t);
     worst = std::max({worst, er, et});
