@@ -2,7 +2,10 @@
  * derivation): int_0^phimax H dphi at fixed theta_h, by the trapezoid rule on whole circles or
  * GK15 panels on arcs, split at the GAF's and Fresnel's kinks and graded towards the horizon.
  * Needs integrand.h and quadrature.h; hemisphere.h, which calls hemi_phi, comes after it, and
- * azimuth_lanes.h holds the same rules transposed for the device. */
+ * azimuth_lanes.h holds the same rules transposed for the device. The rules here and in
+ * hemisphere.h take the texel's fixed view as arguments (ndf, gaf, p, mu, s), not as one struct:
+ * a struct of them, passed by value and read into locals, measured slower on PoCL
+ * (docs/performance.md, "Kernel choices"). */
 /* Once per pass (compat.h "Passes"). */
 #if defined(BRDF_SECOND_PASS) ? !defined(BRDF_AZIMUTH_H_2) : !defined(BRDF_AZIMUTH_H)
 #ifdef BRDF_SECOND_PASS
