@@ -204,7 +204,8 @@ TEST(MuAxis, InterpolationEstimateHoldsOnBothAxes) {
   double band[2][2][4] = {};  // [node][sqrt][region]
   for (bool node : {false, true})
     for (bool sq : {false, true}) {
-      TableJob job = tableJob(TableKind::SplitSum, NDF_GGX, GAF_SMITH_CORRELATED, n, n, node, false);
+      TableJob job =
+          TableJob::of(TableKind::SplitSum).forPair(NDF_GGX, GAF_SMITH_CORRELATED).texels(n, n).onNodeGrid(node);
       job.muSqrt = sq;
       double secs = 0;
       TableImage t = computeTable(k, job, &secs);

@@ -46,20 +46,33 @@ struct TableJob : JobSpec {
   std::string layoutName = {};  // --layout NAME, or a name for --axes/--flip/--channels; "" as baked
   bool muSqrt = false;          // splitsum, albedo: x holds u = sqrt(mu), texel i at mu = u_i^2 (--mu-axis sqrt)
   std::string merl = {};        // a measured material's MERL file (tables/measured/measured.cpp), or ""
-};
 
-// A table of `kind` for the pair (ndf, gaf), width x height texels, the other fields at their defaults.
-inline TableJob tableJob(TableKind kind, int ndf, int gaf, int width, int height, bool nodeGrid, bool half) {
-  TableJob j;
-  j.kind = kind;
-  j.ndf = ndf;
-  j.gaf = gaf;
-  j.width = width;
-  j.height = height;
-  j.nodeGrid = nodeGrid;
-  j.half = half;
-  return j;
-}
+  // A job set up by name, the fields not named at their defaults:
+  //   TableJob::of(kind).forPair(ndf, gaf).texels(n, n).onNodeGrid(grid).storingHalf(half)
+  static TableJob of(TableKind k) {
+    TableJob j;
+    j.kind = k;
+    return j;
+  }
+  TableJob& forPair(int n, int g) {
+    ndf = n;
+    gaf = g;
+    return *this;
+  }
+  TableJob& texels(int w, int h) {
+    width = w;
+    height = h;
+    return *this;
+  }
+  TableJob& onNodeGrid(bool on) {
+    nodeGrid = on;
+    return *this;
+  }
+  TableJob& storingHalf(bool on) {
+    half = on;
+    return *this;
+  }
+};
 
 // A 3D table (--table brdf3d): one per NDF/GAF pair, baked and written slab by slab.
 struct VolumeJob : JobSpec {

@@ -43,7 +43,7 @@ class Ashikhmin final : public TableFamily {
                                   "without --diffuse");
     std::vector<Job> jobs;
     for (int t = 0; t < kAsTextures; ++t) {
-      TableJob job = tableJob(TableKind::AshikhminShirley, -1, -1, n, n, false, storesHalf(req));
+      TableJob job = TableJob::of(TableKind::AshikhminShirley).texels(n, n).storingHalf(storesHalf(req));
       job.texture = t;
       job.path = req.outDir + "/" + ashikhminFileName(t);
       applyFormats(req, job);

@@ -42,7 +42,8 @@ class FresnelAvg final : public TableFamily {
                   "brdf.fresnel.avg)");
     int n = req.size ? *req.size : brdfbake::defaultSize(TableKind::FresnelAvg);
     if (n < 2) throw Error(kExitUsage, "--size must be at least 2 for fresnel-avg, got " + std::to_string(n));
-    TableJob job = tableJob(TableKind::FresnelAvg, -1, -1, n, 1, req.nodeGrid, storesHalf(req));
+    TableJob job =
+        TableJob::of(TableKind::FresnelAvg).texels(n, 1).onNodeGrid(req.nodeGrid).storingHalf(storesHalf(req));
     job.fresnel = fresnel;
     job.path = req.outDir + "/fresnel-avg_" + fresnelNames()[job.fresnel.model] + ".exr";
     applyFormats(req, job);

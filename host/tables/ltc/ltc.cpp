@@ -181,8 +181,8 @@ class LtcFamily final : public TableFamily {
           "quadrature's (1 - int min(p, D), adaptive, in double; host/tables/ltc/ltc_reference.cpp)";
     };
     auto tableJobOf = [&](const std::string& path) {
-      TableJob tj = tableJob(TableKind::Ltc, j.lobe.isDiffuse() ? -1 : j.lobe.ndf, j.lobe.isDiffuse() ? -1 : j.lobe.gaf,
-                             j.n, j.n, true, j.half);
+      TableJob tj = TableJob::of(TableKind::Ltc).texels(j.n, j.n).onNodeGrid(true).storingHalf(j.half);
+      if (!j.lobe.isDiffuse()) tj.forPair(j.lobe.ndf, j.lobe.gaf);
       tj.diffuse = j.lobe.diffuse;
       tj.path = path;
       return tj;

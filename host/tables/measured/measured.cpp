@@ -49,7 +49,7 @@ class Measured final : public TableFamily {
       int n = kind == TableKind::AlbedoAvg ? 1 : req.size ? *req.size : brdfbake::defaultSize(kind);
       if (req.nodeGrid && kind != TableKind::AlbedoAvg && n < 2)
         throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
-      TableJob job = tableJob(kind, -1, -1, n, 1, req.nodeGrid, storesHalf(req));
+      TableJob job = TableJob::of(kind).texels(n, 1).onNodeGrid(req.nodeGrid).storingHalf(storesHalf(req));
       job.path = req.outDir + "/" + tableName(kind) + "_merl-" + merlMaterialName(req.merl) + ".exr";
       job.merl = req.merl;
       applyFormats(req, job);

@@ -275,7 +275,8 @@ class Microfacet final : public TableFamily {
       if (asks(req, TableKind::Albedo)) {
         int n = req.size ? *req.size : defaultSize(TableKind::Albedo);
         if (req.nodeGrid && n < 2) throw Error(kExitUsage, "--size: the node grid needs at least 2 samples per axis");
-        TableJob job = tableJob(TableKind::Albedo, -1, -1, n, n, req.nodeGrid, storesHalf(req));
+        TableJob job =
+            TableJob::of(TableKind::Albedo).texels(n, n).onNodeGrid(req.nodeGrid).storingHalf(storesHalf(req));
         job.diffuse = req.diffuse;
         jobs.push_back(add(req, job));
       }
@@ -301,7 +302,11 @@ class Microfacet final : public TableFamily {
                             (gaf == GAF_NEUBELT ? "at the corner r = 0: E(0, r) grows like 1/(r sqrt(2 pi))"
                                                 : "its fitted Lambda is finite at grazing, so G/(n.o) is not") +
                             "), the grid's first column; use --grid texel-center for " + tableName(kind));
-          TableJob job = tableJob(kind, ndf, gaf, n, twoD ? n : 1, req.nodeGrid, storesHalf(req));
+          TableJob job = TableJob::of(kind)
+                             .forPair(ndf, gaf)
+                             .texels(n, twoD ? n : 1)
+                             .onNodeGrid(req.nodeGrid)
+                             .storingHalf(storesHalf(req));
           job.fresnel = fresnelOf(req);
           job.diffuse = kind == TableKind::SplitSum ? req.diffuse : -1;
           job.muSqrt = twoD && req.muSqrt.value_or(false);  // validated: cli/layout_args.cpp
@@ -380,7 +385,7 @@ class Microfacet final : public TableFamily {
                     "--preset gltf --grid node: the sheen tables are infinite at mu = 0 (charlie-smith's "
                     "Lambda is finite at grazing; neubelt's corner mu = r = 0), the node grid's first column; "
                     "the preset bakes texel centres, which texture(lut, vec2(NdotV, roughness)) samples");
-      TableJob job = tableJob(kind, ndf, gaf, n, n, false, storesHalf(req));
+      TableJob job = TableJob::of(kind).forPair(ndf, gaf).texels(n, n).storingHalf(storesHalf(req));
       jobs.push_back(add(req, job));
     }
     return jobs;
