@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -262,4 +263,91 @@ TEST(Docs, ShownCommandsPrintWhatThePagesShow) {
   }
   EXPECT_GE(shown, 8);
   std::printf("%d shown commands, %d shown lines checked\n", shown, lines);
+}
+
+namespace {
+
+// The n-th number (1-based) in `text` at or after `from` (as a command prints figures: "8.20e-07",
+// "0.0159", "2592"; "128x128" is two), or NaN when there are fewer.
+double numberAfter(const std::string& text, size_t from, int n) {
+  static const std::regex number("[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?");
+  const std::string rest = text.substr(from);
+  int k = 0;
+  for (std::sregex_iterator it(rest.begin(), rest.end(), number), end; it != end; ++it)
+    if (++k == n) return std::strtod(it->str().c_str(), nullptr);
+  return std::nan("");
+}
+
+// Half a unit in the last digit a figure is written with ("1.2e-7": 5e-9; "31.04": 0.005).
+double halfUnit(const std::string& figure) {
+  const size_t e = figure.find_first_of("eE");
+  const std::string mantissa = figure.substr(0, e);
+  const size_t dot = mantissa.find('.');
+  const int decimals = dot == std::string::npos ? 0 : static_cast<int>(mantissa.size() - dot - 1);
+  const int exponent = e == std::string::npos ? 0 : std::atoi(figure.c_str() + e + 1);
+  return 0.5 * std::pow(10.0, exponent - decimals);
+}
+
+}  // namespace
+
+// A figure the prose of a page in docs/ quotes from a command carries that command in a comment
+// after it (invisible where the page is read):
+//   <!-- figure 1.2e-7 after "the bake's rule (device, float)" #3 from: brdfbake convergence ... -->
+// The figure stands, as written, in the lines above the comment back to the paragraph's start, and
+// the command, run from a directory holding what the pages name (as the shown commands are), prints
+// it: on a line of its output (standard output and error) the #N-th number after the words (the
+// first without #N) is the figure, to the digits it is written with and within 2% (the figures
+// rounding may move between CPUs' vector widths). "; brdfbake " runs several commands in turn, the
+// last one's output checked. So prose that drifts from its comment, or a command whose output
+// drifts from both, fails here.
+TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
+  const fs::path d = freshDir("readme", "figures");
+  fs::create_directory_symlink(fs::path(BRDFBAKE_SOURCE_DIR) / "examples", d / "examples");
+  ASSERT_EQ(run("", d.string()).code, 0);
+  const std::regex note("<!-- figure (\\S+) after \"([^\"]+)\"(?: #(\\d+))? from: brdfbake (.*) -->");
+  int figures = 0;
+  std::map<std::string, CmdResult> ran;  // a command quoted for several figures runs once
+  for (const auto& e : fs::directory_iterator(fs::path(BRDFBAKE_SOURCE_DIR) / "docs")) {
+    if (e.path().extension() != ".md") continue;
+    std::istringstream in(bytes(e.path()));
+    std::vector<std::string> page;
+    for (std::string l; std::getline(in, l);) page.push_back(l);
+    for (size_t i = 0; i < page.size(); ++i) {
+      std::smatch m;
+      if (!std::regex_search(page[i], m, note)) continue;
+      ++figures;
+      const std::string figure = m[1].str(), words = m[2].str(), args = m[4].str();
+      const int nth = m[3].matched ? std::atoi(m[3].str().c_str()) : 1;
+      const std::string where = e.path().filename().string() + ":" + std::to_string(i + 1) + ": " + figure;
+      // the prose above quotes it as written
+      bool quoted = false;
+      for (size_t k = i; k-- > 0 && !page[k].empty();) quoted |= page[k].find(figure) != std::string::npos;
+      EXPECT_TRUE(quoted) << where << ": not in the paragraph above its comment";
+      if (!ran.count(args)) {
+        const std::string then = "; brdfbake ";
+        CmdResult r{0, ""};
+        for (size_t at = 0;;) {
+          const size_t next = args.find(then, at);
+          r = run(args.substr(at, next == std::string::npos ? std::string::npos : next - at), d.string());
+          if (r.code != 0 || next == std::string::npos) break;
+          at = next + then.size();
+        }
+        ran[args] = r;
+      }
+      const CmdResult& r = ran[args];
+      EXPECT_EQ(r.code, 0) << where << ": brdfbake " << args << "\n" << r.out;
+      const double want = std::strtod(figure.c_str(), nullptr), tolerance = halfUnit(figure) + 0.02 * std::fabs(want);
+      bool printed = false;
+      std::istringstream os(r.out);
+      for (std::string line; std::getline(os, line) && !printed;) {
+        const size_t at = line.find(words);
+        if (at != std::string::npos) printed = std::fabs(numberAfter(line, at + words.size(), nth) - want) <= tolerance;
+      }
+      EXPECT_TRUE(printed) << where << ": brdfbake " << args << " prints it nowhere as number " << nth << " after \""
+                           << words << "\"\n"
+                           << r.out.substr(0, 3000);
+    }
+  }
+  EXPECT_GE(figures, 20);
+  std::printf("%d quoted figures checked against their commands\n", figures);
 }

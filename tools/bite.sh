@@ -104,6 +104,10 @@ mutation() {
                      '  return detail::adapt(graded' "Fresnel.AverageFresnelClosedFormsAndQuadrature" ;;
     glass-reference-outer) set -- "$1" host/reference/dielectric_reference.cpp 'br[k + 1], 1e-9, 14, 1e-9);' \
                              'br[k + 1], 1e-8, 10, 1e-8);' "CliEvidence.StressIsCleanAndWritesItsPage" ;;
+    doc-quoted-figure) set -- "$1" docs/convergence.md '0.42 at 8, 16 and 32 texels per axis' \
+                         '0.24 at 8, 16 and 32 texels per axis' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
+    doc-figure-note) set -- "$1" docs/convergence.md '<!-- figure 0.85 after "16 texels per axis" #3' \
+                       '<!-- figure 0.97 after "16 texels per axis" #3' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
     *) return 64 ;;
   esac
   run_one "$@"
@@ -115,7 +119,8 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        driver-guards exr-header-sizes kind-twice scene-size-keys library-holds-a-client
        ltc-polygon-transposed ltc-distance-halved ltc-distance-in-float ltc-variance-one-pass ltc-claim-without-tenth
        ltc-e-claim-without-float avg-kink-breaks glass-reference-kink
-       favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset"
+       favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset
+       doc-quoted-figure doc-figure-note"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"

@@ -250,11 +250,25 @@ TEST(FresnelEdge, AverageAlbedoAtTheStiffCorner) {
 // where the kink's float term is sized on the pair with the largest rounding and reaches 8.4 times
 // max(error, float floor) on pairs whose rounding cancels more (docs/accuracy.md, "The whole sweep,
 // and the edge it found"): 9 there.
-// BRDFBAKE_SWEEP_PAIRS=NDF+GAF,... runs those pairs alone (a slice to rerun after a change);
+// BRDFBAKE_SWEEP_PAIRS=NDF+GAF,... runs those pairs alone (a slice to rerun after a change),
+// BRDFBAKE_SWEEP_EDGES=NAME,... the edges whose names contain one of those words ("eta=0.2"), and
+// BRDFBAKE_SWEEP_SIZES=N,... those table sizes;
 // BRDFBAKE_SWEEP_TEXELS=1 prints every corner texel's A, B, E, error and claim (in u = 2^-24).
 TEST(FresnelEdge, DISABLED_EveryPairEverySize) {
   const char* only = std::getenv("BRDFBAKE_SWEEP_PAIRS");
   const std::string pairs = only ? "," + std::string(only) + "," : "";
+  auto listed = [](const char* var, const std::string& item, bool contains) {
+    const char* v = std::getenv(var);
+    if (!v) return true;
+    std::string list = v;
+    for (size_t at = 0; at <= list.size();) {
+      const size_t end = std::min(list.find(',', at), list.size());
+      const std::string word = list.substr(at, end - at);
+      if (!word.empty() && (contains ? item.find(word) != std::string::npos : item == word)) return true;
+      at = end + 1;
+    }
+    return false;
+  };
   for (int ndf : {NDF_GGX, NDF_BECKMANN, NDF_BLINN_PHONG, NDF_GAUSSIAN})
     for (int gaf = 0; gaf < static_cast<int>(gafNames().size()); ++gaf) {
       if (!pairSupported(ndf, gaf)) continue;
@@ -262,6 +276,8 @@ TEST(FresnelEdge, DISABLED_EveryPairEverySize) {
       const bool defaultPair = ndf == NDF_GGX && gaf == GAF_SMITH_CORRELATED;
       for (const Edge& e : edges())
         for (int n : {32, 64, 128, 256}) {
+          if (!listed("BRDFBAKE_SWEEP_EDGES", e.name, true) || !listed("BRDFBAKE_SWEEP_SIZES", std::to_string(n), false))
+            continue;
           if (n == 256 && defaultPair) expectBlocksAreTheTable(ndf, gaf, weightOf(e), n);
           Worst w = checkTable(ndf, gaf, e, n, n >= 128 && e.name == "dielectric eta=0.2" ? 9 : 4, n < 256);
           std::printf("%s+%s %-30s %3d^2: largest error/claim %.2f, claim/max(error, floor) %.2f\n",
