@@ -304,7 +304,8 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
   const fs::path d = freshDir("readme", "figures");
   fs::create_directory_symlink(fs::path(BRDFBAKE_SOURCE_DIR) / "examples", d / "examples");
   ASSERT_EQ(run("", d.string()).code, 0);
-  const std::regex note("<!-- figure (\\S+) after \"([^\"]+)\"(?: #(\\d+))? from: brdfbake (.*) -->");
+  // at most three spaces in (a list item's); four or more make it code, an example of the form
+  const std::regex note("^ {0,3}<!-- figure (\\S+) after \"([^\"]+)\"(?: #(\\d+))? from: brdfbake (.*) -->");
   int figures = 0;
   std::map<std::string, CmdResult> ran;  // a command quoted for several figures runs once
   for (const auto& e : fs::directory_iterator(fs::path(BRDFBAKE_SOURCE_DIR) / "docs")) {
