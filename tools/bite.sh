@@ -108,6 +108,8 @@ mutation() {
                          '0.24 at 8, 16 and 32 texels per axis' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
     doc-figure-note) set -- "$1" docs/convergence.md '<!-- figure 0.85 after "16 texels per axis" #3' \
                        '<!-- figure 0.97 after "16 texels per axis" #3' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
+    doc-figure-form) set -- "$1" docs/convergence.md '<!-- figure 0.85 after "16 texels per axis" #3 from: brdfbake' \
+                       '<!-- figure 0.85 after "16 texels per axis" #3 from brdfbake' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
     *) return 64 ;;
   esac
   run_one "$@"
@@ -120,7 +122,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        ltc-polygon-transposed ltc-distance-halved ltc-distance-in-float ltc-variance-one-pass ltc-claim-without-tenth
        ltc-e-claim-without-float avg-kink-breaks glass-reference-kink
        favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset
-       doc-quoted-figure doc-figure-note"
+       doc-quoted-figure doc-figure-note doc-figure-form"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
