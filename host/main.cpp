@@ -128,6 +128,10 @@ int runCommand(Command& cmd) {
         if (!cmd.render.cacheDir.empty()) usePoclCache(cmd.render.cacheDir);
         return runRender(cmd.render);
       case Command::Kind::Bake: {
+        if (cmd.dryRun) {
+          std::cout << formatPlan(makePlan(cmd.bake));
+          return kExitOk;
+        }
         if (!cmd.bake.cacheDir.empty()) usePoclCache(cmd.bake.cacheDir);
         std::shared_ptr<ConsoleObserver> console = consoleObserver(cmd.timings, cmd.quiet, cmd.progress);
         cmd.bake.observer = console;

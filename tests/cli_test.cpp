@@ -361,3 +361,41 @@ TEST(Cli, InfoHelpVersionDevices) {
 }
 
 }  // namespace
+
+// --dry-run checks a bake's options as the bake does and prints what it would write: each table's
+// size, texels, estimated seconds, whether its file is new or would be replaced, and the file (both
+// of an LTC's); it computes nothing and creates nothing, -o's directory included. A request the
+// bake refuses is refused the same way (exit 64).
+TEST(Cli, DryRunListsWhatABakeWouldWriteAndWritesNothing) {
+  const fs::path d = freshDir("cli", "dryrun");
+  CmdResult r = run("--dry-run -o '" + (d / "tables").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_FALSE(fs::exists(d / "tables"));
+  EXPECT_NE(r.out.find("dry run: 4 table(s) into " + (d / "tables").string() + "/, about "), std::string::npos)
+      << r.out;
+  for (const char* f : {"splitsum_ggx_smith-correlated.exr", "albedo_ggx_smith-correlated.exr",
+                        "albedo-avg_ggx_smith-correlated.exr", "kp_ggx.exr"})
+    EXPECT_NE(r.out.find("new       " + (d / "tables" / f).string()), std::string::npos) << f << "\n" << r.out;
+  // after the bake, the same files would be replaced
+  ASSERT_EQ(run("-o '" + (d / "tables").string() + "'").code, 0);
+  const size_t files = countFiles(d / "tables");
+  r = run("--dry-run -o '" + (d / "tables").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(r.out.find("new "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("replaces  " + (d / "tables" / "kp_ggx.exr").string()), std::string::npos) << r.out;
+  EXPECT_EQ(countFiles(d / "tables"), files);
+  // an LTC writes two files, both named; its estimate is the fit's
+  r = run("--table ltc --dry-run -o '" + (d / "ltc").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find((d / "ltc" / "ltc1_ggx_smith-correlated.exr").string() + ", " +
+                       (d / "ltc" / "ltc2_ggx_smith-correlated.exr").string()),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("19.7  new"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(d / "ltc"));
+  // refused as the bake refuses it
+  r = run("--table kp --fresnel schlick --dry-run -o '" + (d / "x").string() + "'");
+  EXPECT_EQ(r.code, 64) << r.out;
+  EXPECT_NE(r.out.find("--table kp is the NDF's normalisation"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(d / "x"));
+}

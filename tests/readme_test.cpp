@@ -116,8 +116,8 @@ TEST(Readme, CommandsRunAsShown) {
 }
 
 // docs/commands-reference.md is the help, byte for byte: `brdfbake help --markdown` makes both
-// from one table (host/cli/commands.cpp, host/cli/option_table.cpp), so a changed option or default shows here until the
-// page is regenerated (./build/brdfbake help --markdown > docs/commands-reference.md).
+// from one table (host/cli/commands.cpp, host/cli/option_table.cpp), so a changed option or default shows here until
+// the page is regenerated (./build/brdfbake help --markdown > docs/commands-reference.md).
 TEST(Docs, CommandsReferenceIsTheHelp) {
   CmdResult r = run("help --markdown");
   ASSERT_EQ(r.code, 0) << r.out;
@@ -319,7 +319,8 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
       if (!std::regex_search(page[i], m, note)) {
         // a comment that means to quote a figure and is not in the form would be skipped unseen
         EXPECT_FALSE(std::regex_search(page[i], started))
-            << e.path().filename() << ":" << i + 1 << ": not the form <!-- figure X after \"WORDS\" [#N] from: brdfbake "
+            << e.path().filename() << ":" << i + 1
+            << ": not the form <!-- figure X after \"WORDS\" [#N] from: brdfbake "
             << "ARGS -->";
         continue;
       }
@@ -358,4 +359,67 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
   }
   EXPECT_GE(figures, 20);
   std::printf("%d quoted figures checked against their commands\n", figures);
+}
+
+// Every brdfbake command in a page's ```sh blocks (docs/*.md but the help's own page, whose examples
+// Docs.EveryHelpExampleRuns runs) is one a reader can run as written. A bake, whatever it costs
+// (rough glass, every LTC pair), is run with --dry-run: its options are checked as the bake checks
+// them and its plan forms, exit 0. Any other command runs as shown. Both from a directory holding
+// what the pages name, as the shown commands do. Lines ending in "\" continue; "time (...)",
+// "&&" and a trailing "# comment" are read as a shell reads them.
+TEST(Docs, EveryPageExampleRuns) {
+  const fs::path d = freshDir("readme", "pages");
+  fs::create_directory_symlink(fs::path(BRDFBAKE_SOURCE_DIR) / "examples", d / "examples");
+  ASSERT_EQ(run("", d.string()).code, 0);
+  int bakes = 0, others = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(BRDFBAKE_SOURCE_DIR) / "docs")) {
+    if (e.path().extension() != ".md" || e.path().filename() == "commands-reference.md") continue;
+    std::istringstream in(bytes(e.path()));
+    bool sh = false, inBlock = false;
+    std::string joined;
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("```", 0) == 0) {
+        sh = !inBlock && line == "```sh";
+        inBlock = !inBlock;
+        continue;
+      }
+      if (!inBlock || !sh) continue;
+      if (!line.empty() && line.back() == '\\') {
+        joined += line.substr(0, line.size() - 1) + " ";
+        continue;
+      }
+      std::string command = joined + line;
+      joined.clear();
+      const size_t hash = command.find(" #");
+      if (hash != std::string::npos) command.resize(hash);
+      std::string rest = command;
+      for (size_t at = 0; at <= rest.size();) {
+        const size_t amp = std::min(rest.find("&&", at), rest.size());
+        std::string part = rest.substr(at, amp - at);
+        at = amp + 2;
+        part.erase(0, part.find_first_not_of(" ("));
+        if (part.rfind("time ", 0) == 0) part.erase(0, part.find_first_not_of(" (", 5));
+        while (!part.empty() && (part.back() == ' ' || part.back() == ')')) part.pop_back();
+        const std::string exe = part.rfind("./build/brdfbake", 0) == 0 ? "./build/brdfbake" : "brdfbake";
+        if (part.rfind(exe, 0) != 0 || (part.size() > exe.size() && part[exe.size()] != ' ')) continue;
+        std::string args = part.substr(std::min(part.size(), exe.size() + 1));
+        std::istringstream words(args);
+        std::string first, second;
+        words >> first >> second;
+        const bool bake =
+            first.empty() || first[0] == '-' ||
+            (first == "bake" && second.find(".toml") == std::string::npos && second.find(".gl") == std::string::npos);
+        CmdResult r = run(bake ? args + " --dry-run" : args, d.string());
+        (bake ? bakes : others) += 1;
+        EXPECT_EQ(r.code, 0) << e.path().filename() << ": " << part << (bake ? " (as a dry run)" : "") << "\n"
+                             << r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0);
+        if (bake) {
+          EXPECT_NE(r.out.find("dry run: "), std::string::npos) << part << "\n" << r.out;
+        }
+      }
+    }
+  }
+  EXPECT_GE(bakes, 10);
+  EXPECT_GE(others, 1);
+  std::printf("%d bakes planned (--dry-run), %d other commands run\n", bakes, others);
 }

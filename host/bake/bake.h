@@ -28,6 +28,11 @@ std::vector<TableReport> runPlan(const Plan& plan);
 
 std::string formatReport(const std::vector<TableReport>& reports);
 
+// `bake --dry-run`: the tables the plan would write (table, size, texels, the family's estimate of
+// its seconds on PoCL with two cores, whether its file is new or would be replaced, the file), the
+// models of each, and the total. Reads nothing but the directory; computes and writes nothing.
+std::string formatPlan(const Plan& plan);
+
 // For `info`: a warning line when an energy table (splitsum A+B, albedo, albedo-avg) exceeds 1 by
 // more than its error bound, naming the cause; "" otherwise.
 std::string energyWarnings(const TableImage& table);

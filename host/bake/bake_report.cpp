@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "bake/bake.h"
 #include "common/format.h"
@@ -96,6 +97,39 @@ std::string energyWarnings(const TableImage& t) {
     }
   }
   return "";
+}
+
+std::string formatPlan(const Plan& plan) {
+  std::vector<JobSummary> sums;
+  double cost = 0;
+  size_t wt = 5;
+  for (const Job& j : plan.jobs) {
+    sums.push_back(j.family->summary(j));
+    cost += sums.back().cost;
+    wt = std::max(wt, sums.back().table.size());
+  }
+  std::string out = "dry run: " + std::to_string(plan.jobs.size()) + " table(s) into " + plan.outDir + "/, about " +
+                    fmtSeconds(cost) + " s on 2 cores (estimated); nothing is computed or written\n";
+  char line[1024];
+  std::snprintf(line, sizeof line, "  %-*s  %-12s  %10s  %7s  %-8s  %s\n", static_cast<int>(wt), "table", "size",
+                "texels", "est. s", "status", "file");
+  out += line;
+  std::error_code ec;
+  for (size_t i = 0; i < plan.jobs.size(); ++i) {
+    const JobSummary& s = sums[i];
+    const std::vector<std::string> files = s.files.empty() ? std::vector<std::string>{plan.jobs[i].path} : s.files;
+    bool there = false;
+    std::string names;
+    for (const std::string& f : files) {
+      there = there || std::filesystem::exists(f, ec);
+      names += (names.empty() ? "" : ", ") + f;
+    }
+    std::snprintf(line, sizeof line, "  %-*s  %-12s  %10.0f  %7s  %-8s  %s\n", static_cast<int>(wt), s.table.c_str(),
+                  s.size.c_str(), s.texels, fmtSeconds(s.cost).c_str(), there ? "replaces" : "new", names.c_str());
+    out += line;
+    out += "    " + s.models + "\n";
+  }
+  return out;
 }
 
 }  // namespace brdfbake

@@ -232,6 +232,9 @@ Command parseArgs(const std::vector<std::string>& rawArgs) {
       req.noWait = true;
     } else if (opt == "--progress") {
       cmd.progress = true;
+    } else if (opt == "--dry-run") {
+      once(opt, opt);
+      cmd.dryRun = true;
     } else if (opt == "--timings" || opt == "--quiet") {
       once(opt, opt);
       (opt == "--timings" ? cmd.timings : cmd.quiet) = true;

@@ -41,6 +41,7 @@ struct Command {
   std::vector<std::string> files;  // Shader: the tables
   bool hlsl = false;               // Shader: --lang hlsl (else glsl)
   std::string helpFor;             // Help: the command whose help to print ("" = the overview)
+  bool dryRun = false;             // Bake: --dry-run (print the plan and its estimated cost; compute nothing)
   bool timings = false;            // Bake, SceneBake: --timings (each stage's seconds on stderr)
   bool quiet = false;              // Bake, SceneBake: --quiet (no progress line)
   bool progress = false;           // Bake, SceneBake: --progress (progress lines also into a file or pipe)

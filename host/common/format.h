@@ -12,6 +12,12 @@ inline std::string fmtG(double v, int digits = 6) {
 }
 
 inline std::string fmt3(double v) { return fmtG(v, 3); }
+// An estimate of seconds: three decimals below 0.1 s, one above ("0.066", "141.3").
+inline std::string fmtSeconds(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, s < 0.1 ? "%.3f" : "%.1f", s);
+  return b;
+}
 inline std::string fmt4(double v) { return fmtG(v, 4); }
 inline std::string fmtG9(double v) { return fmtG(v, 9); }
 

@@ -82,12 +82,6 @@ Loaded load(const SceneOptions& o) {
   return l;
 }
 
-std::string fmtSeconds(double s) {
-  char b[32];
-  std::snprintf(b, sizeof b, s < 0.1 ? "%.3f" : "%.1f", s);
-  return b;
-}
-
 }  // namespace
 
 int runScenePlan(const SceneOptions& o) {

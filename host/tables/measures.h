@@ -51,6 +51,8 @@ struct JobSummary {
   std::string size;    // "128x128"
   double texels = 0;
   double cost = 0;  // estimated seconds on PoCL, 2 cores (a guide for shards, not a promise)
+  // the files it writes when they are not just the job's path (the LTC's two), in its first format
+  std::vector<std::string> files = {};
 };
 
 }  // namespace brdfbake
