@@ -22,7 +22,7 @@ std::vector<CommandInfo> makeCommands() {
        "Bakes the tables the scene's materials use and that are missing or out of date under -o DIR;\n"
        "docs/scenes.md lists the manifest's keys.",
        {"brdfbake bake examples/scenes/pbr-desktop.toml -o out/scene"},
-       "the tables come from the scene; docs/scenes.md"},
+       "the tables come from the scene: brdfbake plan SCENE lists them, baking nothing; docs/scenes.md"},
       {"plan",
        kCmdPlan,
        "brdfbake plan SCENE [options]",
