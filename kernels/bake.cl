@@ -35,11 +35,10 @@ static inline float grid_coord(int i, int n, float lo, float hi, int node_grid) 
  * for the averages whose floor is measured on the average. One kernel
  * for both, with one call of the estimator, keeps the code a program compiles to one copy of it
  * (PoCL inlines every call site). */
-kernel void bake_hemisphere(global float* out_a, global float* out_b, global float* out_e,
-                            global float* out_err, int nx, int ny, float mu_lo, float mu_hi,
-                            float r_lo, float r_hi, int node_grid, int moments, int fresnel,
-                            float fr_x, float fr_y, float fr_z, int level, int mu_list, global const float4* nodes, int sel_ndf,
-                            int sel_gaf) {
+kernel void bake_hemisphere(global float* out_a, global float* out_b, global float* out_e, global float* out_err,
+                            int nx, int ny, float mu_lo, float mu_hi, float r_lo, float r_hi, int node_grid,
+                            int moments, int fresnel, float fr_x, float fr_y, float fr_z, int level, int mu_list,
+                            global const float4* nodes, int sel_ndf, int sel_gaf) {
   int i = get_global_id(0), j = get_global_id(1);
   if (i >= nx || j >= ny) return;
   int t = j * nx + i;
@@ -77,8 +76,8 @@ kernel void bake_hemisphere(global float* out_a, global float* out_b, global flo
 }
 
 /* k_p of the NDF's raw shape over r. */
-kernel void bake_kp(global float* out, global float* out_err, int n, float r_lo, float r_hi, int node_grid,
-                    int sel_ndf, int sel_gaf) {
+kernel void bake_kp(global float* out, global float* out_err, int n, float r_lo, float r_hi, int node_grid, int sel_ndf,
+                    int sel_gaf) {
   int j = get_global_id(0);
   if (j >= n) return;
   float r = grid_coord(j, n, r_lo, r_hi, node_grid);
@@ -93,8 +92,8 @@ kernel void bake_kp(global float* out, global float* out_err, int n, float r_lo,
  * the second axis is the model's parameter (shirley: F0, oren-nayar: sigma in radians, burley: r;
  * lambert ignores it). out_err: the bound relative to max(1, |E|). The same code in every pair's
  * program (it does not use the prelude's models). */
-kernel void bake_diffuse_albedo(global float* out_e, global float* out_err, int nx, int ny, float mu_lo,
-                                float mu_hi, float p_lo, float p_hi, int node_grid, int model) {
+kernel void bake_diffuse_albedo(global float* out_e, global float* out_err, int nx, int ny, float mu_lo, float mu_hi,
+                                float p_lo, float p_hi, int node_grid, int model) {
   int i = get_global_id(0), j = get_global_id(1);
   if (i >= nx || j >= ny) return;
   float mu = grid_coord(i, nx, mu_lo, mu_hi, node_grid);

@@ -7,7 +7,8 @@
  *                 t = sqrt(theta_h/(pi/2))), y = theta_d in [0, pi/2], z = phi_d in [0, pi]
  * Grid: texel centres t = (i + 0.5)/n, nodes t = i/(n - 1), or cell starts t = i/n (MERL).
  *
- * Precision. The host tabulates each axis's cosines and sines in double (host/common/brdf3d_grid.cpp
+ * Precision. The host tabulates each axis's cosines and sines in double
+ * (host/common/brdf3d_grid.cpp
  * axisTrig: from the exact grid fraction and its complement formed from integers, so that cos theta
  * near grazing keeps full relative precision); the kernel forms the directions from them, no trig
  * of its own. Its program is its own (host/cl/programs.cpp): this file and the models it
@@ -32,15 +33,25 @@ static inline BrdfGeometry b3_geometry(int x, int y, int z, int nx, int ny, int 
   geo_t h_c = (geo_t)1, h_s = (geo_t)0, d_c = (geo_t)1;
   if (param == B3_PARAM_ANGLES) {
     /* i = (sin ti cos phi, sin ti sin phi, cos ti), o = (sin to, 0, cos to) */
-    ix = s0 * cp; iy = s0 * sp; iz = c0;
-    ox = s1; oy = (geo_t)0; oz = c1;
+    ix = s0 * cp;
+    iy = s0 * sp;
+    iz = c0;
+    ox = s1;
+    oy = (geo_t)0;
+    oz = c1;
   } else {
     /* h = (sin th, 0, cos th); d = (sin td cos pd, sin td sin pd, cos td) in the frame
      * (t, b, h) = ((cos th, 0, -sin th), (0, 1, 0), h); i = d there, o = 2 (d.h) h - i */
     geo_t ch = c0, sh = s0, cd = c1, sd = s1;
-    ix = sd * cp * ch + cd * sh; iy = sd * sp; iz = cd * ch - sd * cp * sh;
-    ox = cd * sh - sd * cp * ch; oy = -iy; oz = cd * ch + sd * cp * sh;
-    h_c = ch; h_s = sh; d_c = cd;
+    ix = sd * cp * ch + cd * sh;
+    iy = sd * sp;
+    iz = cd * ch - sd * cp * sh;
+    ox = cd * sh - sd * cp * ch;
+    oy = -iy;
+    oz = cd * ch + sd * cp * sh;
+    h_c = ch;
+    h_s = sh;
+    d_c = cd;
   }
   geo_t s2i = ix * ix + iy * iy, s2o = ox * ox + oy * oy;
   geo_t sio = sqrt(s2i * s2o);
@@ -73,13 +84,14 @@ static inline BrdfGeometry b3_geometry(int x, int y, int z, int nx, int ny, int 
 }
 
 /* out[((c * zn + z - z0) * ny + y) * nx + x] for z in [z0, z0 + zn): one slab of slices, channel
- * planes one after another; trig: the axes' cosines and sines (b3_geometry), in `real`. value 0: f; 1: f (n.i). The material: roughness r, 1/k_p of the
+ * planes one after another; trig: the axes' cosines and sines (b3_geometry), in `real`. value 0:
+ * f; 1: f (n.i). The material: roughness r, 1/k_p of the
  * gaussian's raw shape (inv_kp, from the host; 0 otherwise), channel c's Fresnel parameters
  * (fx.c, fy.c) and diffuse albedo rho.c. Parameters arrive as float: the table is the BRDF of
  * those float values (host/common/brdf3d_grid.cpp evaluates the same). */
-kernel void bake_brdf3d(global float* out, global const real* trig, int nx, int ny, int z0, int zn, int param, int value,
-                        float r, float inv_kp, int fresnel, float4 fx, float4 fy, int diffuse, float dparam, float4 rho,
-                        int nchan) {
+kernel void bake_brdf3d(global float* out, global const real* trig, int nx, int ny, int z0, int zn, int param,
+                        int value, float r, float inv_kp, int fresnel, float4 fx, float4 fy, int diffuse, float dparam,
+                        float4 rho, int nchan) {
   int x = get_global_id(0), yz = get_global_id(1);
   if (x >= nx || yz >= ny * zn) return;
   int y = yz % ny, zl = yz / ny;

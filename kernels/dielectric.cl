@@ -19,8 +19,8 @@ kernel void bake_dielectric(global float* out, global const real* etas, int nx, 
   int x = get_global_id(0), yz = get_global_id(1);
   if (x >= nx || yz >= ny * zn) return;
   int y = yz % ny, zl = yz / ny;
-  DielResult d = diel_texel(BRDF_NDF, BRDF_GAF, diel_grid(x, nx, node_grid), diel_grid(y, ny, node_grid), etas[zl],
-                            (real)target);
+  DielResult d =
+      diel_texel(BRDF_NDF, BRDF_GAF, diel_grid(x, nx, node_grid), diel_grid(y, ny, node_grid), etas[zl], (real)target);
   size_t plane = (size_t)nx * ny * zn, at = ((size_t)zl * ny + y) * nx + x;
   out[at] = (float)d.er;
   out[plane + at] = (float)d.et;

@@ -49,8 +49,8 @@ static real ltc_fit_from(const LtcLobe* L, real* x, LtcFixed* F, int n_fit, int 
 }
 
 kernel void ltc_fit_row(global float* out, global const float* prev, global const float* mus, global const float* e,
-                        global const float* in_double, int n, int has_prev, float r, float inv_kp, int kind, int diffuse, float dparam, int n_fit,
-                        int max_evals, int polish_evals, int n_final, int reps) {
+                        global const float* in_double, int n, int has_prev, float r, float inv_kp, int kind,
+                        int diffuse, float dparam, int n_fit, int max_evals, int polish_evals, int n_final, int reps) {
   int i = get_global_id(0);
   if (i >= n) return;
   real mu = (real)mus[i];

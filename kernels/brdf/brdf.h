@@ -30,11 +30,11 @@
 #define BRDF_HORIZON RC(1e-9)
 
 typedef struct BrdfGeometry {
-  real ni, no;    /* n.i, n.o */
-  real s2i, s2o;  /* sin^2 theta_i, sin^2 theta_o */
-  real nh, s2h;   /* n.h, sin^2 theta_h */
-  real oh;        /* o.h = i.h */
-  real cphi;      /* cos(phi_i - phi_o) (1 where either direction is the normal) */
+  real ni, no;   /* n.i, n.o */
+  real s2i, s2o; /* sin^2 theta_i, sin^2 theta_o */
+  real nh, s2h;  /* n.h, sin^2 theta_h */
+  real oh;       /* o.h = i.h */
+  real cphi;     /* cos(phi_i - phi_o) (1 where either direction is the normal) */
 } BrdfGeometry;
 
 /* The material apart from the channel: the specular lobe's models and roughness (p), the diffuse
@@ -42,8 +42,8 @@ typedef struct BrdfGeometry {
 typedef struct BrdfMaterial {
   int ndf, gaf;
   BrdfParams p;
-  int fresnel;     /* FRESNEL_*, parameters per channel */
-  int diffuse;     /* DIFFUSE_* or -1 */
+  int fresnel; /* FRESNEL_*, parameters per channel */
+  int diffuse; /* DIFFUSE_* or -1 */
   real dparam;
 } BrdfMaterial;
 

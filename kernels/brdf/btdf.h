@@ -60,9 +60,11 @@ BRDF_FN real btdf_lgamma_ratio(real a, real b) {
  * Lambda(i) from ndf_cLambda. The chi+ factors are the caller's (it knows o's side).
  *   separable (Walter eq. 23, Smith 1967): G1(i) G1(o), G1(v) = |n.v|/(|n.v| + |n.v| Lambda(v));
  *   height-correlated reflection (Heitz 2014 eq. 99): 1/(1 + Lambda_i + Lambda_o);
- *   height-correlated transmission (Heitz 2014, the height-correlated form for transmission): the point must be
+ *   height-correlated transmission (Heitz 2014, the height-correlated form for transmission): the
+ * point must be
  *   visible from above for i and from below for o, int_0^1 u^Lambda_i (1 - u)^Lambda_o du
- *   = B(1 + Lambda_i, 1 + Lambda_o) = Gamma(1 + Lambda_i) Gamma(1 + Lambda_o)/Gamma(2 + Lambda_i + Lambda_o).
+ *   = B(1 + Lambda_i, 1 + Lambda_o) = Gamma(1 + Lambda_i) Gamma(1 + Lambda_o)/Gamma(2 + Lambda_i +
+ * Lambda_o).
  * Divided by n.i so that it stays finite at grazing views (as gaf.h's G/(n.o)); at ni = 0 the
  * limit: separable and correlated reflection 1/cli (times G1(o)); correlated transmission
  * B ~ Gamma(1 + b) (cli/ni)^-(1 + b), so G/ni ~ ni^b -> 0 wherever b = Lambda_o > 0: E_T of
@@ -82,7 +84,8 @@ BRDF_FN real btdf_G_over_ni(int ndf, int gaf, BrdfParams p, real ni, real cli, r
  * for reflection, the normalised h_t turned to n's side for transmission) and the cosines
  * ni = n.i > 0, no = n.o (either sign), ih = i.h, oh = o.h, nh = n.h, s2h, s2o:
  *   reflection (Walter eq. 20):   f_r = F(i.h) D(h) G / (4 |n.i| |n.o|)
- *   transmission (Walter eq. 21): f_t = |i.h| |o.h|/(|n.i| |n.o|) eta_o^2 (1 - F(i.h)) D(h) G / (eta_i (i.h) + eta_o (o.h))^2
+ *   transmission (Walter eq. 21): f_t = |i.h| |o.h|/(|n.i| |n.o|) eta_o^2 (1 - F(i.h)) D(h) G /
+ *     (eta_i (i.h) + eta_o (o.h))^2
  * with chi+ (Walter eq. 23): i.h and o.h on the sides of n.i and n.o. f_t carries eta_o^2 (the
  * radiance scaling of the transmitted side), so that int f (n.o) dw_o is the fraction of energy
  * scattered, at most 1 (MODELS.md). */

@@ -93,13 +93,13 @@ typedef float acc_t;
 #else
 #define BRDF_TAB_AT_DOUBLE(PTR)
 #endif
-#define BRDF_TAB_AT(PTR)                                                                                     \
-  static inline __attribute__((overloadable)) float tab_at(PTR t, float i) { return t[(int)i]; }              \
-  BRDF_TAB_AT_DOUBLE(PTR)                                                                                     \
-  static inline __attribute__((overloadable)) float16 tab_at(PTR t, float16 i) {                              \
-    int16 k = convert_int16(i);                                                                               \
+#define BRDF_TAB_AT(PTR)                                                                                       \
+  static inline __attribute__((overloadable)) float tab_at(PTR t, float i) { return t[(int)i]; }               \
+  BRDF_TAB_AT_DOUBLE(PTR)                                                                                      \
+  static inline __attribute__((overloadable)) float16 tab_at(PTR t, float16 i) {                               \
+    int16 k = convert_int16(i);                                                                                \
     return (float16)(t[k.s0], t[k.s1], t[k.s2], t[k.s3], t[k.s4], t[k.s5], t[k.s6], t[k.s7], t[k.s8], t[k.s9], \
-                     t[k.sa], t[k.sb], t[k.sc], t[k.sd], t[k.se], t[k.sf]);                                   \
+                     t[k.sa], t[k.sb], t[k.sc], t[k.sd], t[k.se], t[k.sf]);                                    \
   }
 BRDF_TAB_AT(constant float*)
 BRDF_TAB_AT(const float*)

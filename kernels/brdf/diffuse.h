@@ -84,7 +84,8 @@ BRDF_FN real diffuse_oren_nayar_as_printed(param_t sigma, real ni, real si, para
  * with cos^2 theta_d = (i.h)^2 = (1 + i.o)/2 and i.o = (n.i)(n.o) + sin theta_i sin theta_o cos phi. */
 BRDF_FN real diffuse_burley(param_t r, real ni, real si, param_t no, param_t so, real cphi) {
   real fd90m1 = r * (RC(1.0) + ni * no + si * so * cphi) - RC(0.5);
-  return BRDF_INV_PI * (RC(1.0) + fd90m1 * fresnel_schlick_weight(ni)) * (RC(1.0) + fd90m1 * fresnel_schlick_weight(no));
+  return BRDF_INV_PI * (RC(1.0) + fd90m1 * fresnel_schlick_weight(ni)) *
+         (RC(1.0) + fd90m1 * fresnel_schlick_weight(no));
 }
 
 /* f_d of model `model` (one of DIFFUSE_*), uniform in a call; `param` as above. */

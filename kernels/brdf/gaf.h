@@ -59,8 +59,8 @@ BRDF_FN real gaf_view_cLambda(int gaf, int ndf, BrdfParams p, real no, real s2o)
 
 #endif /* !BRDF_LANE_PASS */
 
-BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, param_t no, real nh, real oh,
-                           real s2i, param_t s2o) {
+BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, param_t no, real nh, real oh, real s2i,
+                           param_t s2o) {
   real g;
   /* the view's Lambda: one value for every lane (param_t), set once per texel by the estimators */
   param_t clo = p.has_view ? p.view_cl : gaf_view_cLambda(gaf, ndf, p, no, s2o);
@@ -120,8 +120,7 @@ BRDF_FN real gaf_G_over_no(int gaf, int ndf, BrdfParams p, real ni, param_t no, 
   return (ni <= RC(0.0) || oh <= RC(0.0)) ? RC(0.0) : g;
 }
 
-BRDF_FN real gaf_G(int gaf, int ndf, BrdfParams p, real ni, param_t no, real nh, real oh, real s2i,
-                   param_t s2o) {
+BRDF_FN real gaf_G(int gaf, int ndf, BrdfParams p, real ni, param_t no, real nh, real oh, real s2i, param_t s2o) {
   return no * gaf_G_over_no(gaf, ndf, p, ni, no, nh, oh, s2i, s2o);
 }
 
@@ -129,7 +128,8 @@ BRDF_FN real gaf_G(int gaf, int ndf, BrdfParams p, real ni, param_t no, real nh,
 /* Whether the pair's Lambda is the tabulated exact one (smith_tables.h): blinn-phong and the
  * gaussian with smith-exact or smith-correlated-exact (ggx's and beckmann's are closed forms). */
 BRDF_FN int gaf_lambda_tabulated(int ndf, int gaf) {
-  return (gaf == GAF_SMITH_EXACT || gaf == GAF_SMITH_CORRELATED_EXACT) && (ndf == NDF_BLINN_PHONG || ndf == NDF_GAUSSIAN);
+  return (gaf == GAF_SMITH_EXACT || gaf == GAF_SMITH_CORRELATED_EXACT) &&
+         (ndf == NDF_BLINN_PHONG || ndf == NDF_GAUSSIAN);
 }
 
 /* The GAF that computes the same G for this NDF: ggx's and beckmann's exact Smith Lambda is their

@@ -39,10 +39,10 @@ typedef struct BrdfParams {
    * A = int H (1 - w) (kernels/integrate/integrand.h): Schlick's (1 - o.h)^5 (HEMI_SPLIT, the
    * split-sum pair), a Fresnel model (HEMI_FRESNEL: B is that Fresnel's albedo), or the F82
    * correction's shape (HEMI_F82C). */
-  int moments;      /* HEMI_SPLIT, HEMI_FRESNEL, HEMI_F82C */
-  int fresnel;      /* FRESNEL_* for HEMI_FRESNEL */
-  real fr_x, fr_y;  /* its parameters: F0 or eta; k (conductor) or b (f82-tint) */
-  real fr_z;        /* eta's correction (fresnel.h fresnel_e2m1), 0 but for float etas near 1 */
+  int moments;     /* HEMI_SPLIT, HEMI_FRESNEL, HEMI_F82C */
+  int fresnel;     /* FRESNEL_* for HEMI_FRESNEL */
+  real fr_x, fr_y; /* its parameters: F0 or eta; k (conductor) or b (f82-tint) */
+  real fr_z;       /* eta's correction (fresnel.h fresnel_e2m1), 0 but for float etas near 1 */
   /* The view's c Lambda that the GAF uses (gaf_view_cLambda), when has_view: the estimators fix
    * the view per texel and set it once (hemi_view, integrate/integrand.h), so that gaf_G_over_no
    * does not recompute it at every node. has_view = 0: gaf_G_over_no computes it from its n.o. */
@@ -155,10 +155,10 @@ BRDF_FN real charlie_lambda(param_t alpha, real c) {
  * tests/float_forms_test.cpp holds its error. */
 #ifndef BRDF_LANE_PASS
 BRDF_CONST real BECKMANN_L_P[13] = {
-    RC(0.56851845943975654),    RC(0.064183925545320347),  RC(-0.091686504761588697), RC(0.022163713757722109),
-    RC(0.0054156855707045374),  RC(-0.0065984713561946578), RC(0.0026617913558159866), RC(-0.00036876549343904598),
-    RC(-0.00029416865548266227), RC(0.00033866774672450619), RC(-0.00015410818099682579),
-    RC(-2.1187884427822688e-05), RC(3.0550201079807072e-05)};
+    RC(0.56851845943975654),     RC(0.064183925545320347),   RC(-0.091686504761588697),   RC(0.022163713757722109),
+    RC(0.0054156855707045374),   RC(-0.0065984713561946578), RC(0.0026617913558159866),   RC(-0.00036876549343904598),
+    RC(-0.00029416865548266227), RC(0.00033866774672450619), RC(-0.00015410818099682579), RC(-2.1187884427822688e-05),
+    RC(3.0550201079807072e-05)};
 #endif
 BRDF_FN real beckmann_cLambda(real c, real as) {
   real a = c / as;
@@ -277,9 +277,7 @@ BRDF_FN real ndf_cLambda_exact(int ndf, BrdfParams p, real c, real s2) {
 BRDF_FN real ndf_Lambda(int ndf, BrdfParams p, real c, real s2) { return ndf_cLambda(ndf, p, c, s2) / c; }
 
 /* Smith G1 = 1/(1 + Lambda) = c/(c + c Lambda). */
-BRDF_FN real ndf_G1(int ndf, BrdfParams p, real c, real s2) {
-  return c / (c + ndf_cLambda(ndf, p, c, s2));
-}
+BRDF_FN real ndf_G1(int ndf, BrdfParams p, real c, real s2) { return c / (c + ndf_cLambda(ndf, p, c, s2)); }
 
 /* Height-correlated Smith G2 = 1/(1 + Lambda_i + Lambda_o) (Heitz 2014 eq. 99). */
 BRDF_FN real ndf_G(int ndf, BrdfParams p, real ci, real s2i, real co, real s2o) {

@@ -16,8 +16,8 @@
 #include "integrate/lanes.h"
 #include "integrate/quadrature.h"
 /* The azimuth's budgets (the brdf.method text is generated from these: host/bake/bake.cpp). */
-#define HEMI_TRAP_N 16         /* trapezoid intervals on the whole circle; refined: twice as many */
-#define HEMI_PHI_GROW RC(4.0)  /* grading of the arc panels towards phimax; refined: halved */
+#define HEMI_TRAP_N 16             /* trapezoid intervals on the whole circle; refined: twice as many */
+#define HEMI_PHI_GROW RC(4.0)      /* grading of the arc panels towards phimax; refined: halved */
 #define HEMI_PHI_GROW_OWN RC(16.0) /* the same from the Smith/Schlick layer n.i ~ alpha (hemi_phi) */
 
 /* Whether the GAF's shadowing of i changes on the scale n.i ~ alpha rather than n.i ~ mu: the Smith
@@ -51,8 +51,8 @@ BRDF_FN lane_t cos_arc(lane_t x) {
 
 /* One GK15 panel's node values over phi in [lo, hi] (the nodes GK15_XL from k), the substitution's
  * Jacobian applied (sq_lo, sq_hi: hemi_phi_gk). */
-BRDF_FN void hemi_phi_gk_values(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo,
-                                real hi, int sq_lo, int sq_hi, int k, lane_t* fa, lane_t* fb) {
+BRDF_FN void hemi_phi_gk_values(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo, real hi,
+                                int sq_lo, int sq_hi, int k, lane_t* fa, lane_t* fb) {
   real hw = RC(0.5) * (hi - lo), mid = RC(0.5) * (hi + lo), len = hi - lo;
   lane_t x = lane_load(GK15_XL, k);
   if (sq_lo || sq_hi) {
@@ -90,8 +90,8 @@ BRDF_FN void hemi_phi_gk_values(int ndf, int gaf, BrdfParams p, real mu, real s,
  * sq_lo / sq_hi: an end with a square-root singularity in the integrand (Fresnel's critical
  * angle) or a power of n.i (charlie-smith at phimax), eased by phi = lo + L y^2 (hi - L (1 - y)^2;
  * the smoothstep for both). */
-BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo,
-                         real hi, int sq_lo, int sq_hi, real* ka, real* kb, real* ea, real* eb) {
+BRDF_FN void hemi_phi_gk(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, real lo, real hi,
+                         int sq_lo, int sq_hi, real* ka, real* kb, real* ea, real* eb) {
   real hw = RC(0.5) * (hi - lo);
   real sa = RC(0.0), sb = RC(0.0), da = RC(0.0), db = RC(0.0);
   real ra = RC(0.0), rb = RC(0.0); /* resasc: the Kronrod weights sum to 2, so the mean is sa/2 */
@@ -241,15 +241,14 @@ BRDF_FN TrapSums hemi_phi_trap(int ndf, int gaf, BrdfParams p, real mu, real s, 
 #define HEMI_PHI_MAXB 32
 #define HEMI_ARC_PANELS (HEMI_PHI_MAXB + 1)
 
-
 /* hemi_phi's set-up at fixed theta_h: 1 when the node takes the whole-circle trapezoid, else 0
  * with its arc's panels, in order: panel m spans [lo[m st], hi[m st]] and sq[m st] is its
  * sq_lo + 2 sq_hi (hemi_phi_gk: the ends at Fresnel's kink, and the horizon end where G is
  * singular there); *np panels, at most HEMI_ARC_PANELS. st: the stride, 1 for hemi_phi's own
  * arrays, 16 where hemi_arcs_lanes keeps a panel of every outer node side by side (written in
  * place there: a copy through one node's arrays measured slower (docs/performance.md, "Kernel choices")). */
-BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, int full,
-                          real phimax, real sinmax, int refine, real* lo_, real* hi_, int* sq_, int st, int* np) {
+BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, int full, real phimax,
+                          real sinmax, int refine, real* lo_, real* hi_, int* sq_, int st, int* np) {
   /* zeroed: only the first nk are read, which GCC's host build cannot see (-Wmaybe-uninitialized) */
   real kinks[4] = {RC(0.0), RC(0.0), RC(0.0), RC(0.0)};
   int nk = gaf_kinks(gaf, mu, s, h.c, sn, kinks);
@@ -359,8 +358,8 @@ BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, r
 /* int_0^phimax H dphi at fixed theta_h (full: phimax = pi; sn = sin theta_h, sinmax = sin phimax).
  * Results in ia, ib; bounds in ea, eb; or, on a whole circle without kinks, the trapezoid's sums
  * without its last node in *trap (trap->n > 0), for hemi_trap_finish. */
-BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, int full,
-                      real phimax, real sinmax, int refine, real* ia, real* ib, real* ea, real* eb, TrapSums* trap) {
+BRDF_FN void hemi_phi(int ndf, int gaf, BrdfParams p, real mu, real s, BrdfAngle h, real sn, int full, real phimax,
+                      real sinmax, int refine, real* ia, real* ib, real* ea, real* eb, TrapSums* trap) {
   trap->n = 0;
   *ia = RC(0.0);
   *ib = RC(0.0);

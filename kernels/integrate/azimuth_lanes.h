@@ -28,8 +28,7 @@ BRDF_FN int hemi_trap_plain(int gaf, BrdfParams p, int refine) {
 /* Six sums of the four azimuth nodes i, i + 1, i + 8, i + 9, as lane_sum4's tree pairs them:
  * (x_i + x_(i+8)) + (x_(i+1) + x_(i+9)), each x a weight times a node's value, formed apart from
  * the sums as lane_sum4's arguments are (no multiply-add contraction). */
-BRDF_FN void hemi_trap_quad(int ndf, int gaf, BrdfParams p, real mu, real s, lane_t c, lane_t sn, int i,
-                            lane_t* t) {
+BRDF_FN void hemi_trap_quad(int ndf, int gaf, BrdfParams p, real mu, real s, lane_t c, lane_t sn, int i, lane_t* t) {
   lane_t fa[4], fb[4];
   int js[4] = {i, i + 8, i + 1, i + 9};
   for (int q = 0; q < 4; ++q) hemi_node_c(ndf, gaf, p, mu, s, c, sn, COS_PI16[js[q]], &fa[q], &fb[q]);

@@ -67,7 +67,8 @@
 #define DIEL_CORNER_R RC(1e-5) /* as hemisphere_texel.h's HEMI_CORNER_R */
 /* the graded breaks' factors 4^j, j = -3..4, and the outer axis' fixed breaks (the e^-v decay) */
 #define DIEL_NGRADES 8
-BRDF_CONST real DIEL_GRADES[DIEL_NGRADES] = {RC(0.015625), RC(0.0625), RC(0.25), RC(1.0), RC(4.0), RC(16.0), RC(64.0), RC(256.0)};
+BRDF_CONST real DIEL_GRADES[DIEL_NGRADES] = {RC(0.015625), RC(0.0625), RC(0.25), RC(1.0),
+                                             RC(4.0),      RC(16.0),   RC(64.0), RC(256.0)};
 #define DIEL_NFIXED 4
 BRDF_CONST real DIEL_FIXED[DIEL_NFIXED] = {RC(1.0), RC(3.0), RC(7.0), RC(15.0)};
 
@@ -158,7 +159,8 @@ BRDF_FN void diel_phi(int ndf, int gaf, BrdfParams p, DielView v, real c, real s
    * hemi_phi has the same): panels graded 4-fold towards it */
   if (v.ck > RC(0.0) && ss > RC(0.0)) {
     real g = RC(0.0);
-    for (real d = sqrt_near_pi((v.ck - v.mu * c) / ss, &g); d > RC(0.0) && d < RC(0.5) * g && np < DIEL_MAXB; d *= RC(4.0))
+    for (real d = sqrt_near_pi((v.ck - v.mu * c) / ss, &g); d > RC(0.0) && d < RC(0.5) * g && np < DIEL_MAXB;
+         d *= RC(4.0))
       ph[np++] = g - d;
   }
   ph[np++] = BRDF_PI;
@@ -274,7 +276,8 @@ BRDF_FN DielResult diel_albedo(int ndf, int gaf, BrdfParams p, real mu, real eta
     nb = diel_add_theta(ndf, p, to + ak, vend, bp, nb);
     nb = diel_add_theta(ndf, p, ak - to, vend, bp, nb);
     /* where x meets the reflected domain's edge x = mu/(2c) */
-    if (xs[k] > RC(0.0) && mu < RC(2.0) * xs[k]) nb = diel_add_theta(ndf, p, acos(mu / (RC(2.0) * xs[k])), vend, bp, nb);
+    if (xs[k] > RC(0.0) && mu < RC(2.0) * xs[k])
+      nb = diel_add_theta(ndf, p, acos(mu / (RC(2.0) * xs[k])), vend, bp, nb);
   }
   /* where the transmitted domain's edge x* meets the critical x = ck: q = mu/c = ck */
   if (v.ck > RC(0.0) && mu < v.ck) nb = diel_add_theta(ndf, p, acos(mu / v.ck), vend, bp, nb);

@@ -91,8 +91,8 @@ BRDF_FN int hemi_cross_tan2(real mu, real s, real x, real* t2) {
  * end; v = a + L y^2, b - L (1-y)^2, or the smoothstep for both, make it smooth in y.
  * First the nodes' angles, arcs and weights, all nodes at once in lanes; then each node's azimuth
  * integral (itself in lanes). */
-BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, real t1, real v1, real a,
-                              real b, int partial, int sq_lo, int sq_hi, int refine, HemiResult* res) {
+BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, real t1, real v1, real a, real b,
+                              int partial, int sq_lo, int sq_hi, int refine, HemiResult* res) {
   real len = b - a;
   real nc[16], ns2[16], nt2[16], nsn[16], nphi[16], nsin[16], nw[16];
   for (int k = 0; k + BRDF_LANES <= HEMI_GK_N; k += BRDF_LANES) {
@@ -125,7 +125,7 @@ BRDF_FN void hemi_outer_panel(int ndf, int gaf, BrdfParams p, real mu, real s, r
       }
       lane_t inv = RC(1.0) / (RC(2.0) * s * t);
       lane_t opc = fmax(dt2 / (t + t1) * (mu * t + RC(1.0) + s) * inv, RC(0.0)); /* 1 + c0 */
-      lane_t omc = fmax((RC(1.0) + s - mu * t) * (t + t1) * inv, RC(0.0));        /* 1 - c0 */
+      lane_t omc = fmax((RC(1.0) + s - mu * t) * (t + t1) * inv, RC(0.0));       /* 1 - c0 */
       lane_t c0 = opc < RC(1.0) ? opc - RC(1.0) : RC(1.0) - omc;
       sinmax = sqrt(opc * omc);
       phimax = atan2(sinmax, c0);

@@ -22,7 +22,8 @@
  * pair, none and charlie included, has the sharpened estimate's floors below). The
  * floor, relative to the value so that it scales with what the rule integrates (and averages into
  * E_avg's node bounds where the average keeps them; the plain average of the rescaled pairs has a
- * floor of its own, albedo_avg.h AVG_ERR_FLOOR), covers both; tests/tables/microfacet/accuracy_test.cpp checks every such texel against the
+ * floor of its own, albedo_avg.h AVG_ERR_FLOOR), covers both;
+ * tests/tables/microfacet/accuracy_test.cpp checks every such texel against the
  * reference. Re-measured there with the arcs graded from n.i = 2 alpha (azimuth.h), against the
  * reference, over every non-exact-Smith pair's 9x9 node and 8x8 centre grids and 128x128 edge
  * texels, both budgets: the sharpened estimates miss by at most 4.4e-8 of the value (7.5e-9 away
@@ -85,7 +86,8 @@ BRDF_FN real hemi_rel_error(HemiResult h) {
 }
 
 /* The default budget, and the refined one where its estimate exceeds `target` (the refined result
- * is kept if its estimate is smaller); level >= 0 instead: that budget alone (= hemisphere_moments).
+ * is kept if its estimate is smaller); level >= 0 instead: that budget alone (=
+ * hemisphere_moments).
  * The tabulated Lambda's error is added after the choice: no budget reduces it. bare: the chosen
  * budget's rule estimate alone, without the floor and the tabulated Lambda's error (the choice is
  * the same): the average albedo (host/cl/runner_avg.cpp) adds floors measured on the averages
@@ -146,8 +148,8 @@ BRDF_FN HemiResult hemisphere_texel(int ndf, int gaf, real mu, real r, real targ
   return h;
 }
 /* The same with another weight (BrdfParams: moments, fresnel, fr_x, fr_y). */
-BRDF_FN HemiResult hemisphere_texel_weighted(int ndf, int gaf, real mu, real r, real target, int moments,
-                                             int fresnel, real fr_x, real fr_y) {
+BRDF_FN HemiResult hemisphere_texel_weighted(int ndf, int gaf, real mu, real r, real target, int moments, int fresnel,
+                                             real fr_x, real fr_y) {
   BrdfParams p = hemisphere_texel_params(ndf, gaf, mu, r);
   p.moments = moments;
   p.fresnel = fresnel;

@@ -34,8 +34,8 @@ BRDF_FN BrdfParams hemi_view(int ndf, int gaf, BrdfParams p, param_t mu, param_t
 /* The integrand H split by the weight w(o.h) that p.moments names (ndf.h BrdfParams): fb = H w,
  * fa = H (1 - w); Schlick's (1 - o.h)^5 for the split-sum pair. At the angle h (sn = sin theta_h)
  * and cphi = cos phi: one theta_h for every lane, cphi per lane. */
-BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, BrdfAngle h, param_t sn,
-                       real cphi, real* fa, real* fb) {
+BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, BrdfAngle h, param_t sn, real cphi,
+                       real* fa, real* fb) {
   real oh = fmin(s * sn * cphi + mu * h.c, RC(1.0)); /* rounding can push it past 1 */
   /* n.i <= 1 exactly, but not always after rounding: clamp so sin^2 theta_i never goes negative */
   real ni = fmin(RC(2.0) * oh * h.c - mu, RC(1.0));
@@ -45,9 +45,12 @@ BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, Br
   param_t ic = RC(1.0) / h.c;
   real H = gaf_G_over_no(gaf, ndf, p, ni, mu, h.c, oh, s2i, s2o) * oh * ic;
   real w;
-  if (p.moments == HEMI_FRESNEL) w = fresnel_Fz(p.fresnel, p.fr_x, p.fr_y, p.fr_z, oh);
-  else if (p.moments == HEMI_F82C) w = fresnel_f82_weight(oh);
-  else w = fresnel_schlick_weight(oh);
+  if (p.moments == HEMI_FRESNEL)
+    w = fresnel_Fz(p.fresnel, p.fr_x, p.fr_y, p.fr_z, oh);
+  else if (p.moments == HEMI_F82C)
+    w = fresnel_f82_weight(oh);
+  else
+    w = fresnel_schlick_weight(oh);
   *fb = H * w;
   *fa = H - *fb;
 }
@@ -56,8 +59,8 @@ BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, Br
  * batches the trapezoids' phi = pi nodes so. Written out rather than shared with hemi_node: with
  * hemi_node calling it (theta_h a lane vector there too), or with a shared weight-and-split helper,
  * the split-sum kernel measured slower (docs/performance.md, "Kernel choices"). */
-BRDF_FN void hemi_node_c(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, real c, real sn, real cphi,
-                         real* fa, real* fb) {
+BRDF_FN void hemi_node_c(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, real c, real sn, real cphi, real* fa,
+                         real* fb) {
   real oh = fmin(s * sn * cphi + mu * c, RC(1.0));
   real ni = fmin(RC(2.0) * oh * c - mu, RC(1.0));
   real s2i = (RC(1.0) - ni) * (RC(1.0) + ni);
@@ -65,9 +68,12 @@ BRDF_FN void hemi_node_c(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, 
   /* written as hemi_node forms it (1/c, then the product), so the two differ only in where c varies */
   real H = gaf_G_over_no(gaf, ndf, p, ni, mu, c, oh, s2i, s2o) * oh * (RC(1.0) / c);
   real w;
-  if (p.moments == HEMI_FRESNEL) w = fresnel_Fz(p.fresnel, p.fr_x, p.fr_y, p.fr_z, oh);
-  else if (p.moments == HEMI_F82C) w = fresnel_f82_weight(oh);
-  else w = fresnel_schlick_weight(oh);
+  if (p.moments == HEMI_FRESNEL)
+    w = fresnel_Fz(p.fresnel, p.fr_x, p.fr_y, p.fr_z, oh);
+  else if (p.moments == HEMI_F82C)
+    w = fresnel_f82_weight(oh);
+  else
+    w = fresnel_schlick_weight(oh);
   *fb = H * w;
   *fa = H - *fb;
 }

@@ -2,7 +2,8 @@
  *
  * The lobe. For a view v = (sin theta_v, 0, mu), the normalised cosine-weighted lobe is
  *   p(w) = f(v, w) max(0, w_z) / E(mu),   E = int f(v, w) max(0, w_z) dw,
- * with f the specular lobe of the prelude's pair at F = 1 (brdf/brdf.h) or a diffuse model (rho = 1).
+ * with f the specular lobe of the prelude's pair at F = 1 (brdf/brdf.h) or a diffuse model (rho =
+ * 1).
  * E comes from the host (the integrators' exact value), so that p integrates to 1 up to E's claim.
  *
  * The distance. The fit's error is the total-variation distance
@@ -15,17 +16,20 @@
  * three strategies, n_s points each: the lobe's own (for microfacet NDFs the GGX visible normals of
  * the lobe's alpha reflected about v, Heitz 2018, "Sampling the GGX Distribution of Visible
  * Normals", pdf G1(v) D(h)/(4 mu); for charlie its half-vectors, ltc_pdf_sheen; none for diffuse
- * lobes), the clamped cosine (pdf w_z/pi), and the LTC itself (pdf D). Point k of strategy s contributes
+ * lobes), the clamped cosine (pdf w_z/pi), and the LTC itself (pdf D). Point k of strategy s
+ * contributes
  *   |p - D|(w_k) / sum_s' n_s' pdf_s'(w_k),
  * and the sum over all points estimates int |p - D|. The D part of each term is at most 1/n_D and
  * the p part at most p/(n_v pdf_v + n_c pdf_c): bounded for every lobe here, so the estimate's
  * spread shrinks like a bounded integrand's. Points are a rank-1 lattice (k/n, frac(k g)), g the
- * golden ratio's fractional part, shifted modulo 1 (Cranley and Patterson 1976): R hashed shifts give
+ * golden ratio's fractional part, shifted modulo 1 (Cranley and Patterson 1976): R hashed shifts
+ * give
  * R independent estimates whose mean is the distance and whose spread its error estimate (ltc_tv).
  *
  * The fit. Nelder and Mead 1965 on (log m11, log m22, m13, phi) minimising TV on the unshifted
  * lattice (a smooth objective in M: the LTC's own points move with M, continuously; the others' p
- * computed once, LtcFixed), restarted once from its best vertex with a smaller simplex. The start is the best of the candidates the kernel is given
+ * computed once, LtcFixed), restarted once from its best vertex with a smaller simplex. The start
+ * is the best of the candidates the kernel is given
  * (the neighbouring texels' fits) and of a cosine about the lobe's mean direction.
  */
 /* Once per pass (compat.h "Passes"). */
@@ -48,13 +52,13 @@
 
 /* One texel's lobe: the view, the material and the magnitude E. */
 typedef struct LtcLobe {
-  int kind;      /* LTC_LOBE_SPECULAR (the prelude's pair) or LTC_LOBE_DIFFUSE */
+  int kind; /* LTC_LOBE_SPECULAR (the prelude's pair) or LTC_LOBE_DIFFUSE */
   BrdfMaterial m;
-  real vx, vz;   /* v = (sin theta_v, 0, mu) */
-  real alpha;    /* the visible-normal proposal's alpha (0: none) */
-  real sheen_k;  /* the charlie proposal's exponent 1/alpha (0: none) */
-  real g1_over_mu; /* G1(v)/mu of GGX at that alpha, finite at mu = 0 */
-  real inv_e;    /* 1/E */
+  real vx, vz;         /* v = (sin theta_v, 0, mu) */
+  real alpha;          /* the visible-normal proposal's alpha (0: none) */
+  real sheen_k;        /* the charlie proposal's exponent 1/alpha (0: none) */
+  real g1_over_mu;     /* G1(v)/mu of GGX at that alpha, finite at mu = 0 */
+  real inv_e;          /* 1/E */
   float col[SMITH_NZ]; /* the tabulated exact Lambda's column at this alpha (ltc_lobe_view) */
 } LtcLobe;
 
@@ -82,7 +86,8 @@ BRDF_FN LtcLobe ltc_lobe(int kind, int ndf, int gaf, int diffuse, real mu, real 
 }
 
 /* The view's GAF term and the exact Lambda's column, set once for the texel (as the integrators'
- * hemi_view does): p then evaluates Lambda at the light's direction only. Call it on the lobe where it
+ * hemi_view does): p then evaluates Lambda at the light's direction only. Call it on the lobe
+ * where it
  * stays (smith_col points into L->col). Setting them per evaluation instead made the fit measurably
  * slower, most for the exact Lambda (docs/performance.md, "Kernel choices"). */
 BRDF_FN void ltc_lobe_view(LtcLobe* L) {
@@ -302,7 +307,8 @@ BRDF_FN real ltc_objective(const LtcLobe* L, const real* x, const LtcFixed* F) {
 
 /* Shift k's coordinate d in [0, 1): an integer hash (Mueller's 32-bit finaliser) of (k, d), fixed,
  * so the same input gives the same table. Shifts from a Weyl sequence (k sqrt(2), k sqrt(3)) form a
- * lattice themselves: their estimates are correlated, and at r = 1, mu = 0.56 eight of them spread 3.6
+ * lattice themselves: their estimates are correlated, and at r = 1, mu = 0.56 eight of them spread
+ * 3.6
  * times less than the mean's true error (against Ltc.DistanceEstimateHoldsAgainstAQuadrature's
  * quadrature). */
 BRDF_FN real ltc_shift(int k, int d) {
@@ -317,7 +323,8 @@ BRDF_FN real ltc_shift(int k, int d) {
  * error estimate in out[1], the mass below the horizon in out[2]. The estimate is four standard
  * errors of the mean (with 16 shifts, Student's t with 15 degrees of freedom puts 99.9% within 4.07
  * for normal errors) plus a tenth of the mean: a lattice of n points misses features under 1/n of a
- * proposal's mass, which the shifts' spread does not show. Measured against the reference quadrature
+ * proposal's mass, which the shifts' spread does not show. Measured against the reference
+ * quadrature
  * (tables/ltc/ltc_reference.h) at every second row of the default 64^2 GGX fit: with four standard
  * errors alone 32 of 2048 texels were off by more (r = 10/63, mu = 0.91 by 14 standard errors, the
  * estimate 6% low); with the tenth added, every texel is within half its estimate. */
@@ -369,7 +376,8 @@ BRDF_FN real ltc_mean_angle(const LtcLobe* L, int n) {
 
 #define LTC_NP 4
 /* Nelder-Mead on x (LTC_NP parameters) from the simplex x + step_i e_i, at most max_evals objective
- * values (*used: how many it took); x ends at the best vertex, its value returned. Reflection 1, expansion 2, contraction 1/2,
+ * values (*used: how many it took); x ends at the best vertex, its value returned. Reflection 1,
+ * expansion 2, contraction 1/2,
  * shrink 1/2 (the paper's coefficients). */
 BRDF_FN real ltc_nelder_mead(const LtcLobe* L, real* x, const real* step, const LtcFixed* F, int max_evals, real ftol,
                              int* used) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 #include "tables/dielectric_avg.h"
 #include "tables/volume.h"
@@ -74,29 +75,26 @@ std::vector<double> dielectricEtas(const DielectricJob& job, int z0, int n) {
 namespace {
 const char* const kSlabKernel = "bake_dielectric";
 const char* const kPointsKernel = "bake_dielectric_points";
+
+// One of the rough dielectric's kernels, in the pair's dielectric program, with its warm arguments.
+KernelNeed dielectricNeed(const char* kernel, int ndf, int gaf, std::vector<LaunchArg> warm) {
+  return {KernelNeed::Own, ndf, gaf, ProgramKey::Dielectric, kernel, std::move(warm)};
+}
 }  // namespace
 
 KernelNeed dielectricKernel(int ndf, int gaf) {
   using A = LaunchArg;
   // (out, etas, nx, ny, zn, grid, target): zn = 0, nothing to do
-  return {KernelNeed::Own,
-          ndf,
-          gaf,
-          ProgramKey::Dielectric,
-          kSlabKernel,
-          {A::output(0), A::noInput(A::InReals), A::of(0), A::of(0), A::of(0), A::of(0), A::of(0.0f)}};
+  return dielectricNeed(kSlabKernel, ndf, gaf,
+                        {A::output(0), A::noInput(A::InReals), A::of(0), A::of(0), A::of(0), A::of(0), A::of(0.0f)});
 }
 
 KernelNeed dielectricPointsKernel(int ndf, int gaf) {
   using A = LaunchArg;
   // (out, mus, rs, etas, n, target): n = 0, nothing to do
-  return {KernelNeed::Own,
-          ndf,
-          gaf,
-          ProgramKey::Dielectric,
-          kPointsKernel,
-          {A::outputReals(0), A::noInput(A::InReals), A::noInput(A::InReals), A::noInput(A::InReals), A::of(0),
-           A::of(0.0f)}};
+  return dielectricNeed(kPointsKernel, ndf, gaf,
+                        {A::outputReals(0), A::noInput(A::InReals), A::noInput(A::InReals), A::noInput(A::InReals),
+                         A::of(0), A::of(0.0f)});
 }
 
 std::vector<std::vector<float>> dielectricSlab(KernelRunner& runner, int ndf, int gaf, int nx, int ny,
