@@ -298,8 +298,9 @@ double halfUnit(const std::string& figure) {
 // it: on a line of its output (standard output and error) the #N-th number after the words (the
 // first without #N) is the figure, to the digits it is written with and within 2% (the figures
 // rounding may move between CPUs' vector widths). "; brdfbake " runs several commands in turn, the
-// last one's output checked. So prose that drifts from its comment, or a command whose output
-// drifts from both, fails here.
+// last one's output checked. A command exits 0, or 1 where its verdict is that a check failed (energy
+// on a material that does not conserve: the figure is its excess). So prose that drifts from its
+// comment, or a command whose output drifts from both, fails here.
 TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
   const fs::path d = freshDir("readme", "figures");
   fs::create_directory_symlink(fs::path(BRDFBAKE_SOURCE_DIR) / "examples", d / "examples");
@@ -338,13 +339,14 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
         for (size_t at = 0;;) {
           const size_t next = args.find(then, at);
           r = run(args.substr(at, next == std::string::npos ? std::string::npos : next - at), d.string());
-          if (r.code != 0 || next == std::string::npos) break;
+          if ((r.code != 0 && r.code != 1) || next == std::string::npos) break;
           at = next + then.size();
         }
         ran[args] = r;
       }
       const CmdResult& r = ran[args];
-      EXPECT_EQ(r.code, 0) << where << ": brdfbake " << args << "\n" << r.out;
+      EXPECT_TRUE(r.code == 0 || r.code == 1) << where << ": brdfbake " << args << " exits " << r.code << "\n"
+                                              << r.out;
       const double want = std::strtod(figure.c_str(), nullptr), tolerance = halfUnit(figure) + 0.02 * std::fabs(want);
       bool printed = false;
       std::istringstream os(r.out);
