@@ -148,25 +148,66 @@ TEST(Docs, RelativeLinksResolve) {
   EXPECT_GT(checked, 10);
 }
 
+namespace {
+
+// A directory the pages' commands run in, as a reader's would be after the README's first command:
+// examples/ linked in and the default set baked into out/.
+fs::path pagesDir(const std::string& name) {
+  const fs::path d = freshDir("readme", name);
+  fs::create_directory_symlink(fs::path(BRDFBAKE_SOURCE_DIR) / "examples", d / "examples");
+  EXPECT_EQ(run("", d.string()).code, 0);
+  return d;
+}
+
+// The brdfbake commands of a page's ```sh blocks, each as its arguments, read as a shell reads
+// them: a line ending in "\" continues, "&&" separates commands, "time (...)" and a trailing
+// "# comment" are not the command's; "brdfbake" or "./build/brdfbake", other programs left out.
+std::vector<std::string> shCommands(const std::string& page) {
+  std::vector<std::string> out;
+  std::istringstream in(page);
+  bool sh = false, inBlock = false;
+  std::string joined;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("```", 0) == 0) {
+      sh = !inBlock && line == "```sh";
+      inBlock = !inBlock;
+      continue;
+    }
+    if (!inBlock || !sh) continue;
+    if (!line.empty() && line.back() == '\\') {
+      joined += line.substr(0, line.size() - 1) + " ";
+      continue;
+    }
+    std::string command = joined + line;
+    joined.clear();
+    const size_t hash = command.find(" #");
+    if (hash != std::string::npos) command.resize(hash);
+    for (size_t at = 0; at <= command.size();) {
+      const size_t amp = std::min(command.find("&&", at), command.size());
+      std::string part = command.substr(at, amp - at);
+      at = amp + 2;
+      part.erase(0, part.find_first_not_of(" ("));
+      if (part.rfind("time ", 0) == 0) part.erase(0, part.find_first_not_of(" (", 5));
+      while (!part.empty() && (part.back() == ' ' || part.back() == ')')) part.pop_back();
+      const std::string exe = part.rfind("./build/brdfbake", 0) == 0 ? "./build/brdfbake" : "brdfbake";
+      if (part.rfind(exe, 0) != 0 || (part.size() > exe.size() && part[exe.size()] != ' ')) continue;
+      out.push_back(part.substr(std::min(part.size(), exe.size() + 1)));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 // Every example the help shows runs as shown and exits 0, from a directory holding what they
 // name: examples/ linked in, the default set and a brdf3d table baked into out/.
 TEST(Docs, EveryHelpExampleRuns) {
-  const fs::path d = freshDir("readme", "examples");
-  fs::create_directory_symlink(fs::path(BRDFBAKE_SOURCE_DIR) / "examples", d / "examples");
-  ASSERT_EQ(run("", d.string()).code, 0);
+  const fs::path d = pagesDir("examples");
   ASSERT_EQ(run("bake --table brdf3d --size 8 -o out", d.string()).code, 0);
-  CmdResult list = run("help --markdown");
-  std::istringstream in(list.out);
-  bool sh = false;
   int ran = 0;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("```", 0) == 0) {
-      sh = line == "```sh";
-      continue;
-    }
-    if (!sh || line.rfind("brdfbake ", 0) != 0) continue;
-    CmdResult r = run(line.substr(9), d.string());
-    EXPECT_EQ(r.code, 0) << line << "\n" << r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0);
+  for (const std::string& args : shCommands(run("help --markdown").out)) {
+    CmdResult r = run(args, d.string());
+    EXPECT_EQ(r.code, 0) << "brdfbake " << args << "\n" << r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0);
     ++ran;
   }
   EXPECT_GE(ran, 15);
@@ -218,9 +259,7 @@ bool shownLineMatches(const std::string& shownLine, const std::string& got) {
 // matches the line after it (shownLineMatches). The figures a page quotes from a command are the
 // command's.
 TEST(Docs, ShownCommandsPrintWhatThePagesShow) {
-  const fs::path d = freshDir("readme", "shown");
-  fs::create_directory_symlink(fs::path(BRDFBAKE_SOURCE_DIR) / "examples", d / "examples");
-  ASSERT_EQ(run("", d.string()).code, 0);
+  const fs::path d = pagesDir("shown");
   ASSERT_EQ(run("bake --table brdf3d -o out", d.string()).code, 0);
   int shown = 0, lines = 0;
   for (const auto& e : fs::directory_iterator(fs::path(BRDFBAKE_SOURCE_DIR) / "docs")) {
@@ -302,9 +341,7 @@ double halfUnit(const std::string& figure) {
 // on a material that does not conserve: the figure is its excess). So prose that drifts from its
 // comment, or a command whose output drifts from both, fails here.
 TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
-  const fs::path d = freshDir("readme", "figures");
-  fs::create_directory_symlink(fs::path(BRDFBAKE_SOURCE_DIR) / "examples", d / "examples");
-  ASSERT_EQ(run("", d.string()).code, 0);
+  const fs::path d = pagesDir("figures");
   // at most three spaces in (a list item's); four or more make it code, an example of the form
   const std::regex note("^ {0,3}<!-- figure (\\S+) after \"([^\"]+)\"(?: #(\\d+))? from: brdfbake( .*)? -->");
   const std::regex started("^ {0,3}<!-- figure ");
@@ -345,8 +382,7 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
         ran[args] = r;
       }
       const CmdResult& r = ran[args];
-      EXPECT_TRUE(r.code == 0 || r.code == 1) << where << ": brdfbake " << args << " exits " << r.code << "\n"
-                                              << r.out;
+      EXPECT_TRUE(r.code == 0 || r.code == 1) << where << ": brdfbake " << args << " exits " << r.code << "\n" << r.out;
       const double want = std::strtod(figure.c_str(), nullptr), tolerance = halfUnit(figure) + 0.02 * std::fabs(want);
       bool printed = false;
       std::istringstream os(r.out);
@@ -370,54 +406,22 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
 // what the pages name, as the shown commands do. Lines ending in "\" continue; "time (...)",
 // "&&" and a trailing "# comment" are read as a shell reads them.
 TEST(Docs, EveryPageExampleRuns) {
-  const fs::path d = freshDir("readme", "pages");
-  fs::create_directory_symlink(fs::path(BRDFBAKE_SOURCE_DIR) / "examples", d / "examples");
-  ASSERT_EQ(run("", d.string()).code, 0);
+  const fs::path d = pagesDir("pages");
   int bakes = 0, others = 0;
   for (const auto& e : fs::directory_iterator(fs::path(BRDFBAKE_SOURCE_DIR) / "docs")) {
     if (e.path().extension() != ".md" || e.path().filename() == "commands-reference.md") continue;
-    std::istringstream in(bytes(e.path()));
-    bool sh = false, inBlock = false;
-    std::string joined;
-    for (std::string line; std::getline(in, line);) {
-      if (line.rfind("```", 0) == 0) {
-        sh = !inBlock && line == "```sh";
-        inBlock = !inBlock;
-        continue;
-      }
-      if (!inBlock || !sh) continue;
-      if (!line.empty() && line.back() == '\\') {
-        joined += line.substr(0, line.size() - 1) + " ";
-        continue;
-      }
-      std::string command = joined + line;
-      joined.clear();
-      const size_t hash = command.find(" #");
-      if (hash != std::string::npos) command.resize(hash);
-      std::string rest = command;
-      for (size_t at = 0; at <= rest.size();) {
-        const size_t amp = std::min(rest.find("&&", at), rest.size());
-        std::string part = rest.substr(at, amp - at);
-        at = amp + 2;
-        part.erase(0, part.find_first_not_of(" ("));
-        if (part.rfind("time ", 0) == 0) part.erase(0, part.find_first_not_of(" (", 5));
-        while (!part.empty() && (part.back() == ' ' || part.back() == ')')) part.pop_back();
-        const std::string exe = part.rfind("./build/brdfbake", 0) == 0 ? "./build/brdfbake" : "brdfbake";
-        if (part.rfind(exe, 0) != 0 || (part.size() > exe.size() && part[exe.size()] != ' ')) continue;
-        std::string args = part.substr(std::min(part.size(), exe.size() + 1));
-        std::istringstream words(args);
-        std::string first, second;
-        words >> first >> second;
-        const bool bake =
-            first.empty() || first[0] == '-' ||
-            (first == "bake" && second.find(".toml") == std::string::npos && second.find(".gl") == std::string::npos);
-        CmdResult r = run(bake ? args + " --dry-run" : args, d.string());
-        (bake ? bakes : others) += 1;
-        EXPECT_EQ(r.code, 0) << e.path().filename() << ": " << part << (bake ? " (as a dry run)" : "") << "\n"
-                             << r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0);
-        if (bake) {
-          EXPECT_NE(r.out.find("dry run: "), std::string::npos) << part << "\n" << r.out;
-        }
+    for (const std::string& args : shCommands(bytes(e.path()))) {
+      std::istringstream words(args);
+      std::string first, second;
+      words >> first >> second;
+      const bool scene = second.find(".toml") != std::string::npos || second.find(".gl") != std::string::npos;
+      const bool bake = first.empty() || first[0] == '-' || (first == "bake" && !scene);
+      CmdResult r = run(bake ? args + " --dry-run" : args, d.string());
+      (bake ? bakes : others) += 1;
+      EXPECT_EQ(r.code, 0) << e.path().filename() << ": brdfbake " << args << (bake ? " (as a dry run)" : "") << "\n"
+                           << r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0);
+      if (bake) {
+        EXPECT_NE(r.out.find("dry run: "), std::string::npos) << args << "\n" << r.out;
       }
     }
   }

@@ -110,6 +110,12 @@ mutation() {
                        '<!-- figure 0.97 after "16 texels per axis" #3' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
     doc-figure-form) set -- "$1" docs/convergence.md '<!-- figure 0.85 after "16 texels per axis" #3 from: brdfbake' \
                        '<!-- figure 0.85 after "16 texels per axis" #3 from brdfbake' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
+    doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
+                          '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
+    dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
+                      "Cli.DryRunListsWhatABakeWouldWriteAndWritesNothing" ;;
+    kind-name) set -- "$1" host/tables/microfacet/microfacet.cpp 'KindInfo avg{TableKind::AlbedoAvg, "albedo-avg"}' \
+                 'KindInfo avg{TableKind::AlbedoAvg, "albedo_avg"}' "Registry.EveryKindIsDescribedOnceByAFamilyThatBakesIt" ;;
     *) return 64 ;;
   esac
   run_one "$@"
@@ -122,7 +128,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        ltc-polygon-transposed ltc-distance-halved ltc-distance-in-float ltc-variance-one-pass ltc-claim-without-tenth
        ltc-e-claim-without-float avg-kink-breaks glass-reference-kink
        favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset
-       doc-quoted-figure doc-figure-note doc-figure-form"
+       doc-quoted-figure doc-figure-note doc-figure-form doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"

@@ -28,6 +28,13 @@ std::vector<TableReport> runPlan(const Plan& plan);
 
 std::string formatReport(const std::vector<TableReport>& reports);
 
+// The table of a plan as `plan SCENE` and `bake --dry-run` print it: its header, and a line per
+// table (the table's name tableWidth wide, its size, texels, estimated seconds, status statusWidth
+// wide, file).
+std::string planHeader(size_t tableWidth, size_t statusWidth);
+std::string planLine(size_t tableWidth, size_t statusWidth, const std::string& table, const std::string& size,
+                     double texels, double seconds, const std::string& status, const std::string& file);
+
 // `bake --dry-run`: the tables the plan would write (table, size, texels, the family's estimate of
 // its seconds on PoCL with two cores, whether its file is new or would be replaced, the file), the
 // models of each, and the total. Reads nothing but the directory; computes and writes nothing.

@@ -99,6 +99,21 @@ std::string energyWarnings(const TableImage& t) {
   return "";
 }
 
+std::string planHeader(size_t tableWidth, size_t statusWidth) {
+  char line[256];
+  std::snprintf(line, sizeof line, "  %-*s  %-12s  %10s  %7s  %-*s  %s\n", static_cast<int>(tableWidth), "table",
+                "size", "texels", "est. s", static_cast<int>(statusWidth), "status", "file");
+  return line;
+}
+
+std::string planLine(size_t tableWidth, size_t statusWidth, const std::string& table, const std::string& size,
+                     double texels, double seconds, const std::string& status, const std::string& file) {
+  char line[256];
+  std::snprintf(line, sizeof line, "  %-*s  %-12s  %10.0f  %7s  %-*s  ", static_cast<int>(tableWidth), table.c_str(),
+                size.c_str(), texels, fmtSeconds(seconds).c_str(), static_cast<int>(statusWidth), status.c_str());
+  return line + file + "\n";  // a path may be longer than any fixed buffer
+}
+
 std::string formatPlan(const Plan& plan) {
   std::vector<JobSummary> sums;
   double cost = 0;
@@ -110,10 +125,7 @@ std::string formatPlan(const Plan& plan) {
   }
   std::string out = "dry run: " + std::to_string(plan.jobs.size()) + " table(s) into " + plan.outDir + "/, about " +
                     fmtSeconds(cost) + " s on 2 cores (estimated); nothing is computed or written\n";
-  char line[1024];
-  std::snprintf(line, sizeof line, "  %-*s  %-12s  %10s  %7s  %-8s  %s\n", static_cast<int>(wt), "table", "size",
-                "texels", "est. s", "status", "file");
-  out += line;
+  out += planHeader(wt, 8);
   std::error_code ec;
   for (size_t i = 0; i < plan.jobs.size(); ++i) {
     const JobSummary& s = sums[i];
@@ -124,9 +136,7 @@ std::string formatPlan(const Plan& plan) {
       there = there || std::filesystem::exists(f, ec);
       names += (names.empty() ? "" : ", ") + f;
     }
-    std::snprintf(line, sizeof line, "  %-*s  %-12s  %10.0f  %7s  %-8s  %s\n", static_cast<int>(wt), s.table.c_str(),
-                  s.size.c_str(), s.texels, fmtSeconds(s.cost).c_str(), there ? "replaces" : "new", names.c_str());
-    out += line;
+    out += planLine(wt, 8, s.table, s.size, s.texels, s.cost, there ? "replaces" : "new", names);
     out += "    " + s.models + "\n";
   }
   return out;

@@ -45,39 +45,45 @@ struct LaunchArg {
   const std::vector<double>* reals = nullptr;  // InReals (nullptr: an empty input)
   size_t out = 0;                              // Out, OutReals: how many values
   static LaunchArg of(int v) {
-    return with(Int, [&](LaunchArg& a) { a.i = v; });
+    LaunchArg a(Int);
+    a.i = v;
+    return a;
   }
   static LaunchArg of(float v) {
-    return with(Float, [&](LaunchArg& a) { a.f = v; });
+    LaunchArg a(Float);
+    a.f = v;
+    return a;
   }
   static LaunchArg of(cl_float4 v) {
-    return with(Float4, [&](LaunchArg& a) { a.f4 = v; });
+    LaunchArg a(Float4);
+    a.f4 = v;
+    return a;
   }
   static LaunchArg input(const std::vector<float>& v) {
-    return with(In, [&](LaunchArg& a) { a.in = &v; });
+    LaunchArg a(In);
+    a.in = &v;
+    return a;
   }
   static LaunchArg inputReals(const std::vector<double>& v) {
-    return with(InReals, [&](LaunchArg& a) { a.reals = &v; });
+    LaunchArg a(InReals);
+    a.reals = &v;
+    return a;
   }
   // an input with nothing in it (a kernel's warm arguments, KernelNeed::warm)
-  static LaunchArg noInput(Type t) {
-    return with(t, [](LaunchArg&) {});
-  }
+  static LaunchArg noInput(Type t) { return LaunchArg(t); }
   static LaunchArg output(size_t n) {
-    return with(Out, [&](LaunchArg& a) { a.out = n; });
+    LaunchArg a(Out);
+    a.out = n;
+    return a;
   }
   static LaunchArg outputReals(size_t n) {
-    return with(OutReals, [&](LaunchArg& a) { a.out = n; });
+    LaunchArg a(OutReals);
+    a.out = n;
+    return a;
   }
 
  private:
-  template <class F>
-  static LaunchArg with(Type t, F set) {
-    LaunchArg a;
-    a.type = t;
-    set(a);
-    return a;
-  }
+  explicit LaunchArg(Type t) : type(t) {}
 };
 
 // A kernel a table needs compiled, for an NDF/GAF pair (kp: the NDF alone, gaf ignored). Own: a

@@ -13,8 +13,11 @@ namespace runner_detail {
 namespace {
 // Reals as the program's `real` (double when fp64, else float), at least one value.
 cl::Buffer realsBuffer(const cl::Context& ctx, const std::vector<double>* v, bool fp64) {
-  std::vector<double> d = v && !v->empty() ? *v : std::vector<double>{0.0};
-  if (fp64) return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, d.size() * sizeof(double), d.data());
+  static const std::vector<double> one = {0.0};
+  const std::vector<double>& d = v && !v->empty() ? *v : one;
+  if (fp64)  // copied by the driver at creation: the const is not written through
+    return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, d.size() * sizeof(double),
+                      const_cast<double*>(d.data()));
   std::vector<float> f(d.begin(), d.end());
   return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, f.size() * sizeof(float), f.data());
 }

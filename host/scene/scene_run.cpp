@@ -115,20 +115,13 @@ int runScenePlan(const SceneOptions& o) {
               << "): bake them in " << parts << " parts, --shard 1/" << parts << " ... --shard " << parts << "/"
               << parts << "\n";
   }
-  size_t wt = 5, wf = 4;
-  for (const auto& t : p.tables) {
-    wt = std::max(wt, t.table.size());
-    wf = std::max(wf, t.path.size());
-  }
-  char line[1024];
-  std::snprintf(line, sizeof line, "  %-*s  %-12s  %10s  %7s  %-10s  %s\n", int(wt), "table", "size", "texels",
-                "est. s", "status", "file");
-  std::cout << line;
+  size_t wt = 5;
+  for (const auto& t : p.tables) wt = std::max(wt, t.table.size());
+  std::cout << planHeader(wt, 10);
   for (size_t i = 0; i < p.tables.size(); ++i) {
     const auto& t = p.tables[i];
-    std::snprintf(line, sizeof line, "  %-*s  %-12s  %10.0f  %7s  %-10s  %s\n", int(wt), t.table.c_str(),
-                  t.size.c_str(), t.texels, fmtSeconds(t.cost).c_str(), statusName(st[i]), t.path.c_str());
-    std::cout << line << "    " << t.models << "\n";
+    std::cout << planLine(wt, 10, t.table, t.size, t.texels, t.cost, statusName(st[i]), t.path) << "    " << t.models
+              << "\n";
     for (const auto& r : t.reasons) std::cout << "    for " << r << "\n";
   }
   if (!p.leftOut.empty()) {

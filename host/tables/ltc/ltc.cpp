@@ -58,6 +58,13 @@ std::string dirOf(const std::string& path) {
   return s == std::string::npos ? "." : path.substr(0, s);
 }
 
+// File `file` (1: M^-1's entries, 2: the magnitudes) of the job planned at DIR/ltc_<lobe>.exr:
+// DIR/ltc<file>_<lobe>.exr, the extension the writers replace per format.
+std::string ltcFilePath(const std::string& jobPath, int file) {
+  const std::string dir = dirOf(jobPath);
+  return dir + "/ltc" + std::to_string(file) + "_" + jobPath.substr(dir.size() + 5);
+}
+
 class LtcFamily final : public TableFamily {
  public:
   std::string name() const override { return "ltc"; }
@@ -246,13 +253,10 @@ class LtcFamily final : public TableFamily {
     auto data = std::static_pointer_cast<const LtcTables>(ctx.cache.at("ltc:" + job.path));
     ctx.cache.erase("ltc:" + job.path);
     const LtcJob j = job.get<LtcJob>();
-    const std::string dir = dirOf(job.path);
-    const std::string base = job.path.substr(dir.size() + 1);  // ltc_<lobe>.exr
-    const std::string stem = base.substr(4);                   // <lobe>.exr
     const TableImage& m = set.keep.emplace_back(data->m);
     const TableImage& amp = set.keep.emplace_back(data->amp);
     for (int file = 0; file < 2; ++file) {
-      const std::string path = dir + "/ltc" + std::to_string(file + 1) + "_" + stem;
+      const std::string path = ltcFilePath(job.path, file + 1);
       TableReport r;
       r.table = "ltc";
       r.ndf = j.lobe.isDiffuse() ? diffuseNames()[j.lobe.diffuse] : ndfNames()[j.lobe.ndf];
@@ -293,10 +297,11 @@ class LtcFamily final : public TableFamily {
     // measured: 1000 s for the 52 microfacet pairs' 64^2 tables and 94 s for charlie's 4 on two
     // cores (docs/ltc.md), 4.8 ms a texel (the fit), against 1 us for an integral
     s.cost = s.texels * 4.8e-3;
-    const std::string dir = dirOf(job.path), stem = job.path.substr(dir.size() + 5);  // <lobe>.exr
     const std::string ext = formatExtension(j.formats.empty() ? FileFormat::Exr : j.formats.front());
-    for (int file = 1; file <= 2; ++file)
-      s.files.push_back(dir + "/ltc" + std::to_string(file) + "_" + stem.substr(0, stem.size() - 4) + ext);
+    for (int file = 1; file <= 2; ++file) {
+      const std::string path = ltcFilePath(job.path, file);
+      s.files.push_back(path.substr(0, path.size() - 4) + ext);  // .exr replaced
+    }
     return s;
   }
 };
