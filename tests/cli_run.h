@@ -21,9 +21,9 @@ struct CmdResult {
   std::string out;  // stdout and stderr
 };
 
-// `cwd`: the directory to run in ("" = the test's); `env`: assignments put before the command.
-inline CmdResult run(const std::string& args, const std::string& cwd = "", const std::string& env = "") {
-  std::string cmd = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + env + " '" BRDFBAKE_EXE "' " + args + " 2>&1";
+// A shell command line's output (stdout and stderr together) and exit status.
+inline CmdResult shell(const std::string& line) {
+  const std::string cmd = line + " 2>&1";
   FILE* p = popen(cmd.c_str(), "r");
   std::string out;
   std::array<char, 4096> buf;
@@ -31,6 +31,12 @@ inline CmdResult run(const std::string& args, const std::string& cwd = "", const
   while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
   int status = pclose(p);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+// brdfbake with `args`. `cwd`: the directory to run in ("" = the test's); `env`: assignments put
+// before the command.
+inline CmdResult run(const std::string& args, const std::string& cwd = "", const std::string& env = "") {
+  return shell((cwd.empty() ? "" : "cd '" + cwd + "' && ") + env + " '" BRDFBAKE_EXE "' " + args);
 }
 
 // TempDir/brdfbake_<prefix>_<name>_<pid>, emptied; created unless `create` is false (tests that

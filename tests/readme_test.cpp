@@ -340,10 +340,16 @@ double halfUnit(const std::string& figure) {
 // last one's output checked. A command exits 0, or 1 where its verdict is that a check failed (energy
 // on a material that does not conserve: the figure is its excess). So prose that drifts from its
 // comment, or a command whose output drifts from both, fails here.
+// Two more sources, for figures that no brdfbake command prints:
+//   from: brdfbake-bench ARGS    the benchmark in this build (exit 0), a quick run of it
+//   from: ctest -R NAME -V       one test's printout in this build: NAME the test's whole name,
+//                                a quick test, and it must pass
+// Each runs inside this test, so a figure from a run of minutes stays outside this form.
 TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
   const fs::path d = pagesDir("figures");
   // at most three spaces in (a list item's); four or more make it code, an example of the form
-  const std::regex note("^ {0,3}<!-- figure (\\S+) after \"([^\"]+)\"(?: #(\\d+))? from: brdfbake( .*)? -->");
+  const std::regex note("^ {0,3}<!-- figure (\\S+) after \"([^\"]+)\"(?: #(\\d+))? from: "
+                        "(brdfbake-bench .+|brdfbake(?: .*)?|ctest -R [\\w./]+ -V) -->");
   const std::regex started("^ {0,3}<!-- figure ");
   int figures = 0;
   std::map<std::string, CmdResult> ran;  // a command quoted for several figures runs once
@@ -358,31 +364,46 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
         // a comment that means to quote a figure and is not in the form would be skipped unseen
         EXPECT_FALSE(std::regex_search(page[i], started))
             << e.path().filename() << ":" << i + 1
-            << ": not the form <!-- figure X after \"WORDS\" [#N] from: brdfbake "
-            << "ARGS -->";
+            << ": not the form <!-- figure X after \"WORDS\" [#N] from: brdfbake ARGS --> (or from: brdfbake-bench "
+            << "ARGS, from: ctest -R NAME -V)";
         continue;
       }
       ++figures;
-      const std::string figure = m[1].str(), words = m[2].str(), args = m[4].matched ? m[4].str().substr(1) : "";
+      const std::string figure = m[1].str(), words = m[2].str(), command = m[4].str();
       const int nth = m[3].matched ? std::atoi(m[3].str().c_str()) : 1;
       const std::string where = e.path().filename().string() + ":" + std::to_string(i + 1) + ": " + figure;
       // the prose above quotes it as written
       bool quoted = false;
       for (size_t k = i; k-- > 0 && !page[k].empty();) quoted |= page[k].find(figure) != std::string::npos;
       EXPECT_TRUE(quoted) << where << ": not in the paragraph above its comment";
-      if (!ran.count(args)) {
-        const std::string then = "; brdfbake ";
+      const bool bench = command.rfind("brdfbake-bench ", 0) == 0, test = command.rfind("ctest ", 0) == 0;
+      if (!ran.count(command)) {
         CmdResult r{0, ""};
-        for (size_t at = 0;;) {
-          const size_t next = args.find(then, at);
-          r = run(args.substr(at, next == std::string::npos ? std::string::npos : next - at), d.string());
-          if ((r.code != 0 && r.code != 1) || next == std::string::npos) break;
-          at = next + then.size();
+        if (test) {
+          // the test by its whole name (a parameterised one's ctest name goes on with "  # GetParam() = ..."):
+          // exactly one runs, and it passes
+          const std::string name = command.substr(9, command.size() - 9 - 3);
+          r = shell("ctest --test-dir '" BRDFBAKE_BINARY_DIR "' -R '^" + name + "( |$)' -V");
+          if (r.code == 0 && r.out.find("100% tests passed, 0 tests failed out of 1\n") == std::string::npos) r.code = -2;
+        } else if (bench) {
+          r = shell("cd '" + d.string() + "' && '" BRDFBAKE_BINARY_DIR "/brdfbake-bench' " + command.substr(15));
+        } else {
+          // "; brdfbake " runs commands in turn
+          const std::string args = command.size() > 9 ? command.substr(9) : "", then = "; brdfbake ";
+          for (size_t at = 0;;) {
+            const size_t next = args.find(then, at);
+            r = run(args.substr(at, next == std::string::npos ? std::string::npos : next - at), d.string());
+            if ((r.code != 0 && r.code != 1) || next == std::string::npos) break;
+            at = next + then.size();
+          }
         }
-        ran[args] = r;
+        ran[command] = r;
       }
-      const CmdResult& r = ran[args];
-      EXPECT_TRUE(r.code == 0 || r.code == 1) << where << ": brdfbake " << args << " exits " << r.code << "\n" << r.out;
+      const CmdResult& r = ran[command];
+      // 1 is a brdfbake verdict (a check that failed); a test or the benchmark exits 0
+      EXPECT_TRUE(r.code == 0 || (r.code == 1 && !bench && !test))
+          << where << ": " << command << " exits " << r.code << " (-2: not one test passed)\n"
+          << r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0);
       const double want = std::strtod(figure.c_str(), nullptr), tolerance = halfUnit(figure) + 0.02 * std::fabs(want);
       bool printed = false;
       std::istringstream os(r.out);
@@ -390,7 +411,7 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
         const size_t at = line.find(words);
         if (at != std::string::npos) printed = std::fabs(numberAfter(line, at + words.size(), nth) - want) <= tolerance;
       }
-      EXPECT_TRUE(printed) << where << ": brdfbake " << args << " prints it nowhere as number " << nth << " after \""
+      EXPECT_TRUE(printed) << where << ": " << command << " prints it nowhere as number " << nth << " after \""
                            << words << "\"\n"
                            << r.out.substr(0, 3000);
     }
