@@ -70,8 +70,8 @@ mutation() {
                   "KernelReuse.NodesOverlapping" ;;
     fresnel-eta-z) set -- "$1" host/cl/runner_launch.cpp 'w.z = static_cast<float>(' 'w.z = 0 * static_cast<float>(' \
                      "FresnelEdge.StiffCornerWithinItsClaim" ;;
-    fresnel-kink-claim) set -- "$1" host/tables/error_model.h '  return kUnitRoundoff * mu * slope;' '  return 0 * kUnitRoundoff * mu * slope;' \
-                          "FresnelEdge.TheSweepsEdgesHold" ;;
+    fresnel-kink-offset) set -- "$1" kernels/integrate/integrand.h '  return fresnel_F_g2(p.fresnel, p.fr_x, p.fr_z, oh, dc * (oh + ck));' \
+                           '  return fresnel_F_g2(p.fresnel, p.fr_x, p.fr_z, oh, oh * oh - ck * ck);' "FresnelEdge.TheSweepsEdgesHold" ;;
     fresnel-float-model) set -- "$1" host/tables/error_model.h 'constexpr FloatModel kFresnelFloat{10, 4};' \
                            'constexpr FloatModel kFresnelFloat{6, 3};' "FresnelEdge.TheSweepsEdgesHold" ;;
     fresnel-layer) set -- "$1" kernels/brdf/fresnel.h '  return w < FRESNEL_GRADE_MAX ? w : RC(0.0);' '  return RC(0.0);' \
@@ -123,7 +123,7 @@ mutation() {
 names="browser-image program-identity program-checksum progress-on-pipe render-lobe render-glass render-single render-glass-dark glass-eta-axis
        beckmann-fit beckmann-compensation cos-arc view-once polynomial-arc
        canonical-gaf trap-pi-batch ggx-one-division trap-lanes arc-lanes gk-pair lane-sum4 node-reuse devices-stale
-       fresnel-eta-z fresnel-layer fresnel-claim-inflated fresnel-kink-claim fresnel-float-model
+       fresnel-eta-z fresnel-layer fresnel-claim-inflated fresnel-kink-offset fresnel-float-model
        driver-guards exr-header-sizes kind-twice scene-size-keys library-holds-a-client
        ltc-polygon-transposed ltc-distance-halved ltc-distance-in-float ltc-variance-one-pass ltc-claim-without-tenth
        ltc-e-claim-without-float avg-kink-breaks glass-reference-kink

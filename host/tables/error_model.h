@@ -104,27 +104,6 @@ inline FloatModel hemiFloatModel(int ndf, int gaf, bool weighted = false) {
   }
 }
 
-// Near a Fresnel term's total internal reflection (dielectric and schlick-tir with eta < 1, the kink
-// at o.h = c_k = sqrt(1 - eta^2)) the float F moves by its slope times o.h's own rounding: g^2 =
-// c^2 - c_k^2 keeps the rounding of c^2 while g^2 itself is small (at eta = 0.2, 128^2, mu =
-// 0.98046875, a texel above c_k = 0.9798, the device was up to 53 u off the same rule in double,
-// 4.1 times its claim). The term: u mu |F(mu + w) - F(mu - w)|/(2 w), F's secant slope over the
-// lobe's spread in o.h, w = alpha sqrt(1 - mu^2) + alpha^2 (alpha = r^2). At those texels (r =
-// 1/256 to 7/256) it is 1.19 to 3.1 times the largest error over the 38 pairs (3.2e-6 at r = 7/256;
-// ggx + smith-correlated's errors there are up to 1.1e-6); it is 0 for a weight without a kink.
-inline bool hasFresnelKink(int model, double eta) {
-  return (model == FRESNEL_DIELECTRIC || model == FRESNEL_SCHLICK_TIR) && eta < 1;
-}
-inline double fresnelKinkFloat(int model, double eta, double mu, double r) {
-  if (!hasFresnelKink(model, eta)) return 0;
-  const double alpha = r * r, w = std::max(alpha * std::sqrt(std::max(0.0, 1 - mu * mu)) + alpha * alpha, 1e-7);
-  const double lo = std::max(0.0, mu - w), hi = std::min(1.0, mu + w);
-  if (!(hi > lo)) return 0;
-  const double slope =
-      std::fabs(brdf64::fresnel_F(model, eta, 0.0, hi) - brdf64::fresnel_F(model, eta, 0.0, lo)) / (hi - lo);
-  return kUnitRoundoff * mu * slope;
-}
-
 // The float arithmetic's bound for a texel whose largest moment is `scale`, relative to
 // max(1, |value|).
 inline double floatArithmeticError(double scale, FloatModel m = kHemiFloat) {

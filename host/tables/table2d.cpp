@@ -18,8 +18,7 @@ std::string modelsOf(const TableJob& job) {
   return ndfNames()[job.ndf] + "+" + gafNames()[job.gaf];
 }
 
-void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int ndf, int gaf, int diffuse,
-               const std::vector<double>* extra) {
+void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int ndf, int gaf, int diffuse) {
   if (claim.empty()) claim.assign(t.err.size(), 0.0);
   for (size_t x = 0; x < t.err.size(); ++x) {
     double scale = 0;
@@ -49,7 +48,6 @@ void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int nd
         arith = floatArithmeticError(scale, diffuseFloatModel(diffuse));
         break;
     }
-    if (extra) arith += (*extra)[x];
     claim[x] = std::max(claim[x], static_cast<double>(t.err[x]) + arith);
   }
 }

@@ -25,9 +25,7 @@ enum class Arith {
 
 // Each texel's claim from one kernel run: its quadrature estimate plus its float arithmetic,
 // merged (the largest) into `claim`.
-// extra: a per-texel term added to each texel's float part (the Fresnel kink's), or none.
-void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int ndf, int gaf, int diffuse = -1,
-               const std::vector<double>* extra = nullptr);
+void addClaims(std::vector<double>& claim, const KernelTable& t, Arith a, int ndf, int gaf, int diffuse = -1);
 
 // A family's part of a 2D table: planes (one value: repeated in R, G, B), channels (empty: R, G,
 // B), its own attributes (brdf.fresnel, brdf.channels, brdf.method, ranges) and each texel's claim.

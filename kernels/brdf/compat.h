@@ -33,6 +33,8 @@
 
 #ifdef __OPENCL_C_VERSION__
 #define BRDF_FN static inline __attribute__((overloadable))
+/* A shared function kept out of line (integrand.h hemi_fresnel_weight says why) */
+#define BRDF_FN_OUTLINE static __attribute__((overloadable, noinline))
 #if defined(BRDF_DEVICE_DOUBLE) && defined(cl_khr_fp64)
 /* Programs that evaluate the models at points rather than integrate them (kernels/brdf3d.cl) ask
  * for `real` = double where the device has it: one pass, no lanes. */
@@ -106,6 +108,7 @@ BRDF_TAB_AT(const float*)
 #else /* C++ host */
 #include <cmath>
 #define BRDF_FN static inline
+#define BRDF_FN_OUTLINE static inline
 #define RC(x) ((real)(x))
 #define BRDF_CONST static const
 #define BRDF_TABLE const

@@ -41,28 +41,34 @@ BRDF_FN param_t fresnel_e2m1(param_t eta, param_t z) { return (eta - RC(1.0)) * 
 /* Exact unpolarised dielectric (Cook and Torrance 1982, with MODELS.md errata):
  * g^2 = eta^2 + c^2 - 1, F = 1/2 (g-c)^2/(g+c)^2 (1 + (c(g+c) - 1)^2/(c(g-c) + 1)^2); F = 1 when g^2 < 0.
  * g^2 as (eta - 1)(eta + 1) + c^2: eta^2 - 1 + c^2 loses c^2 next to 1 near eta = 1 (at eta = 1 and
- * c < 1e-8 in double it gave g = 0, F = 1 instead of 0; the rough dielectric's grazing corner). */
-BRDF_FN real fresnel_dielectric_z(param_t eta, param_t z, real c) {
-  c = fabs(c);
-  real g2 = fresnel_e2m1(eta, z) + c * c;
+ * c < 1e-8 in double it gave g = 0, F = 1 instead of 0; the rough dielectric's grazing corner).
+ * fresnel_dielectric_g2 takes g^2 from the caller: the integrators form it next to the kink. */
+BRDF_FN real fresnel_dielectric_g2(real c, real g2) {
   real g = sqrt(fmax(g2, RC(0.0)));
   real a = (g - c) / fmax(g + c, RC(1e-30)); /* eta = 1 at c = 0: 0, the limit of F = 0 */
   real b = (c * (g + c) - RC(1.0)) / (c * (g - c) + RC(1.0));
   real f = RC(0.5) * a * a * (RC(1.0) + b * b);
   return g2 < RC(0.0) ? RC(1.0) : f;
 }
+BRDF_FN real fresnel_dielectric_z(param_t eta, param_t z, real c) {
+  c = fabs(c);
+  return fresnel_dielectric_g2(c, fresnel_e2m1(eta, z) + c * c);
+}
 BRDF_FN real fresnel_dielectric(param_t eta, real c) { return fresnel_dielectric_z(eta, RC(0.0), c); }
 
 /* Schlick on the transmitted angle where eta < 1 (Burley 2015, MODELS.md errata):
  * cos^2 t = 1 - (1 - c^2)/eta^2 = (c^2 + eta^2 - 1)/eta^2 (the second form: no cancellation near
  * the critical angle); F = 1 when that is negative. F0 = ((eta-1)/(eta+1))^2. z: fresnel_e2m1. */
-BRDF_FN real fresnel_schlick_tir_z(param_t eta, param_t z, real c) {
+BRDF_FN real fresnel_schlick_tir_g2(param_t eta, param_t z, real c, real g2) {
   param_t f0 = (eta - RC(1.0)) / (eta + RC(1.0));
   f0 *= f0;
   param_t d = fresnel_e2m1(eta, z);
-  real ct2 = (c * c + d) / (eta * eta);
+  real ct2 = g2 / (eta * eta);
   real f = fresnel_schlick(f0, d >= RC(0.0) ? c : sqrt(fmax(ct2, RC(0.0))));
   return (d < RC(0.0) && ct2 < RC(0.0)) ? RC(1.0) : f;
+}
+BRDF_FN real fresnel_schlick_tir_z(param_t eta, param_t z, real c) {
+  return fresnel_schlick_tir_g2(eta, z, c, c * c + fresnel_e2m1(eta, z));
 }
 BRDF_FN real fresnel_schlick_tir(param_t eta, real c) { return fresnel_schlick_tir_z(eta, RC(0.0), c); }
 
@@ -125,6 +131,12 @@ BRDF_FN real fresnel_Fz(int model, param_t x, param_t y, param_t z, real c) {
 }
 BRDF_FN real fresnel_F(int model, param_t x, param_t y, real c) { return fresnel_Fz(model, x, y, RC(0.0), c); }
 
+/* A model with a kink (dielectric, schlick-tir; fresnel_kink > 0) at o.h = c, given
+ * g^2 = c^2 - ck^2 computed without cancellation (integrand.h). */
+BRDF_FN real fresnel_F_g2(int model, param_t x, param_t z, real c, real g2) {
+  return model == FRESNEL_DIELECTRIC ? fresnel_dielectric_g2(c, g2) : fresnel_schlick_tir_g2(x, z, c, g2);
+}
+
 #ifndef BRDF_LANE_PASS
 /* Where F has a kink: total internal reflection sets in at o.h = sqrt(1 - eta^2) for eta < 1
  * (dielectric, schlick-tir); the integrators split there. -1: nowhere. */
@@ -132,6 +144,23 @@ BRDF_FN real fresnel_kink(int moments, int model, real x, real z) {
   if (moments != HEMI_FRESNEL || (model != FRESNEL_DIELECTRIC && model != FRESNEL_SCHLICK_TIR)) return RC(-1.0);
   real d = fresnel_e2m1(x, z);
   return d < RC(0.0) ? sqrt(-d) : RC(-1.0);
+}
+/* The same kink to about twice float precision, as its return value plus *lo. Beside the kink F
+ * depends on o.h through g^2 = (o.h)^2 - ck^2, whose float value keeps the rounding of (o.h)^2 and
+ * of ck^2 = 1 - eta^2 while g^2 itself is small, and F's slope there amplifies it: at eta = 0.2,
+ * 128^2, mu = 0.98046875 (6.7e-4 above ck) the albedo was 4 to 54 u off the same rule in double,
+ * by pair. The integrators form o.h - ck from the node's geometry instead (integrand.h
+ * hemi_kink_offset), which needs ck itself beyond float: eta^2 = p + pe exactly (fma), p - 1 =
+ * s + e exactly (Fast2Sum, |p| < 1 where there is a kink), so eta^2 - 1 + z = s + (e + pe + z) and
+ * ck^2 - hi^2 = -(s + hi^2) - (e + pe + z), the first term exact in one fma. */
+BRDF_FN real fresnel_kink_split(int moments, int model, real x, real z, real* lo) {
+  *lo = RC(0.0);
+  real hi = fresnel_kink(moments, model, x, z);
+  if (hi <= RC(0.0)) return hi;
+  real p = x * x, pe = fma(x, x, -p);
+  real s = p - RC(1.0), e = p - (s + RC(1.0));
+  *lo = (fma(-hi, hi, -s) - (e + pe + z)) / (RC(2.0) * hi);
+  return hi;
 }
 /* The scale of o.h on which a dielectric (or schlick-tir) of eta slightly above 1 falls from 1 at
  * grazing to its F0: sqrt(eta^2 - 1). 0 where no such layer needs resolving (eta >= 1.5, or other

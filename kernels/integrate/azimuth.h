@@ -252,9 +252,10 @@ BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, r
   /* zeroed: only the first nk are read, which GCC's host build cannot see (-Wmaybe-uninitialized) */
   real kinks[4] = {RC(0.0), RC(0.0), RC(0.0), RC(0.0)};
   int nk = gaf_kinks(gaf, mu, s, h.c, sn, kinks);
-  /* Fresnel's kink at o.h = oc (total internal reflection): cos phi = (oc - mu c)/(s sn); F has a
-   * square-root end there (panels beside it substitute) */
-  real oc = fresnel_kink(p.moments, p.fresnel, p.fr_x, p.fr_z);
+  /* Fresnel's kink at o.h = oc (total internal reflection): cos phi = (oc - mu c)/(s sn), formed
+   * as the integrand forms o.h - oc (integrand.h hemi_kink_offset); F has a square-root end there
+   * (panels beside it substitute) */
+  real oc_lo, oc = fresnel_kink_split(p.moments, p.fresnel, p.fr_x, p.fr_z, &oc_lo);
   real fk = RC(-1.0);
   /* Where the kink nearly touches phi = pi, F's square root sits close to the real axis without
    * being on a panel end: sqrt(x - oc) with x - oc ~ d + (s sn/2)(pi - phi)^2 near pi, singular at
@@ -267,7 +268,7 @@ BRDF_FN int hemi_phi_plan(int gaf, BrdfParams p, real mu, real s, BrdfAngle h, r
    * (sqrt_near_pi, quadrature.h). */
   real fg = RC(-1.0), fw = RC(0.0); /* the graded point and the first panel's width (fw = 0: none) */
   if (oc > RC(0.0) && s * sn > RC(0.0)) {
-    real ck = (oc - mu * h.c) / (s * sn);
+    real ck = -hemi_kink_offset(mu, h.c, h.s2, oc, oc_lo) / (s * sn);
     if (ck < RC(1.0) && ck > RC(-1.0)) {
       fk = acos(ck);
       kinks[nk++] = ck;

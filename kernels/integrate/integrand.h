@@ -31,6 +31,39 @@ BRDF_FN BrdfParams hemi_view(int ndf, int gaf, BrdfParams p, param_t mu, param_t
 }
 #endif
 
+/* o.h - ck less its phi term s sn cos(phi), at theta_h (c, s2 = sin^2 theta_h): for a Fresnel
+ * weight with a kink at o.h = ck (ck + ck_lo: fresnel_kink_split),
+ *   o.h - ck = s sn cos(phi) + (mu - ck) - mu (1 - c),  1 - c = s2/(1 + c),
+ * each term to its own float precision, where o.h's float value is within about u of o.h, not of
+ * o.h - ck. g^2 = (o.h - ck)(o.h + ck) then keeps a relative precision next to the kink (fresnel.h
+ * fresnel_kink_split says what that is worth), and the integrators put the kink's panel breaks
+ * where this offset says it is (azimuth.h hemi_phi_plan). */
+BRDF_FN real hemi_kink_offset(param_t mu, real c, real s2, param_t ck, param_t ck_lo) {
+  return ((mu - ck) - ck_lo) - mu * (s2 / (RC(1.0) + c));
+}
+
+/* The Fresnel weight (model and x, y, z: BrdfParams' fresnel, fr_*) at o.h = oh, sp = s sn cos(phi),
+ * at theta_h (c, s2): next to a kink from o.h - ck, hemi_kink_offset plus sp. With theta_h one value
+ * for every lane (c, s2 param_t): its offset is formed once, not per lane (hemi_fresnel_weight_c
+ * takes them per lane). Out of line, with scalar arguments: written into hemi_node the kink's code
+ * slowed the split sum, which never takes it, and passing BrdfParams slowed the weights that do
+ * (docs/performance.md, "Kernel choices"). */
+BRDF_FN_OUTLINE real hemi_fresnel_weight(int model, param_t x, param_t y, param_t z, param_t mu, real sp, param_t c,
+                                         param_t s2, real oh) {
+  param_t ck_lo, ck = fresnel_kink_split(HEMI_FRESNEL, model, x, z, &ck_lo);
+  if (ck > RC(0.0)) {
+    param_t off = hemi_kink_offset(mu, c, s2, ck, ck_lo);
+    return fresnel_F_g2(model, x, z, oh, (sp + off) * (oh + ck));
+  }
+  return fresnel_Fz(model, x, y, z, oh);
+}
+BRDF_FN_OUTLINE real hemi_fresnel_weight_c(int model, param_t x, param_t y, param_t z, param_t mu, real sp, real c,
+                                           real s2, real oh) {
+  param_t ck_lo, ck = fresnel_kink_split(HEMI_FRESNEL, model, x, z, &ck_lo);
+  if (ck > RC(0.0)) return fresnel_F_g2(model, x, z, oh, (sp + hemi_kink_offset(mu, c, s2, ck, ck_lo)) * (oh + ck));
+  return fresnel_Fz(model, x, y, z, oh);
+}
+
 /* The integrand H split by the weight w(o.h) that p.moments names (ndf.h BrdfParams): fb = H w,
  * fa = H (1 - w); Schlick's (1 - o.h)^5 for the split-sum pair. At the angle h (sn = sin theta_h)
  * and cphi = cos phi: one theta_h for every lane, cphi per lane. */
@@ -46,7 +79,7 @@ BRDF_FN void hemi_node(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, Br
   real H = gaf_G_over_no(gaf, ndf, p, ni, mu, h.c, oh, s2i, s2o) * oh * ic;
   real w;
   if (p.moments == HEMI_FRESNEL)
-    w = fresnel_Fz(p.fresnel, p.fr_x, p.fr_y, p.fr_z, oh);
+    w = hemi_fresnel_weight(p.fresnel, p.fr_x, p.fr_y, p.fr_z, mu, s * sn * cphi, h.c, h.s2, oh);
   else if (p.moments == HEMI_F82C)
     w = fresnel_f82_weight(oh);
   else
@@ -69,7 +102,7 @@ BRDF_FN void hemi_node_c(int ndf, int gaf, BrdfParams p, param_t mu, param_t s, 
   real H = gaf_G_over_no(gaf, ndf, p, ni, mu, c, oh, s2i, s2o) * oh * (RC(1.0) / c);
   real w;
   if (p.moments == HEMI_FRESNEL)
-    w = fresnel_Fz(p.fresnel, p.fr_x, p.fr_y, p.fr_z, oh);
+    w = hemi_fresnel_weight_c(p.fresnel, p.fr_x, p.fr_y, p.fr_z, mu, s * sn * cphi, c, sn * sn, oh);
   else if (p.moments == HEMI_F82C)
     w = fresnel_f82_weight(oh);
   else

@@ -144,21 +144,7 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       for (int c = 0; c < fc.channels(); ++c) {
         KernelTable t = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, weight(c), job.muSqrt);
         img.planes.push_back(t.planes[1]);
-        // the float error next to a Fresnel kink (tables/error_model.h fresnelKinkFloat), per texel,
-        // for the weights that have one (eta < 1 with total internal reflection)
-        const double eta = fc.modelParams(c).first;
-        std::vector<double> kink;
-        if (hasFresnelKink(fc.model, eta)) {
-          const auto at = [&](int k, int n) { return job.nodeGrid ? (n > 1 ? k / (n - 1.0) : 0.0) : (k + 0.5) / n; };
-          kink.resize(t.err.size());
-          for (int j = 0; j < job.height; ++j)
-            for (int i = 0; i < job.width; ++i) {
-              const double x = at(i, job.width), mu = job.muSqrt ? x * x : x;
-              kink[static_cast<size_t>(j) * job.width + i] = fresnelKinkFloat(fc.model, eta, mu, at(j, job.height));
-            }
-        }
-        addClaims(claim, t, weightCancels(fc.model) ? Arith::HemiWeightedCancel : Arith::HemiWeighted, job.ndf, job.gaf,
-                  -1, kink.empty() ? nullptr : &kink);
+        addClaims(claim, t, weightCancels(fc.model) ? Arith::HemiWeightedCancel : Arith::HemiWeighted, job.ndf, job.gaf);
         if (c == 0) kt = t;
       }
       fresnel = fc.describe();
