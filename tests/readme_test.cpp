@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -449,4 +450,52 @@ TEST(Docs, EveryPageExampleRuns) {
   EXPECT_GE(bakes, 10);
   EXPECT_GE(others, 1);
   std::printf("%d bakes planned (--dry-run), %d other commands run\n", bakes, others);
+}
+
+// The tests the pages and the README name exist in this build, so that a reader who runs one finds
+// it: every `Suite.Name` whose suite is one of ours (a name such as Unity's
+// `RenderTextureFormat.ARGB2101010` is not) is a test that ctest lists (a disabled one without its
+// DISABLED_ prefix, as ctest names it), and every `ctest -R PATTERN` selects at least one test.
+TEST(Docs, NamedTestsExist) {
+  const CmdResult listed = shell("ctest --test-dir '" BRDFBAKE_BINARY_DIR "' -N");
+  ASSERT_EQ(listed.code, 0) << listed.out;
+  std::set<std::string> suites;
+  {
+    const std::regex test("Test +#\\d+: (?:\\w+/)?(\\w+)\\.");
+    for (std::sregex_iterator it(listed.out.begin(), listed.out.end(), test), end; it != end; ++it)
+      suites.insert((*it)[1].str());
+  }
+  ASSERT_GE(suites.size(), 20u) << listed.out.substr(0, 2000);
+  const std::regex named("`(?:\\w+/)?([A-Z]\\w*)\\.([A-Z]\\w*)`");
+  const std::regex pattern("ctest -R (?:'([^']+)'|\"([^\"]+)\"|([^\\s`'\"|)]+))");
+  std::vector<fs::path> pages{fs::path(BRDFBAKE_SOURCE_DIR) / "README.md"};
+  for (const auto& e : fs::directory_iterator(fs::path(BRDFBAKE_SOURCE_DIR) / "docs"))
+    if (e.path().extension() == ".md") pages.push_back(e.path());
+  int names = 0, patterns = 0;
+  std::map<std::string, bool> selects;  // a pattern quoted on several pages runs once
+  for (const fs::path& page : pages) {
+    const std::string text = bytes(page);
+    for (std::sregex_iterator it(text.begin(), text.end(), named), end; it != end; ++it) {
+      const std::string suite = (*it)[1].str();
+      if (!suites.count(suite)) continue;
+      std::string name = (*it)[2].str();
+      if (name.rfind("DISABLED_", 0) == 0) name = name.substr(9);
+      ++names;
+      EXPECT_NE(listed.out.find(suite + "." + name), std::string::npos)
+          << page.filename() << ": `" << (*it)[0].str() << "` is no test of this build";
+    }
+    for (std::sregex_iterator it(text.begin(), text.end(), pattern), end; it != end; ++it) {
+      const std::string p = (*it)[1].matched ? (*it)[1].str() : (*it)[2].matched ? (*it)[2].str() : (*it)[3].str();
+      if (p.empty() || p == "NAME") continue;  // development.md's form names its placeholder
+      ++patterns;
+      if (!selects.count(p)) {
+        const CmdResult r = shell("ctest --test-dir '" BRDFBAKE_BINARY_DIR "' -N -R '" + p + "'");
+        selects[p] = r.code == 0 && r.out.find("Total Tests: 0\n") == std::string::npos;
+      }
+      EXPECT_TRUE(selects[p]) << page.filename() << ": ctest -R " << p << " selects no test";
+    }
+  }
+  EXPECT_GE(names, 50);
+  EXPECT_GE(patterns, 20);
+  std::printf("%d test names and %d ctest -R patterns on the pages, each a test of this build\n", names, patterns);
 }

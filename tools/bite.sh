@@ -110,6 +110,16 @@ mutation() {
                        '<!-- figure 0.97 after "16 texels per axis" #3' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
     doc-figure-form) set -- "$1" docs/convergence.md '<!-- figure 0.85 after "16 texels per axis" #3 from: brdfbake' \
                        '<!-- figure 0.85 after "16 texels per axis" #3 from brdfbake' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
+    doc-test-figure) set -- "$1" tests/tables/dielectric/dielectric_test.cpp \
+                       'worst device error against the reference %.2e\n", worst);' \
+                       'worst device error against the reference %.2e\n", 2 * worst);' \
+                       "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
+    doc-test-name) set -- "$1" docs/rough-glass.md 'from: ctest -R Dielectric.KernelMatchesReference -V' \
+                     'from: ctest -R Dielectric.KernelMatchesReferenc -V' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
+    doc-bench-figure) set -- "$1" docs/accuracy.md '<!-- figure 2.59e-7 after "splitsum" #2 from: brdfbake-bench' \
+                        '<!-- figure 2.59e-7 after "splitsum" #3 from: brdfbake-bench' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
+    doc-test-named) set -- "$1" docs/ltc.md '`Ltc.DistanceEstimateHoldsAgainstTheReference`' \
+                      '`Ltc.DistanceEstimateHoldsAgainstAQuadrature`' "Docs.NamedTestsExist" ;;
     doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
                           '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
     dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
@@ -128,7 +138,8 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        ltc-polygon-transposed ltc-distance-halved ltc-distance-in-float ltc-variance-one-pass ltc-claim-without-tenth
        ltc-e-claim-without-float avg-kink-breaks glass-reference-kink
        favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset
-       doc-quoted-figure doc-figure-note doc-figure-form doc-example-option dry-run-status kind-name"
+       doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named
+       doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
