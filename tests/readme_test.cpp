@@ -349,8 +349,9 @@ double halfUnit(const std::string& figure) {
 TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
   const fs::path d = pagesDir("figures");
   // at most three spaces in (a list item's); four or more make it code, an example of the form
-  const std::regex note("^ {0,3}<!-- figure (\\S+) after \"([^\"]+)\"(?: #(\\d+))? from: "
-                        "(brdfbake-bench .+|brdfbake(?: .*)?|ctest -R [\\w./]+ -V) -->");
+  const std::regex note(
+      "^ {0,3}<!-- figure (\\S+) after \"([^\"]+)\"(?: #(\\d+))? from: "
+      "(brdfbake-bench .+|brdfbake(?: .*)?|ctest -R [\\w./]+ -V) -->");
   const std::regex started("^ {0,3}<!-- figure ");
   int figures = 0;
   std::map<std::string, CmdResult> ran;  // a command quoted for several figures runs once
@@ -385,7 +386,8 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
           // exactly one runs, and it passes
           const std::string name = command.substr(9, command.size() - 9 - 3);
           r = shell("ctest --test-dir '" BRDFBAKE_BINARY_DIR "' -R '^" + name + "( |$)' -V");
-          if (r.code == 0 && r.out.find("100% tests passed, 0 tests failed out of 1\n") == std::string::npos) r.code = -2;
+          if (r.code == 0 && r.out.find("100% tests passed, 0 tests failed out of 1\n") == std::string::npos)
+            r.code = -2;
         } else if (bench) {
           r = shell("cd '" + d.string() + "' && '" BRDFBAKE_BINARY_DIR "/brdfbake-bench' " + command.substr(15));
         } else {
@@ -412,8 +414,8 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
         const size_t at = line.find(words);
         if (at != std::string::npos) printed = std::fabs(numberAfter(line, at + words.size(), nth) - want) <= tolerance;
       }
-      EXPECT_TRUE(printed) << where << ": " << command << " prints it nowhere as number " << nth << " after \""
-                           << words << "\"\n"
+      EXPECT_TRUE(printed) << where << ": " << command << " prints it nowhere as number " << nth << " after \"" << words
+                           << "\"\n"
                            << r.out.substr(0, 3000);
     }
   }

@@ -23,8 +23,9 @@ struct AvgSum {
 // Where an entry's first panels end: the views where the GAF's E(mu) is singular
 // (brdf64::gaf_view_breaks), and for a Fresnel weight with a critical cosine oc (eta < 1), where
 // E_F(mu) bends: oc, and oc +- 1, 3 and 10 lobe widths w = alpha sqrt(1 - oc^2) + alpha^2 (the
-// spread of o.h over the lobe) at the entry's r. Without them, at eta = 0.9999, r = 3/64 the rule's |K - G| saw 2.9e-6 where the
-// average was off by 1.4e-5 (tests/tables/microfacet/fresnel_edge_test.cpp, AverageAlbedoAtTheStiffCorner).
+// spread of o.h over the lobe) at the entry's r. Without them, at eta = 0.9999, r = 3/64 the
+// rule's |K - G| saw 2.9e-6 where the average was off by 1.4e-5
+// (tests/tables/microfacet/fresnel_edge_test.cpp, AverageAlbedoAtTheStiffCorner).
 struct AvgBreaks {
   std::vector<double> view;
   double kink = -1;  // oc, or -1

@@ -148,11 +148,12 @@ BRDF_FN real fresnel_kink(int moments, int model, real x, real z) {
 /* The same kink to about twice float precision, as its return value plus *lo. Beside the kink F
  * depends on o.h through g^2 = (o.h)^2 - ck^2, whose float value keeps the rounding of (o.h)^2 and
  * of ck^2 = 1 - eta^2 while g^2 itself is small, and F's slope there amplifies it: at eta = 0.2,
- * 128^2, mu = 0.98046875 (6.7e-4 above ck) the albedo was 4 to 54 u off the same rule in double,
- * by pair. The integrators form o.h - ck from the node's geometry instead (integrand.h
- * hemi_kink_offset), which needs ck itself beyond float: eta^2 = p + pe exactly (fma), p - 1 =
- * s + e exactly (Fast2Sum, |p| < 1 where there is a kink), so eta^2 - 1 + z = s + (e + pe + z) and
- * ck^2 - hi^2 = -(s + hi^2) - (e + pe + z), the first term exact in one fma. */
+ * 128^2, mu = 0.98046875 (6.7e-4 above ck), r = 1/256 to 7/256, the albedo was up to 53 u off the
+ * reference over the 52 pairs, and is within 1.39 u with o.h - ck formed from the node's geometry
+ * (integrand.h hemi_kink_offset; docs/accuracy.md, "The whole sweep"). That needs ck itself beyond
+ * float: eta^2 = p + pe exactly (fma), p - 1 = s + e exactly (Fast2Sum, |p| < 1 where there is a
+ * kink), so eta^2 - 1 + z = s + (e + pe + z) and ck^2 - hi^2 = -(s + hi^2) - (e + pe + z), the
+ * first term exact in one fma. */
 BRDF_FN real fresnel_kink_split(int moments, int model, real x, real z, real* lo) {
   *lo = RC(0.0);
   real hi = fresnel_kink(moments, model, x, z);

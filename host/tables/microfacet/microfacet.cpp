@@ -144,7 +144,8 @@ TableImage computeTable(KernelRunner& runner, const TableJob& job, double* secon
       for (int c = 0; c < fc.channels(); ++c) {
         KernelTable t = runner.hemisphere(job.ndf, job.gaf, job.width, job.height, job.nodeGrid, weight(c), job.muSqrt);
         img.planes.push_back(t.planes[1]);
-        addClaims(claim, t, weightCancels(fc.model) ? Arith::HemiWeightedCancel : Arith::HemiWeighted, job.ndf, job.gaf);
+        addClaims(claim, t, weightCancels(fc.model) ? Arith::HemiWeightedCancel : Arith::HemiWeighted, job.ndf,
+                  job.gaf);
         if (c == 0) kt = t;
       }
       fresnel = fc.describe();

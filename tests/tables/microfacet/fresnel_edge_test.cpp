@@ -283,7 +283,8 @@ TEST(FresnelEdge, DISABLED_EveryPairEverySize) {
       const bool defaultPair = ndf == NDF_GGX && gaf == GAF_SMITH_CORRELATED;
       for (const Edge& e : edges())
         for (int n : {32, 64, 128, 256}) {
-          if (!listed("BRDFBAKE_SWEEP_EDGES", e.name, true) || !listed("BRDFBAKE_SWEEP_SIZES", std::to_string(n), false))
+          if (!listed("BRDFBAKE_SWEEP_EDGES", e.name, true) ||
+              !listed("BRDFBAKE_SWEEP_SIZES", std::to_string(n), false))
             continue;
           if (n == 256 && defaultPair) expectBlocksAreTheTable(ndf, gaf, weightOf(e), n);
           Worst w = checkTable(ndf, gaf, e, n, 4, n < 256);
