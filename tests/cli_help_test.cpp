@@ -142,15 +142,10 @@ TEST(CliHelp, BashCompletionCompletes) {
   std::ofstream(script) << r.out;
   auto complete = [&](const std::string& line) {
     // COMP_WORDS from the line; the cursor on its last word (empty after a trailing space)
-    std::string cmd = "bash -c 'source \"" + script.string() + "\"; COMP_WORDS=(" + line +
-                      "); COMP_CWORD=$((${#COMP_WORDS[@]} - 1)); _brdfbake; echo \"${COMPREPLY[*]}\"' 2>&1";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string out;
-    char buf[4096];
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-    EXPECT_EQ(pclose(p), 0) << line << "\n" << out;
-    return out;
+    const CmdResult c = shell("bash -c 'source \"" + script.string() + "\"; COMP_WORDS=(" + line +
+                              "); COMP_CWORD=$((${#COMP_WORDS[@]} - 1)); _brdfbake; echo \"${COMPREPLY[*]}\"'");
+    EXPECT_EQ(c.code, 0) << line << "\n" << c.out;
+    return c.out;
   };
   EXPECT_EQ(complete("brdfbake ba"), "bake\n");
   EXPECT_EQ(complete("brdfbake conv"), "convergence\n");

@@ -6,7 +6,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -240,16 +239,7 @@ TEST(Cli, DiskFullMidBakeLeavesEarlierOutputsUntouched) {
                             << exe << "' --table brdf3d -o '" << disk << "/vol'; echo $? > '" << rep
                             << ".rc3'\n"
                                "exit 0\n";
-  CmdResult r{0, ""};
-  {
-    std::string cmd = "unshare -m sh '" + (d / "t.sh").string() + "' 2>&1";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::array<char, 4096> buf;
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-    int status = pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
+  const CmdResult r = shell("unshare -m sh '" + (d / "t.sh").string() + "'");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(bytes(rep + ".rc"), "74\n") << r.out;
   // a 3D table short of space: the same code as the 2D tables'

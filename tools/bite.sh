@@ -120,6 +120,8 @@ mutation() {
                         '<!-- figure 2.59e-7 after "splitsum" #3 from: brdfbake-bench' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
     doc-test-named) set -- "$1" docs/ltc.md '`Ltc.DistanceEstimateHoldsAgainstTheReference`' \
                       '`Ltc.DistanceEstimateHoldsAgainstAQuadrature`' "Docs.NamedTestsExist" ;;
+    avg-claim-inflated) set -- "$1" host/cl/runner_avg.cpp '        (sums[j].bound + floor * std::fabs(sum)' \
+                          '        (10 * sums[j].bound + floor * std::fabs(sum)' "FresnelEdge.AverageAlbedoAtTheStiffCorner" ;;
     doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
                           '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
     dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
@@ -138,7 +140,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        ltc-polygon-transposed ltc-distance-halved ltc-distance-in-float ltc-variance-one-pass ltc-claim-without-tenth
        ltc-e-claim-without-float avg-kink-breaks glass-reference-kink
        favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset
-       doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named
+       doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named avg-claim-inflated
        doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
