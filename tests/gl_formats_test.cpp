@@ -19,10 +19,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <random>
+#include <sstream>
 
 #include "common/models.h"
 #include "dds_reader.h"
+#include "doc_figures.h"
 #include "formats/exr/table_file.h"
 #include "formats/storage.h"
 #include "gl_harness.h"
@@ -33,6 +36,8 @@
 namespace fs = std::filesystem;
 namespace {
 using namespace brdfbake;
+using brdfbake::testing_docs::expectPagesQuote;
+using brdfbake::testing_docs::sci;
 using glharness::gl;
 
 // One bake per precision (the formats that hold it), plus a png16 whose mapping is not the identity
@@ -217,8 +222,11 @@ TEST(GlPipeline, EveryFormatAndPrecisionSamplesWithinItsPredictedError) {
   const std::vector<Case> cases = {{"float32", "exr"},  {"float32", "ktx2"}, {"float32", "dds"},  {"float16", "exr"},
                                    {"float16", "ktx2"}, {"float16", "dds"},  {"unorm16", "ktx2"}, {"unorm16", "dds"},
                                    {"unorm16", "png"},  {"unorm8", "ktx2"},  {"unorm8", "dds"},   {"scaled", "png"}};
-  std::printf("%-44s %-7s %-8s %-8s %-8s %-17s %-19s %-19s\n", "file", "prec", "exact", "hardware", "8-bit w",
-              "storage (stated)", "ref exact (pred.)", "ref hardware (pred.)");
+  // the table docs/shader-code.md shows, a row per file
+  std::ostringstream table;
+  table << "| file (GL internal format) | GPU exact vs host bilinear | GPU hardware vs host bilinear | 8-bit weights "
+           "emulated | storage (file states) | vs reference, exact path (predicted) | hardware path (predicted) |\n"
+           "|---|---|---|---|---|---|---|\n";
   int checked = 0;
   for (const Case& k : cases)
     for (std::string stem : {"splitsum_ggx_smith-correlated", "albedo_ggx_smith-correlated", "kp_ggx"}) {
@@ -239,9 +247,16 @@ TEST(GlPipeline, EveryFormatAndPrecisionSamplesWithinItsPredictedError) {
       // weights NVIDIA documents (emulated on the same texels: rounding either way)
       // llvmpipe filters RGBA8 in 8-bit fixed point: its result is a whole code (1/255) off at worst
       const double filter = precision == "unorm8" ? 1.0 / 255 + f.weights8 : std::max(2e-5, 2.0 * f.weights8);
-      std::printf("%-44s %-7s %.1e  %.1e  %.1e  %.1e (%.1e)  %.2e (%.2e)  %.2e (%.2e)\n",
-                  (k.dir + "/" + stem + "." + k.format).c_str(), precision.c_str(), f.exact, f.hardware, f.weights8,
-                  f.storage, stated, f.refExact, predicted, f.refHardware, predicted + filter);
+      const std::map<std::string, std::string> internal = {
+          {"float32", "RGBA32F"}, {"float16", "RGBA16F"}, {"unorm16", "RGBA16"}, {"unorm8", "RGBA8"}};
+      table << "| " << k.format << " " << precision << (k.dir == "scaled" ? " scaled" : "") << " ("
+            << internal.at(precision) << "): "
+            << (stem[0] == 's'   ? "split sum"
+                : stem[0] == 'a' ? "albedo"
+                                 : "k_p")
+            << " | " << sci(f.exact, 1) << " | " << sci(f.hardware, 1) << " | " << sci(f.weights8, 1) << " | "
+            << sci(f.storage, 1) << " (" << sci(stated, 1) << ") | " << sci(f.refExact, 2) << " (" << sci(predicted, 2)
+            << ") | " << sci(f.refHardware, 2) << " (" << sci(predicted + filter, 2) << ") |\n";
       ++checked;
       if (k.format != "exr") {
         EXPECT_EQ(l.header.strings["brdf.precision"], precision) << path;
@@ -262,6 +277,8 @@ TEST(GlPipeline, EveryFormatAndPrecisionSamplesWithinItsPredictedError) {
       EXPECT_LE(f.refHardware, predicted + filter) << path;
     }
   EXPECT_EQ(checked, 23);
+  std::printf("%s", table.str().c_str());
+  expectPagesQuote(table.str());
 }
 
 // The scaled png16's lookups must include its mapping: the same texels without it read as [0, 1].

@@ -19,9 +19,11 @@
 #include <filesystem>
 #include <map>
 #include <random>
+#include <sstream>
 
 #include "common/models.h"
 #include "dds_reader.h"
+#include "doc_figures.h"
 #include "formats/exr/table_file.h"
 #include "gl_harness.h"
 #include "ktx2_reader.h"
@@ -32,6 +34,8 @@ namespace fs = std::filesystem;
 namespace {
 using namespace brdfbake;
 using glharness::gl;
+using testing_docs::expectPagesQuote;
+using testing_docs::sci;
 
 fs::path dir() {
   static fs::path d = fs::path(testing::TempDir()) / ("brdfbake_glpre_" + std::to_string(getpid()));
@@ -179,8 +183,10 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
       {"gltf-sample-viewer",
        "vec2 brdf = textureLod(tab, clamp(vec2(p.x, p.y), vec2(0.0), vec2(1.0)), 0.0).rg; spec = vec3(p.z) * brdf.x + "
        "brdf.y;"}};
-  std::printf("%-19s %-6s %-9s %-11s %-11s %-10s %s\n", "preset", "size", "file", "engine", "generated", "predicted",
-              "engine vs generated");
+  // the table docs/layouts.md shows
+  std::ostringstream table;
+  table << "| preset (size, file) | engine's expression vs reference F0 A + B | generated `P_Schlick` vs reference | "
+           "predicted (`brdf.error + brdf.interp-error`) | engine vs generated |\n|---|---|---|---|---|\n";
   for (const auto& [name, expr] : engines) {
     // the preset's own format; the DDS (no metadata) with its KTX2 twin beside it for the header
     const std::string ext = name == "unreal"                   ? ".dds"
@@ -195,8 +201,9 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
     EXPECT_EQ(f.header.strings["brdf.layout"], name) << "info names the preset";
     EXPECT_NE(f.header.strings["brdf.layout.sampling"].find(name == "unreal" ? "EnvBRDF" : ""), std::string::npos);
     Figures fig = run(f, expr);
-    std::printf("%-19s %-6d %-9s %.2e    %.2e    %.2e   %.1e\n", name.c_str(), f.tex.width,
-                f.path.substr(f.path.rfind('.') + 1).c_str(), fig.engine, fig.generated, fig.predicted, fig.agree);
+    table << "| `" << name << "` (" << f.tex.width << "^2, " << f.path.substr(f.path.rfind('.') + 1) << ") | "
+          << sci(fig.engine, 2) << " | " << sci(fig.generated, 2) << " | " << sci(fig.predicted, 2) << " | "
+          << sci(fig.agree, 1) << " |\n";
     EXPECT_LE(fig.engine, fig.predicted) << name << ": the engine's lookup of our file is off the reference";
     EXPECT_LE(fig.generated, fig.predicted) << name;
     EXPECT_LT(fig.agree, 2e-5) << name << ": the generated code does not follow the layout";
@@ -205,8 +212,10 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
   {
     File f = load((dir() / "unity-hdrp-sqrt" / "splitsum_ggx_smith-correlated_unity-hdrp-sqrt.exr").string());
     Figures fig = run(f, engines[2].second);
-    std::printf("%-19s %-6d %-9s %.2e    %.2e    %.2e   (the older linear-NdotV lookup of it: off by %.2f)\n",
-                "unity-hdrp-sqrt", f.tex.width, "exr", fig.engine, fig.generated, fig.predicted, fig.agree);
+    char off[16];
+    std::snprintf(off, sizeof off, "%.2f", fig.engine);
+    table << "| `unity-hdrp-sqrt` (" << f.tex.width << "^2, exr) read by the older linear-NdotV lookup | " << off
+          << " (caught) | " << sci(fig.generated, 2) << " | " << sci(fig.predicted, 2) << " | - |\n";
     EXPECT_GT(fig.engine, 0.05) << "a linear-NdotV reader must not match the sqrt(NdotV) file";
   }
   // without a preset: transposed, flipped, (B, A+B); the engines' plain expression must then fail
@@ -216,8 +225,13 @@ TEST(GlPipeline, LayoutPresetsMatchEachEnginesOwnLookup) {
   EXPECT_EQ(f.header.strings["brdf.axes"], "r,mu");
   EXPECT_EQ(f.header.strings["brdf.layout.flip"], "y");
   Figures fig = run(f, "vec2 ab = textureLod(tab, vec2(p.x, p.y), 0.0).rg; spec = vec3(p.z) * ab.x + ab.y;");
-  std::printf("%-19s %-6d %-9s %.2e    %.2e    %.2e   (an A,B reader of it: off by %.2f)\n", "flags", f.tex.width,
-              "exr", fig.engine, fig.generated, fig.predicted, fig.agree);
+  char off[16];
+  std::snprintf(off, sizeof off, "%.2f", fig.engine);
+  table << "| flags `--axes r,mu --flip-y --channels B,A+B` (" << f.tex.width
+        << "^2, exr) read as (A, B) along mu, r | " << off << " (caught) | " << sci(fig.generated, 2) << " | "
+        << sci(fig.predicted, 2) << " | - |\n";
+  std::printf("%s", table.str().c_str());
+  expectPagesQuote(table.str());
   EXPECT_LE(fig.generated, fig.predicted);
   EXPECT_GT(fig.engine, 0.1) << "a reader assuming mu,r and (A, B) must not match a transposed, flipped (B, A+B) file";
 }

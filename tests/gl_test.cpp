@@ -16,12 +16,14 @@
 #include <cstring>
 #include <filesystem>
 #include <random>
+#include <sstream>
 
 #include "common/brdf3d_grid.h"
 #include "tables/volume.h"
 #include "common/models.h"
 #include "formats/exr/table_file.h"
 #include "reference/reference.h"
+#include "doc_figures.h"
 #include "gl_harness.h"
 #include "shader/shader_gen.h"
 
@@ -30,6 +32,8 @@ namespace {
 using namespace brdfbake;
 
 using glharness::gl;
+using testing_docs::expectPagesQuote;
+using testing_docs::sci;
 
 fs::path bakeDir() {
   static fs::path d = [] {
@@ -137,6 +141,11 @@ Figures check2d(const std::string& file, int n, int refPoints) {
 TEST(GlPipeline, GeneratedGlslSamples2dTablesWithinTheirPredictedError) {
   ASSERT_TRUE(gl().problem.empty()) << "no usable OpenGL ES through EGL: " << gl().problem;
   fs::path d = bakeDir();
+  // the table docs/shader-code.md shows
+  std::ostringstream table;
+  table
+      << "| file | GPU exact vs host bilinear | GPU hardware vs host bilinear | 8-bit weights emulated | GPU exact vs "
+         "reference (predicted) |\n|---|---|---|---|---|\n";
   for (std::string file : {"tc/splitsum_ggx_smith-correlated.exr", "tc/albedo_ggx_smith-correlated.exr",
                            "tc/albedo-avg_ggx_smith-correlated.exr", "tc/kp_ggx.exr",
                            "node/splitsum_ggx_smith-correlated.exr", "node/albedo_ggx_smith-correlated.exr",
@@ -146,8 +155,8 @@ TEST(GlPipeline, GeneratedGlslSamples2dTablesWithinTheirPredictedError) {
     TableImage h = readTableExrHeader(path);
     Figures f = check2d(path, 4000, 60);
     double predicted = h.floats["brdf.error"] + h.floats["brdf.interp-error"];
-    std::printf("%-42s exact %.1e  hardware %.1e  8-bit weights %.1e  vs reference %.2e (predicted %.2e)\n",
-                file.c_str(), f.gpuExact, f.gpuHardware, f.weights8, f.reference, predicted);
+    table << "| `" << file << "` | " << sci(f.gpuExact, 1) << " | " << sci(f.gpuHardware, 1) << " | "
+          << sci(f.weights8, 1) << " | " << sci(f.reference, 2) << " (" << sci(predicted, 2) << ") |\n";
     EXPECT_LT(f.gpuExact, 2e-6) << file;     // the same texels and weights, float arithmetic
     EXPECT_LT(f.gpuHardware, 2e-5) << file;  // llvmpipe filters with float weights
     // sqrt/ (texel centres in u = sqrt(mu)): its corner texel lies at mu = alpha, on the dip of E
@@ -156,6 +165,8 @@ TEST(GlPipeline, GeneratedGlslSamples2dTablesWithinTheirPredictedError) {
     // (host/tables/interp_probe.h), and brdf.interp-error covers it on every grid.
     EXPECT_LE(f.reference, predicted) << file;
   }
+  std::printf("%s", table.str().c_str());
+  expectPagesQuote(table.str());
 }
 
 // 3D tables through the atlas: the generated lookups against the host's trilinear lookup of the
@@ -163,6 +174,10 @@ TEST(GlPipeline, GeneratedGlslSamples2dTablesWithinTheirPredictedError) {
 TEST(GlPipeline, GeneratedGlslSamples3dAtlases) {
   ASSERT_TRUE(gl().problem.empty()) << "no usable OpenGL ES through EGL: " << gl().problem;
   fs::path d = bakeDir();
+  // the table docs/shader-code.md shows
+  std::ostringstream table;
+  table << "| file | GPU exact vs host trilinear | GPU hardware vs host trilinear | GPU exact vs the BRDF (the file's "
+           "estimate) |\n|---|---|---|---|\n";
   for (std::string file :
        {"vol/brdf3d_ggx_smith-correlated_angles.exr", "rus/brdf3d_ggx_smith-correlated_rusinkiewicz.exr"}) {
     std::string path = (d / file).string();
@@ -211,12 +226,16 @@ TEST(GlPipeline, GeneratedGlslSamples3dAtlases) {
       truth = std::max(truth, std::fabs(gpu[8 * i + 4] - f) / std::max(1.0, std::fabs(f)));
     }
     double predicted = t.floats["brdf.error"] + t.floats["brdf.interp-error"];
-    std::printf("%-50s vs the BRDF %.3g (the file's estimate %.3g)\n", file.c_str(), truth, predicted);
+    char row[300];
+    std::snprintf(row, sizeof row, "| `%s` (%dx%dx%d) | %s | %s | %.3g (%.3g) |\n", file.c_str(), s.nx, s.ny, s.nz,
+                  sci(exact, 1).c_str(), sci(hardware, 1).c_str(), truth, predicted);
+    table << row;
     EXPECT_LE(truth, 1.5 * predicted) << file;
-    std::printf("%-50s exact %.1e  hardware %.1e (relative to max(1, |f|))\n", file.c_str(), exact, hardware);
     EXPECT_EQ(badExact, 0) << file << ": exact path off the host's trilinear lookup";
     EXPECT_EQ(badHardware, 0) << file << ": hardware path off the host's trilinear lookup";
   }
+  std::printf("%s", table.str().c_str());
+  expectPagesQuote(table.str());
 }
 
 // The rough-dielectric cube's generated lookups over (mu, r, eta): against the host's trilinear

@@ -14,6 +14,7 @@
 #include "tables/microfacet/microfacet.h"
 #include "tables/interp_estimate.h"
 #include "cli_run.h"
+#include "doc_figures.h"
 #include "common/brdf_host.h"
 #include "brdfbake/table_kind.h"
 #include "formats/exr/table_file.h"
@@ -199,8 +200,10 @@ TEST(MuAxis, InterpolationEstimateHoldsOnBothAxes) {
   EXPECT_NEAR(reference::albedo(NDF_GGX, GAF_SMITH_CORRELATED, 0.0313, 0.0313 * 0.0313).e(), 0.892, 0.001);
   std::printf("64^2 ggx + smith-correlated split sums: lookup vs the kernel at %d^2 points, max over A, B, A+B\n",
               dense);
-  std::printf("%-6s %-13s %-11s %-11s %-11s %-11s %-10s %s\n", "axis", "grid", "r<0.05", "0.05<=r<0.2", "r>=0.2",
-              "mu>=0.1", "estimate", "(interior)");
+  // the table docs/layouts.md shows
+  std::string table =
+      "| x axis, grid | mu < 0.1, r < 0.05 | mu < 0.1, 0.05 <= r < 0.2 | mu < 0.1, r >= 0.2 | mu >= 0.1 | "
+      "`brdf.interp-error` (`.interior`) |\n|---|---|---|---|---|---|\n";
   double band[2][2][4] = {};  // [node][sqrt][region]
   for (bool node : {false, true})
     for (bool sq : {false, true}) {
@@ -233,8 +236,10 @@ TEST(MuAxis, InterpolationEstimateHoldsOnBothAxes) {
         }
       const double err = t.floats["brdf.error"], est = t.floats["brdf.interp-error"];
       const double interior = t.floats["brdf.interp-error.interior"];
-      std::printf("%-6s %-13s %-11.3g %-11.3g %-11.3g %-11.3g %-10.3g (%.3g)\n", sq ? "sqrt" : "linear",
-                  node ? "node" : "texel-center", worst[0], worst[1], worst[2], worst[3], est, interior);
+      char row[200];
+      std::snprintf(row, sizeof row, "| %s, %s | %.3g | %.3g | %.3g | %.3g | %.3g (%.3g) |\n", sq ? "sqrt" : "linear",
+                    node ? "node" : "texel-center", worst[0], worst[1], worst[2], worst[3], est, interior);
+      table += row;
       const std::string which = std::string(sq ? "sqrt" : "linear") + (node ? " node" : " texel-center");
       // the whole claim holds everywhere, the corner's wedge included (the bake probes it between
       // texels: host/tables/interp_probe.h); away from grazing the estimate from the texels is the
@@ -249,6 +254,8 @@ TEST(MuAxis, InterpolationEstimateHoldsOnBothAxes) {
     EXPECT_LT(10 * band[node][1][1], band[node][0][1]) << (node ? "node" : "texel-center");
     EXPECT_LT(band[node][1][3], 1.5 * band[node][0][3]) << (node ? "node" : "texel-center");
   }
+  std::printf("%s", table.c_str());
+  testing_docs::expectPagesQuote(table);
 }
 
 }  // namespace

@@ -17,9 +17,11 @@
 #include <sstream>
 
 #include "cli_run.h"
+#include "doc_figures.h"
 
 namespace fs = std::filesystem;
 using namespace brdfbake::testing_cli;
+using namespace brdfbake::testing_docs;
 
 namespace {
 
@@ -226,33 +228,6 @@ TEST(Docs, LibraryPageShowsTheExample) {
       << "docs/library.md's code differs from examples/library/bake_lut.cpp";
 }
 
-// Whether an output line is the line a page shows. Words are compared one by one: a number within
-// 2% of the shown one (the figures a page quotes to three or four digits, rounding that may differ
-// between CPUs' vector widths), a word the page marks with a leading "~" not at all (seconds, and
-// what varies from run to run), every other word exactly. A shown line ending in "..." shows the
-// output line's first words (the last one's beginning where "..." follows it without a space).
-bool shownLineMatches(const std::string& shownLine, const std::string& got) {
-  std::string shown = shownLine;
-  const bool prefix = shown.size() > 3 && shown.compare(shown.size() - 3, 3, "...") == 0;
-  if (prefix) shown.resize(shown.size() - 3);
-  const bool partialLast = prefix && !shown.empty() && shown.back() != ' ';
-  std::istringstream ws(shown), wg(got);
-  std::vector<std::string> a, b;
-  for (std::string w; ws >> w;) a.push_back(w);
-  for (std::string w; wg >> w;) b.push_back(w);
-  if (prefix ? a.size() > b.size() : a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (partialLast && i + 1 == a.size()) return b[i].compare(0, a[i].size(), a[i]) == 0;
-    if (a[i] == b[i] || a[i][0] == '~') continue;
-    char *ea = nullptr, *eb = nullptr;
-    const double x = std::strtod(a[i].c_str(), &ea), y = std::strtod(b[i].c_str(), &eb);
-    // a number with the same text around it (a trailing ",", ")" or unit)
-    if (ea == a[i].c_str() || eb == b[i].c_str() || std::string(ea) != std::string(eb)) return false;
-    if (!(std::fabs(x - y) <= 0.02 * std::max(std::fabs(x), std::fabs(y)))) return false;
-  }
-  return true;
-}
-
 // Every `$ brdfbake ARGS` a page in docs/ shows runs, from a directory holding what it names, and
 // prints the lines shown under it (up to the next `$ ` line or the block's end), in order: the first
 // is the output's first line (its standard output, or the error line when there is none), each
@@ -307,25 +282,30 @@ TEST(Docs, ShownCommandsPrintWhatThePagesShow) {
 
 namespace {
 
-// The n-th number (1-based) in `text` at or after `from` (as a command prints figures: "8.20e-07",
-// "0.0159", "2592"; "128x128" is two), or NaN when there are fewer.
-double numberAfter(const std::string& text, size_t from, int n) {
-  static const std::regex number("[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?");
-  const std::string rest = text.substr(from);
-  int k = 0;
-  for (std::sregex_iterator it(rest.begin(), rest.end(), number), end; it != end; ++it)
-    if (++k == n) return std::strtod(it->str().c_str(), nullptr);
-  return std::nan("");
-}
-
-// Half a unit in the last digit a figure is written with ("1.2e-7": 5e-9; "31.04": 0.005).
-double halfUnit(const std::string& figure) {
-  const size_t e = figure.find_first_of("eE");
-  const std::string mantissa = figure.substr(0, e);
-  const size_t dot = mantissa.find('.');
-  const int decimals = dot == std::string::npos ? 0 : static_cast<int>(mantissa.size() - dot - 1);
-  const int exponent = e == std::string::npos ? 0 : std::atoi(figure.c_str() + e + 1);
-  return 0.5 * std::pow(10.0, exponent - decimals);
+// "" when `name` (Suite.Name, as gtest names it) is a test of this build whose body calls
+// expectPagesQuote, so that it checks the figures and tables the pages tie to it; else what is wrong.
+std::string testThatChecksThePages(const std::string& name) {
+  static const std::string listed = shell("ctest --test-dir '" BRDFBAKE_BINARY_DIR "' -N").out;
+  const size_t dot = name.find('.');
+  if (dot == std::string::npos) return name + " is not a Suite.Name";
+  const std::string suite = name.substr(0, dot), test = name.substr(dot + 1);
+  // ctest lists a disabled test without its DISABLED_ prefix
+  const std::string listedAs = suite + "." + (test.rfind("DISABLED_", 0) == 0 ? test.substr(9) : test);
+  if (!std::regex_search(listed, std::regex(": " + listedAs + "(\\n| )")))
+    return name + " is no test of this build (ctest -N)";
+  const std::regex head("\\nTEST(_F|_P)?\\(" + suite + ", " + test + "\\)");
+  for (const auto& e : fs::recursive_directory_iterator(fs::path(BRDFBAKE_SOURCE_DIR) / "tests")) {
+    if (e.path().extension() != ".cpp") continue;
+    const std::string text = bytes(e.path());
+    std::smatch m;
+    if (!std::regex_search(text, m, head)) continue;
+    const size_t start = m.position(0) + m.length(0), next = text.find("\nTEST", start);
+    return text.substr(start, next - start).find("expectPagesQuote(") != std::string::npos
+               ? ""
+               : name + " (" + e.path().filename().string() +
+                     ") does not call expectPagesQuote: nothing checks the page";
+  }
+  return name + ": no TEST(" + suite + ", " + test + ") under tests/";
 }
 
 }  // namespace
@@ -345,35 +325,44 @@ double halfUnit(const std::string& figure) {
 //   from: brdfbake-bench ARGS    the benchmark in this build (exit 0), a quick run of it
 //   from: ctest -R NAME -V       one test's printout in this build: NAME the test's whole name,
 //                                a quick test, and it must pass
-// Each runs inside this test, so a figure from a run of minutes stays outside this form.
+// Each of these runs inside this test. A figure or table from a run of minutes is tied to the test
+// that prints it with "in: Suite.Name" (tests/doc_figures.h): that test checks the page against its
+// own printout when it runs, and this test checks that the note names a test of this build whose
+// body calls expectPagesQuote.
 TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
   const fs::path d = pagesDir("figures");
-  // at most three spaces in (a list item's); four or more make it code, an example of the form
-  const std::regex note(
-      "^ {0,3}<!-- figure (\\S+) after \"([^\"]+)\"(?: #(\\d+))? from: "
-      "(brdfbake-bench .+|brdfbake(?: .*)?|ctest -R [\\w./]+ -V) -->");
-  const std::regex started("^ {0,3}<!-- figure ");
-  int figures = 0;
+  const std::regex& note = figureNote();
+  const std::regex started("^ {0,3}<!-- (figure|rows) ");
+  int figures = 0, selfChecked = 0;
   std::map<std::string, CmdResult> ran;  // a command quoted for several figures runs once
-  for (const auto& e : fs::directory_iterator(fs::path(BRDFBAKE_SOURCE_DIR) / "docs")) {
-    if (e.path().extension() != ".md") continue;
-    std::istringstream in(bytes(e.path()));
-    std::vector<std::string> page;
-    for (std::string l; std::getline(in, l);) page.push_back(l);
+  for (const fs::path& path : pages()) {
+    if (path.filename() == "README.md") continue;
+    const std::vector<std::string> page = lines(bytes(path));
     for (size_t i = 0; i < page.size(); ++i) {
       std::smatch m;
+      const std::string at = path.filename().string() + ":" + std::to_string(i + 1);
+      if (std::regex_search(page[i], m, rowsNote())) {
+        ++selfChecked;
+        EXPECT_TRUE(i > 0 && page[i - 1].rfind("|", 0) == 0) << at << ": a rows note is not right under a table";
+        EXPECT_EQ(testThatChecksThePages(m[1].str()), "") << at;
+        continue;
+      }
       if (!std::regex_search(page[i], m, note)) {
         // a comment that means to quote a figure and is not in the form would be skipped unseen
         EXPECT_FALSE(std::regex_search(page[i], started))
-            << e.path().filename() << ":" << i + 1
-            << ": not the form <!-- figure X after \"WORDS\" [#N] from: brdfbake ARGS --> (or from: brdfbake-bench "
-            << "ARGS, from: ctest -R NAME -V)";
+            << at << ": not the form <!-- figure X after \"WORDS\" [#N] from: brdfbake ARGS --> (or from: "
+            << "brdfbake-bench ARGS, from: ctest -R NAME -V, in: Suite.Name) nor <!-- rows in: Suite.Name -->";
+        continue;
+      }
+      if (m[5].matched) {
+        ++selfChecked;
+        EXPECT_EQ(testThatChecksThePages(m[5].str()), "") << at;
         continue;
       }
       ++figures;
       const std::string figure = m[1].str(), words = m[2].str(), command = m[4].str();
       const int nth = m[3].matched ? std::atoi(m[3].str().c_str()) : 1;
-      const std::string where = e.path().filename().string() + ":" + std::to_string(i + 1) + ": " + figure;
+      const std::string where = at + ": " + figure;
       // the prose above quotes it as written
       bool quoted = false;
       for (size_t k = i; k-- > 0 && !page[k].empty();) quoted |= page[k].find(figure) != std::string::npos;
@@ -407,20 +396,17 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
       EXPECT_TRUE(r.code == 0 || (r.code == 1 && !bench && !test))
           << where << ": " << command << " exits " << r.code << " (-2: not one test passed)\n"
           << r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0);
-      const double want = std::strtod(figure.c_str(), nullptr), tolerance = halfUnit(figure) + 0.02 * std::fabs(want);
-      bool printed = false;
-      std::istringstream os(r.out);
-      for (std::string line; std::getline(os, line) && !printed;) {
-        const size_t at = line.find(words);
-        if (at != std::string::npos) printed = std::fabs(numberAfter(line, at + words.size(), nth) - want) <= tolerance;
-      }
+      const bool printed = printsFigure(r.out, figure, words, nth);
       EXPECT_TRUE(printed) << where << ": " << command << " prints it nowhere as number " << nth << " after \"" << words
                            << "\"\n"
                            << r.out.substr(0, 3000);
     }
   }
   EXPECT_GE(figures, 20);
-  std::printf("%d quoted figures checked against their commands\n", figures);
+  std::printf(
+      "%d quoted figures checked against their commands; %d notes tie figures and tables to the tests that "
+      "check them\n",
+      figures, selfChecked);
 }
 
 // Every brdfbake command in a page's ```sh blocks (docs/*.md but the help's own page, whose examples

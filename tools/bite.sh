@@ -122,6 +122,10 @@ mutation() {
                       '`Ltc.DistanceEstimateHoldsAgainstAQuadrature`' "Docs.NamedTestsExist" ;;
     avg-claim-inflated) set -- "$1" host/cl/runner_avg.cpp '        (sums[j].bound + floor * std::fabs(sum)' \
                           '        (10 * sums[j].bound + floor * std::fabs(sum)' "FresnelEdge.AverageAlbedoAtTheStiffCorner" ;;
+    doc-table-row) set -- "$1" docs/layouts.md '| `bevy` (32^2, ktx2) | 4.31e-3 |' '| `bevy` (32^2, ktx2) | 4.51e-3 |' \
+                     "GlPipeline.LayoutPresetsMatchEachEnginesOwnLookup" ;;
+    doc-rows-unchecked) set -- "$1" tests/mu_axis_test.cpp '  testing_docs::expectPagesQuote(table);' '' \
+                          "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
     doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
                           '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
     dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
@@ -141,6 +145,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        ltc-e-claim-without-float avg-kink-breaks glass-reference-kink
        favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset
        doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named avg-claim-inflated
+       doc-table-row doc-rows-unchecked
        doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
