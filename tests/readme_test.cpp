@@ -6,6 +6,7 @@
 // the rest of the suite's CLI tests together.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -486,4 +487,113 @@ TEST(Docs, NamedTestsExist) {
   EXPECT_GE(names, 50);
   EXPECT_GE(patterns, 20);
   std::printf("%d test names and %d ctest -R patterns on the pages, each a test of this build\n", names, patterns);
+}
+
+// The figures a page quotes are tied to what prints them. On the pages held to it (`held` below),
+// every number written in e-notation outside code (the form the pages give measured errors, bounds
+// and ratios of them in: "2.63e-3", "1e-7") is one of:
+//  - tied: the X of a figure note under its paragraph (<!-- figure X ... from: ... --> or "in:"),
+//    or a cell of a table under a rows note (<!-- rows in: Suite.Name -->), which the tests above
+//    and the tests named check;
+//  - an input: listed in its paragraph's <!-- inputs: X Y ... --> note: a model's constant, a run's
+//    parameter or a threshold the code sets (eta = 1 - 1e-6, a 1e-7 floor), which nothing measures.
+// An inputs note lists only figures its paragraph holds, and none that a figure note ties. The
+// pages not yet held print their count of figures neither tied nor named inputs.
+TEST(Docs, EveryFigureOnAHeldPageIsTiedOrAnInput) {
+  const std::set<std::string> held = {"layouts.md", "shader-code.md"};
+  const std::regex eNumber("[-+]?\\d+(?:\\.\\d+)?[eE][-+]?\\d+");
+  const std::regex inputsNote("^ {0,3}<!-- inputs: ([^>]*) -->$");
+  int tied = 0, inputs = 0;
+  std::vector<std::string> open;
+  for (const fs::path& path : pages()) {
+    if (path.filename() == "README.md" || path.filename() == "commands-reference.md") continue;
+    const std::string name = path.filename().string();
+    const std::vector<std::string> page = lines(bytes(path));
+    int untied = 0;
+    bool fenced = false;
+    for (size_t i = 0; i < page.size();) {
+      if (page[i].rfind("```", 0) == 0) fenced = !fenced;
+      if (fenced || page[i].empty() || page[i].rfind("```", 0) == 0) {
+        ++i;
+        continue;
+      }
+      // a paragraph (or a table) and the notes under it
+      size_t end = i;
+      while (end < page.size() && !page[end].empty() && page[end].rfind("```", 0) != 0) ++end;
+      std::set<std::string> noted, listed;
+      bool rows = false;
+      for (size_t k = i; k < end; ++k) {
+        std::smatch m;
+        if (std::regex_search(page[k], m, figureNote())) noted.insert(m[1].str());
+        if (std::regex_search(page[k], m, rowsNote())) rows = true;
+        if (std::regex_search(page[k], m, inputsNote)) {
+          std::istringstream ws(m[1].str());
+          for (std::string w; ws >> w;) listed.insert(w);
+        }
+      }
+      std::set<std::string> seen;
+      for (size_t k = i; k < end; ++k) {
+        if (page[k].find("<!--") != std::string::npos) continue;
+        // outside inline code
+        const std::string text = std::regex_replace(page[k], std::regex("`[^`]*`"), "``");
+        for (std::sregex_iterator it(text.begin(), text.end(), eNumber), stop; it != stop; ++it) {
+          const size_t at = it->position(0), after = at + it->length(0);
+          auto word = [&](size_t p) {
+            return std::isalnum(static_cast<unsigned char>(text[p])) || text[p] == '_' || text[p] == '.';
+          };
+          if ((at > 0 && word(at - 1)) || (after < text.size() && word(after))) continue;  // part of a name
+          std::string figure = it->str();
+          if (figure[0] == '+') figure.erase(0, 1);
+          seen.insert(figure);
+          const bool isTied = (rows && page[k].rfind("|", 0) == 0) || noted.count(figure) || noted.count("-" + figure);
+          if (isTied) {
+            ++tied;
+          } else if (listed.count(figure)) {
+            ++inputs;
+          } else if (held.count(name)) {
+            ADD_FAILURE() << name << ":" << k + 1 << ": " << figure
+                          << " is neither tied (a figure or rows note) nor in its paragraph's <!-- inputs: ... -->\n  "
+                          << page[k];
+          } else {
+            ++untied;
+          }
+        }
+      }
+      for (const std::string& f : listed) {
+        EXPECT_TRUE(seen.count(f)) << name << ":" << i + 1 << ": the inputs note lists " << f
+                                   << ", which its paragraph does not hold";
+        EXPECT_FALSE(noted.count(f)) << name << ":" << i + 1 << ": " << f << " is both tied and listed as an input";
+      }
+      i = end;
+    }
+    if (!held.count(name) && untied > 0) open.push_back(name + " " + std::to_string(untied));
+  }
+  std::printf("held pages: every e-notation figure tied (%d) or an input (%d); not yet held, untied figures:", tied,
+              inputs);
+  for (const std::string& o : open) std::printf(" %s;", o.c_str());
+  std::printf("\n");
+  EXPECT_GE(tied, 100);
+}
+
+// Every build-tree path a page or the README names (`./build/tests/brdfbake-gl-tests`,
+// `build/brdfbake-bench`) is in this build, under build/ (the directory the README's commands make),
+// so that a reader who runs it finds it.
+TEST(Docs, NamedBuildPathsExist) {
+  const std::regex path("(?:^|[\\s`'(])(?:\\./)?(build[\\w-]*)/([\\w./-]*[\\w-])");
+  int named = 0;
+  for (const fs::path& page : pages()) {
+    const std::string text = bytes(page);
+    for (std::sregex_iterator it(text.begin(), text.end(), path), end; it != end; ++it) {
+      const std::string dir = (*it)[1].str(), rest = (*it)[2].str();
+      ++named;
+      EXPECT_EQ(dir, "build") << page.filename() << ": " << dir << "/" << rest << " is not under build/";
+      // the binaries the default build makes (a generator built by its own --target is not one)
+      if (rest.rfind("tests/brdfbake-", 0) == 0 || rest == "brdfbake" || rest == "brdfbake-bench") {
+        EXPECT_TRUE(fs::exists(fs::path(BRDFBAKE_BINARY_DIR) / rest))
+            << page.filename() << ": build/" << rest << " is not in this build";
+      }
+    }
+  }
+  EXPECT_GE(named, 20);
+  std::printf("%d build-tree paths on the pages\n", named);
 }

@@ -126,6 +126,10 @@ mutation() {
                      "GlPipeline.LayoutPresetsMatchEachEnginesOwnLookup" ;;
     doc-rows-unchecked) set -- "$1" tests/mu_axis_test.cpp '  testing_docs::expectPagesQuote(table);' '' \
                           "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
+    doc-figure-untied) set -- "$1" docs/shader-code.md '<!-- inputs: 1e-5 -->' '' \
+                         "Docs.EveryFigureOnAHeldPageIsTiedOrAnInput" ;;
+    doc-build-path) set -- "$1" docs/ashikhmin-shirley.md '`./build/tests/brdfbake-ashikhmin-tests' \
+                      '`build-as/tests/brdfbake-ashikhmin-tests' "Docs.NamedBuildPathsExist" ;;
     doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
                           '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
     dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
@@ -145,7 +149,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        ltc-e-claim-without-float avg-kink-breaks glass-reference-kink
        favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset
        doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named avg-claim-inflated
-       doc-table-row doc-rows-unchecked
+       doc-table-row doc-rows-unchecked doc-figure-untied doc-build-path
        doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5

@@ -1,8 +1,8 @@
 // smith_tables: generates kernels/brdf/smith_tables.h, the exact Smith Lambda of the Blinn-Phong
 // and gaussian NDFs as a correction to Beckmann's (docs/MODELS.md "Exact Smith Lambda").
 //
-//   build: cmake --build build-s --target brdfbake-smith-tables
-//   run:   build-s/brdfbake-smith-tables > kernels/brdf/smith_tables.h   (prints its error to stderr)
+//   build: cmake --build build --target brdfbake-smith-tables
+//   run:   build/brdfbake-smith-tables > kernels/brdf/smith_tables.h   (prints its error to stderr)
 //
 // Smith 1967 / Heitz 2014 (eq. 17-18 and sec. 5.1): with P22 the slope distribution
 // (P22(m) = D(h) cos^4 theta_h for an isotropic NDF, m = tan theta_h) and a = cot theta_o,
