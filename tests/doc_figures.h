@@ -7,6 +7,7 @@
 // page is read:
 //   <!-- figure X after "WORDS" [#N] in: Suite.Name -->    one figure in the prose above
 //   <!-- rows in: Suite.Name -->                           every body row of the table above
+// (and, for commands the docs tests run, "from: COMMAND" in place of "in: Suite.Name").
 // BRDFBAKE_SOURCE_DIR is the source tree (tests/CMakeLists.txt, SOURCE_DIR).
 #pragma once
 #include <gtest/gtest.h>
@@ -119,10 +120,24 @@ inline const std::regex& figureNote() {
   return note;
 }
 
-// A table note: <!-- rows in: Suite.Name -->, right under the table's last row.
+// A table note, right under the table's last row: <!-- rows in: Suite.Name --> (that test checks
+// the rows against its printout) or <!-- rows from: COMMAND --> (the docs test runs the command, a
+// source of the figure notes' form, and checks them against its output).
 inline const std::regex& rowsNote() {
-  static const std::regex note("^<!-- rows in: ([\\w./]+) -->");
+  static const std::regex note(
+      "^<!-- rows (?:in: ([\\w./]+)|from: (brdfbake-bench .+|brdfbake(?: .*)?|ctest -R [\\w./]+ -V)) -->");
   return note;
+}
+
+// Whether `output` has a line (leading spaces and ctest -V's "N: " left out) that is `row`
+// (shownLineMatches).
+inline bool printsRow(const std::string& output, const std::string& row) {
+  static const std::regex prefix("^ *(\\d+: )?");
+  std::istringstream os(output);
+  for (std::string line; std::getline(os, line);)
+    if (shownLineMatches(row, std::regex_replace(line, prefix, "", std::regex_constants::format_first_only)))
+      return true;
+  return false;
 }
 
 inline std::vector<std::string> lines(const std::string& text) {
@@ -166,11 +181,6 @@ inline std::vector<std::string> tableRowsAbove(const std::vector<std::string>& p
 inline void expectPagesQuote(const std::string& printout) {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::string self = std::string(info->test_suite_name()) + "." + info->name();
-  std::vector<std::string> printed;
-  for (std::string l : lines(printout)) {
-    l.erase(0, l.find_first_not_of(' '));
-    printed.push_back(l);
-  }
   int quoted = 0;
   for (const std::filesystem::path& path : pages()) {
     const std::vector<std::string> page = lines(fileText(path));
@@ -187,14 +197,13 @@ inline void expectPagesQuote(const std::string& printout) {
         EXPECT_TRUE(printsFigure(printout, figure, m[2].str(), nth))
             << where << ": " << self << " prints " << figure << " nowhere as number " << nth << " after \"" << m[2]
             << "\"";
-      } else if (std::regex_search(page[i], m, rowsNote()) && m[1].str() == self) {
+      } else if (std::regex_search(page[i], m, rowsNote()) && m[1].matched && m[1].str() == self) {
         const std::vector<std::string> rows = tableRowsAbove(page, i);
         EXPECT_FALSE(rows.empty()) << where << ": no table right above the note";
         for (const std::string& row : rows) {
           ++quoted;
-          bool found = false;
-          for (const std::string& l : printed) found |= shownLineMatches(row, l);
-          EXPECT_TRUE(found) << where << ": " << self << " prints no line that is the row\n  " << row;
+          EXPECT_TRUE(printsRow(printout, row))
+              << where << ": " << self << " prints no line that is the row\n  " << row;
         }
       }
     }

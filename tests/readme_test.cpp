@@ -326,6 +326,8 @@ std::string testThatChecksThePages(const std::string& name) {
 //   from: brdfbake-bench ARGS    the benchmark in this build (exit 0), a quick run of it
 //   from: ctest -R NAME -V       one test's printout in this build: NAME the test's whole name,
 //                                a quick test, and it must pass
+// A table whose every body row is a line a command prints carries <!-- rows from: COMMAND --> under
+// it (the same sources); its rows are compared as shown lines are (shownLineMatches).
 // Each of these runs inside this test. A figure or table from a run of minutes is tied to the test
 // that prints it with "in: Suite.Name" (tests/doc_figures.h): that test checks the page against its
 // own printout when it runs, and this test checks that the note names a test of this build whose
@@ -334,8 +336,34 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
   const fs::path d = pagesDir("figures");
   const std::regex& note = figureNote();
   const std::regex started("^ {0,3}<!-- (figure|rows) ");
-  int figures = 0, selfChecked = 0;
+  int figures = 0, rows = 0, selfChecked = 0;
   std::map<std::string, CmdResult> ran;  // a command quoted for several figures runs once
+  // a command's output, run once: exit 0, or 1 where a brdfbake verdict is a check that failed; a
+  // test or the benchmark exits 0 (-2: not one test passed)
+  auto output = [&](const std::string& command) -> const CmdResult& {
+    if (ran.count(command)) return ran[command];
+    CmdResult r{0, ""};
+    if (command.rfind("ctest ", 0) == 0) {
+      // the test by its whole name (a parameterised one's ctest name goes on with "  # GetParam() = ..."):
+      // exactly one runs, and it passes
+      const std::string name = command.substr(9, command.size() - 9 - 3);
+      r = shell("ctest --test-dir '" BRDFBAKE_BINARY_DIR "' -R '^" + name + "( |$)' -V");
+      if (r.code == 0 && r.out.find("100% tests passed, 0 tests failed out of 1\n") == std::string::npos) r.code = -2;
+    } else if (command.rfind("brdfbake-bench ", 0) == 0) {
+      r = shell("cd '" + d.string() + "' && '" BRDFBAKE_BINARY_DIR "/brdfbake-bench' " + command.substr(15));
+    } else {
+      // "; brdfbake " runs commands in turn
+      const std::string args = command.size() > 9 ? command.substr(9) : "", then = "; brdfbake ";
+      for (size_t at = 0;;) {
+        const size_t next = args.find(then, at);
+        r = run(args.substr(at, next == std::string::npos ? std::string::npos : next - at), d.string());
+        if ((r.code != 0 && r.code != 1) || next == std::string::npos) break;
+        at = next + then.size();
+      }
+      if (r.code == 1) r.code = 0;
+    }
+    return ran[command] = r;
+  };
   for (const fs::path& path : pages()) {
     if (path.filename() == "README.md") continue;
     const std::vector<std::string> page = lines(bytes(path));
@@ -343,16 +371,30 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
       std::smatch m;
       const std::string at = path.filename().string() + ":" + std::to_string(i + 1);
       if (std::regex_search(page[i], m, rowsNote())) {
-        ++selfChecked;
         EXPECT_TRUE(i > 0 && page[i - 1].rfind("|", 0) == 0) << at << ": a rows note is not right under a table";
-        EXPECT_EQ(testThatChecksThePages(m[1].str()), "") << at;
+        if (m[1].matched) {
+          ++selfChecked;
+          EXPECT_EQ(testThatChecksThePages(m[1].str()), "") << at;
+          continue;
+        }
+        const std::string command = m[2].str();
+        const CmdResult& r = output(command);
+        EXPECT_EQ(r.code, 0) << at << ": " << command << " exits " << r.code << "\n"
+                             << r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0);
+        for (const std::string& row : tableRowsAbove(page, i)) {
+          ++rows;
+          EXPECT_TRUE(printsRow(r.out, row))
+              << at << ": " << command << " prints no line that is the row\n  " << row << "\n"
+              << r.out.substr(0, 3000);
+        }
         continue;
       }
       if (!std::regex_search(page[i], m, note)) {
         // a comment that means to quote a figure and is not in the form would be skipped unseen
         EXPECT_FALSE(std::regex_search(page[i], started))
             << at << ": not the form <!-- figure X after \"WORDS\" [#N] from: brdfbake ARGS --> (or from: "
-            << "brdfbake-bench ARGS, from: ctest -R NAME -V, in: Suite.Name) nor <!-- rows in: Suite.Name -->";
+            << "brdfbake-bench ARGS, from: ctest -R NAME -V, in: Suite.Name) nor <!-- rows in: Suite.Name --> (or "
+            << "from: COMMAND)";
         continue;
       }
       if (m[5].matched) {
@@ -368,46 +410,19 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
       bool quoted = false;
       for (size_t k = i; k-- > 0 && !page[k].empty();) quoted |= page[k].find(figure) != std::string::npos;
       EXPECT_TRUE(quoted) << where << ": not in the paragraph above its comment";
-      const bool bench = command.rfind("brdfbake-bench ", 0) == 0, test = command.rfind("ctest ", 0) == 0;
-      if (!ran.count(command)) {
-        CmdResult r{0, ""};
-        if (test) {
-          // the test by its whole name (a parameterised one's ctest name goes on with "  # GetParam() = ..."):
-          // exactly one runs, and it passes
-          const std::string name = command.substr(9, command.size() - 9 - 3);
-          r = shell("ctest --test-dir '" BRDFBAKE_BINARY_DIR "' -R '^" + name + "( |$)' -V");
-          if (r.code == 0 && r.out.find("100% tests passed, 0 tests failed out of 1\n") == std::string::npos)
-            r.code = -2;
-        } else if (bench) {
-          r = shell("cd '" + d.string() + "' && '" BRDFBAKE_BINARY_DIR "/brdfbake-bench' " + command.substr(15));
-        } else {
-          // "; brdfbake " runs commands in turn
-          const std::string args = command.size() > 9 ? command.substr(9) : "", then = "; brdfbake ";
-          for (size_t at = 0;;) {
-            const size_t next = args.find(then, at);
-            r = run(args.substr(at, next == std::string::npos ? std::string::npos : next - at), d.string());
-            if ((r.code != 0 && r.code != 1) || next == std::string::npos) break;
-            at = next + then.size();
-          }
-        }
-        ran[command] = r;
-      }
-      const CmdResult& r = ran[command];
-      // 1 is a brdfbake verdict (a check that failed); a test or the benchmark exits 0
-      EXPECT_TRUE(r.code == 0 || (r.code == 1 && !bench && !test))
-          << where << ": " << command << " exits " << r.code << " (-2: not one test passed)\n"
-          << r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0);
-      const bool printed = printsFigure(r.out, figure, words, nth);
-      EXPECT_TRUE(printed) << where << ": " << command << " prints it nowhere as number " << nth << " after \"" << words
-                           << "\"\n"
-                           << r.out.substr(0, 3000);
+      const CmdResult& r = output(command);
+      EXPECT_EQ(r.code, 0) << where << ": " << command << " exits " << r.code << " (-2: not one test passed)\n"
+                           << r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0);
+      EXPECT_TRUE(printsFigure(r.out, figure, words, nth))
+          << where << ": " << command << " prints it nowhere as number " << nth << " after \"" << words << "\"\n"
+          << r.out.substr(0, 3000);
     }
   }
   EXPECT_GE(figures, 20);
   std::printf(
-      "%d quoted figures checked against their commands; %d notes tie figures and tables to the tests that "
-      "check them\n",
-      figures, selfChecked);
+      "%d quoted figures and %d table rows checked against their commands; %d notes tie figures and tables "
+      "to the tests that check them\n",
+      figures, rows, selfChecked);
 }
 
 // Every brdfbake command in a page's ```sh blocks (docs/*.md but the help's own page, whose examples
@@ -498,13 +513,18 @@ TEST(Docs, NamedTestsExist) {
 //  - an input: listed in its paragraph's <!-- inputs: X Y ... --> note: a model's constant, a run's
 //    parameter or a threshold the code sets (eta = 1 - 1e-6, a 1e-7 floor), which nothing measures.
 // An inputs note lists only figures its paragraph holds, and none that a figure note ties. The
-// pages not yet held print their count of figures neither tied nor named inputs.
+// pages not yet held print their count of figures neither tied nor named inputs
+// (BRDFBAKE_UNTIED=PAGE.md lists them).
 TEST(Docs, EveryFigureOnAHeldPageIsTiedOrAnInput) {
-  const std::set<std::string> held = {"layouts.md", "shader-code.md"};
+  const std::set<std::string> held = {
+      "benchmarks-materials.md", "development.md", "layouts.md", "ltc.md", "materials.md",
+      "shader-code.md",          "sheen.md"};
   const std::regex eNumber("[-+]?\\d+(?:\\.\\d+)?[eE][-+]?\\d+");
   const std::regex inputsNote("^ {0,3}<!-- inputs: ([^>]*) -->$");
   int tied = 0, inputs = 0;
   std::vector<std::string> open;
+  // BRDFBAKE_UNTIED=PAGE.md lists that page's untied figures, for whoever ties them
+  const std::string listPage = std::getenv("BRDFBAKE_UNTIED") ? std::getenv("BRDFBAKE_UNTIED") : "";
   for (const fs::path& path : pages()) {
     if (path.filename() == "README.md" || path.filename() == "commands-reference.md") continue;
     const std::string name = path.filename().string();
@@ -517,9 +537,13 @@ TEST(Docs, EveryFigureOnAHeldPageIsTiedOrAnInput) {
         ++i;
         continue;
       }
-      // a paragraph (or a table) and the notes under it
+      // a paragraph (or a table) and the notes under it; one indented by four spaces is code
       size_t end = i;
       while (end < page.size() && !page[end].empty() && page[end].rfind("```", 0) != 0) ++end;
+      if (page[i].rfind("    ", 0) == 0 && (i == 0 || page[i - 1].empty())) {
+        i = end;
+        continue;
+      }
       std::set<std::string> noted, listed;
       bool rows = false;
       for (size_t k = i; k < end; ++k) {
@@ -537,12 +561,20 @@ TEST(Docs, EveryFigureOnAHeldPageIsTiedOrAnInput) {
         // outside inline code
         const std::string text = std::regex_replace(page[k], std::regex("`[^`]*`"), "``");
         for (std::sregex_iterator it(text.begin(), text.end(), eNumber), stop; it != stop; ++it) {
-          const size_t at = it->position(0), after = at + it->length(0);
+          size_t at = it->position(0);
+          const size_t after = at + it->length(0);
+          std::string figure = it->str();
           auto word = [&](size_t p) {
             return std::isalnum(static_cast<unsigned char>(text[p])) || text[p] == '_' || text[p] == '.';
           };
-          if ((at > 0 && word(at - 1)) || (after < text.size() && word(after))) continue;  // part of a name
-          std::string figure = it->str();
+          // "2-3.4e-2" is a range: its "-" a dash, not a sign
+          if ((figure[0] == '-' || figure[0] == '+') && at > 0 && word(at - 1)) {
+            figure.erase(0, 1);
+            ++at;
+          }
+          // a sentence's full stop after a figure is not part of it
+          const bool fullStop = after + 1 >= text.size() || (text[after] == '.' && !word(after + 1));
+          if ((at > 0 && word(at - 1)) || (after < text.size() && word(after) && !fullStop)) continue;  // part of a name
           if (figure[0] == '+') figure.erase(0, 1);
           seen.insert(figure);
           const bool isTied = (rows && page[k].rfind("|", 0) == 0) || noted.count(figure) || noted.count("-" + figure);
@@ -556,6 +588,8 @@ TEST(Docs, EveryFigureOnAHeldPageIsTiedOrAnInput) {
                           << page[k];
           } else {
             ++untied;
+            if (listPage == name)
+              std::printf("%s:%zu: %s untied\n  %s\n", name.c_str(), k + 1, figure.c_str(), page[k].c_str());
           }
         }
       }

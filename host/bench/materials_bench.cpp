@@ -77,8 +77,9 @@ int runCase(const Case& c, int repeat) {
     maxM = std::max(maxM, errM[q]);
     if (errK[q] > k.err[static_cast<size_t>(texels[q].second) * kN + texels[q].first] + kAllowance) ++over;
   }
-  std::printf("%-34s %9.4f %9.4f %7.3f %11.2e %11.2e %-9s %11.2e %6zu %7.1f\n", c.name.c_str(), tk, tm, tk / tm, maxK,
-              bound, over == 0 ? "yes" : ("no:" + std::to_string(over)).c_str(), maxM, texels.size(), tRef);
+  // a markdown row, as docs/benchmarks-materials.md shows it
+  std::printf("| %s | %.4f | %.4f | %.3f | %.2e | %.2e | %s | %.2e | %zu | %.1f |\n", c.name.c_str(), tk, tm, tk / tm,
+              maxK, bound, over == 0 ? "yes" : ("no: " + std::to_string(over)).c_str(), maxM, texels.size(), tRef);
   std::fflush(stdout);
   return over;
 }
@@ -139,8 +140,9 @@ int materialsBench(KernelRunner& runner, int samples, int repeat, int stride) {
       "bound: the kernel's largest claimed bound over the whole table; within: every sampled kernel "
       "error <= its bound + %.0e\n",
       kAllowance);
-  std::printf("%-34s %9s %9s %7s %11s %11s %-9s %11s %6s %7s\n", "table", "kernel s", "MC s", "k/MC", "kernel err",
-              "bound", "within", "MC err", "texels", "ref s");
+  std::printf(
+      "| table | kernel s | MC s | kernel/MC time | kernel max error | kernel bound (max) | within bound + 1e-6 | MC "
+      "max error | texels | reference s |\n|---|---|---|---|---|---|---|---|---|---|\n");
   int over = 0;
   for (const Case& c : cases) over += runCase(c, repeat);
   std::printf("%s\n", over == 0 ? "every kernel error within its bound" : "kernel errors over their bound");

@@ -18,6 +18,7 @@
 #include "cli_run.h"
 #include "common/brdf_host.h"
 #include "common/models.h"
+#include "doc_figures.h"
 #include "formats/exr/table_file.h"
 #include "ltc_test_util.h"
 #include "tables/ltc/ltc_fit.h"
@@ -185,6 +186,8 @@ TEST(Ltc, DiffuseAndSheenFitsBeatTheCosine) {
   const int n = 16;
   std::vector<float> cosine[4];
   for (int k = 0; k < 4; ++k) cosine[k].assign(static_cast<size_t>(n) * n, k == 0 || k == 3 ? 1.0f : 0.0f);
+  // the table docs/ltc.md shows: each lobe's largest distance where E >= 1e-6 at 16 x 16
+  std::string table = "| lobe | largest distance (E >= 1e-6) | the clamped cosine's |\n|---|---|---|\n";
   for (LtcLobeSpec lobe : {LtcLobeSpec{-1, -1, DIFFUSE_BURLEY}, LtcLobeSpec{-1, -1, DIFFUSE_OREN_NAYAR},
                            LtcLobeSpec{NDF_CHARLIE, GAF_CHARLIE_SMITH}}) {
     const LtcFit f = fitLtc(runner(), lobe, n);
@@ -204,9 +207,12 @@ TEST(Ltc, DiffuseAndSheenFitsBeatTheCosine) {
       worst = std::max<double>(worst, f.tv[t]);
       worstBase = std::max<double>(worstBase, base[0][t]);
     }
-    std::printf("%s %dx%d: largest distance where E >= 1e-6: %.4f (the cosine's: %.4f)\n", lobe.name().c_str(), n, n,
-                worst, worstBase);
+    char row[160];
+    std::snprintf(row, sizeof row, "| %s | %.4f | %.4f |\n", lobe.name().c_str(), worst, worstBase);
+    table += row;
   }
+  std::printf("%s", table.c_str());
+  testing_docs::expectPagesQuote(table);
 }
 
 // The command: two files per lobe, RGBA each, read back; the header's largest distance is the
