@@ -82,6 +82,7 @@ TEST(FloatForms, CosArcWithinItsBoundOnTheAzimuthRange) {
     const float x = static_cast<float>(kPi * k / 200000.0);
     worst = std::max(worst, std::fabs(static_cast<double>(brdf32::cos_arc(x)) - std::cos(static_cast<double>(x))));
   }
+  std::printf("cos_arc, float form: largest error %.2e of cos on [0, pi]\n", worst);
   EXPECT_LE(worst, 2e-7);
   EXPECT_EQ(brdf64::cos_arc(1.2345), std::cos(1.2345));
 }

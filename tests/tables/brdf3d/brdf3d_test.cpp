@@ -21,6 +21,7 @@
 #include "common/brdf3d_grid.h"
 #include "common/brdf_host.h"
 #include "common/models.h"
+#include "doc_figures.h"
 #include "common/errors.h"
 #include "formats/exr/table_file.h"
 #include "formats/merl.h"
@@ -106,7 +107,11 @@ TEST(Brdf3d, KernelMatchesHostEvaluation) {
                                      << a.worst / s.nx % s.ny << "," << a.worst / s.nx / s.ny << ": " << a.got << " vs "
                                      << a.want;
             }
-  std::printf("worst relative error %.3g (where |f| > 1e-3 max), %.3g relative to max(1, |f|)\n", worstRel, worstMax1);
+  char line[160];
+  std::snprintf(line, sizeof line, "worst relative error %.3g (where |f| > 1e-3 max), %.3g relative to max(1, |f|)\n",
+                worstRel, worstMax1);
+  std::printf("%s", line);
+  testing_docs::expectPagesQuote(line);
 }
 
 // A whole material: RGB conductor Fresnel, a diffuse lobe with RGB albedo, f cos(theta_i).
