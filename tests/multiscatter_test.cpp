@@ -17,6 +17,7 @@
 #include "cl/device.h"
 #include "cl/runner.h"
 #include "common/models.h"
+#include "doc_figures.h"
 #include "materials/multiscatter.h"
 #include "reference/reference.h"
 
@@ -24,6 +25,7 @@ namespace {
 using namespace brdfbake;
 using materials::MsEnergy;
 using materials::MsTables;
+using testing_docs::sci;
 
 KernelRunner& runner() {
   static std::unique_ptr<KernelRunner> r;
@@ -183,19 +185,39 @@ TEST_P(MsPair, FresnelCompensationsCompared) {
   }
 }
 
-// The figures of docs/multiple-scattering.md's table-size sweep (not run by default: ~15 s;
-// --gtest_also_run_disabled_tests --gtest_filter='*Sweep*').
-TEST_P(MsPair, DISABLED_TableSizeSweep) {
-  const Pinned& p = GetParam();
-  const Baked& b = baked(p.ndf, p.gaf);
-  for (int n : {32, 64, 128, 256})
-    for (bool node : {false, true}) {
-      MsTables t = bakeTables(p.ndf, p.gaf, n, node);
-      Worst all = kullaContyFurnace(b, t, kMinMu, kMinR), rough = kullaContyFurnace(b, t, kMinMu, 25);
-      std::printf("%s %3d x %3d %s: max |albedo - 1| r >= 0.05: %.2e (mu=%.2f r=%.2f), r >= 0.25: %.2e\n",
-                  pairName(p.ndf, p.gaf).c_str(), n, n, node ? "node " : "texel", std::fabs(all.value), all.mu, all.r,
-                  std::fabs(rough.value));
+// The table-size sweep docs/multiple-scattering.md shows, a row per size: max |albedo - 1| over
+// r >= 0.05, mu >= 0.02 with n x n albedo and n albedo-avg tables, texel-centre / node, for each
+// pinned pair; and 128 node tables over r >= 0.25. The test prints the rows and checks the page's.
+// The finer tables must do better: each size's node tables beat its texel-centre ones from 64 on,
+// and 256 node tables meet the goal of 1e-3 (KullaContyWhiteFurnace holds it alone).
+TEST(Multiscatter, TableSizeSweep) {
+  std::string table =
+      "| tables (albedo n x n, albedo-avg n) | ggx + smith-correlated | beckmann + smith | ggx + smith |\n"
+      "|---|---|---|---|\n";
+  std::string rough = "| 128, node, r >= 0.25 only |";
+  for (int n : {32, 64, 128, 256}) {
+    std::string row = "| " + std::to_string(n) + ", texel-centre / node |";
+    for (const Pinned& p : kPinned) {
+      const Baked& b = baked(p.ndf, p.gaf);
+      double worst[2];
+      for (bool node : {false, true}) {
+        const MsTables t = bakeTables(p.ndf, p.gaf, n, node);
+        worst[node] = std::fabs(kullaContyFurnace(b, t, kMinMu, kMinR).value);
+        if (n == 128 && node) rough += " " + sci(std::fabs(kullaContyFurnace(b, t, kMinMu, 25).value), 2) + " |";
+      }
+      row += " " + sci(worst[0], 2) + " / " + sci(worst[1], 2) + " |";
+      if (n >= 64) {
+        EXPECT_LT(worst[1], worst[0]) << pairName(p.ndf, p.gaf) << " " << n;
+      }
+      if (n == 256) {
+        EXPECT_LE(worst[1], 1e-3) << pairName(p.ndf, p.gaf);
+      }
     }
+    table += row + "\n";
+  }
+  table += rough + "\n";
+  std::printf("%s", table.c_str());
+  testing_docs::expectPagesQuote(table);
 }
 
 // Sensitivity: the other pair's average albedo in place of this one's breaks the furnace.

@@ -519,17 +519,19 @@ TEST(Docs, NamedTestsExist) {
 // A note lists only figures its paragraph holds, and none that a figure note ties. The pages not
 // yet held print their count of figures in none of these (BRDFBAKE_UNTIED=PAGE.md lists them).
 TEST(Docs, EveryFigureOnAHeldPageIsTiedOrAnInput) {
+  // the pages held so far; the others print their untied count until they are
   const std::set<std::string> held = {"ashikhmin-shirley.md",
+                                      "benchmarks-materials.md",
                                       "brdf3d.md",
                                       "convergence.md",
-                                      "formats.md",
-                                      "performance.md",
-                                      "reports.md",
-                                      "benchmarks-materials.md",
                                       "development.md",
+                                      "formats.md",
                                       "layouts.md",
                                       "ltc.md",
                                       "materials.md",
+                                      "multiple-scattering.md",
+                                      "performance.md",
+                                      "reports.md",
                                       "shader-code.md",
                                       "sheen.md"};
   const std::regex eNumber("[-+]?\\d+(?:\\.\\d+)?[eE][-+]?\\d+");
