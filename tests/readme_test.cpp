@@ -520,7 +520,8 @@ TEST(Docs, NamedTestsExist) {
 // yet held print their count of figures in none of these (BRDFBAKE_UNTIED=PAGE.md lists them).
 TEST(Docs, EveryFigureOnAHeldPageIsTiedOrAnInput) {
   // the pages held so far; the others print their untied count until they are
-  const std::set<std::string> held = {"ashikhmin-shirley.md",
+  const std::set<std::string> held = {"MODELS.md",
+                                      "ashikhmin-shirley.md",
                                       "benchmarks-materials.md",
                                       "brdf3d.md",
                                       "convergence.md",
@@ -532,6 +533,7 @@ TEST(Docs, EveryFigureOnAHeldPageIsTiedOrAnInput) {
                                       "multiple-scattering.md",
                                       "performance.md",
                                       "reports.md",
+                                      "rough-glass.md",
                                       "shader-code.md",
                                       "sheen.md"};
   const std::regex eNumber("[-+]?\\d+(?:\\.\\d+)?[eE][-+]?\\d+");
