@@ -366,6 +366,9 @@ TEST(MerlRoundTrip, AlbedoOfTheWrittenFileMatchesTheAnalyticAlbedo) {
   // (always mu = 0.1) 4.19e-3, 8.77e-4, 2.12e-4; the computation is deterministic, the bounds are
   // those figures plus 25%
   std::string summary;  // each r's worst difference at mu >= 0.1, which the pages quote
+  // and docs/merl.md's table: E_merl - E at mu = 0, 0.1, 0.2, 0.5, 1 and the worst at mu >= 0.1
+  std::string table =
+      "| r | mu = 0 | mu = 0.1 | mu = 0.2 | mu = 0.5 | mu = 1 | worst at mu >= 0.1 |\n|---|---|---|---|---|---|---|\n";
   for (Bound b : {Bound{0.3, 7.4e-2, 5.3e-3}, Bound{0.5, 2.0e-2, 1.1e-3}, Bound{0.8, 7.4e-3, 2.7e-4}}) {
     fs::path out = dir / ("r" + std::to_string(int(b.r * 10)));
     CmdResult r = run("bake --brdf merl:" + merlFileOf(b.r).string() + " --table albedo --grid node --size 11 -o " +
@@ -377,7 +380,9 @@ TEST(MerlRoundTrip, AlbedoOfTheWrittenFileMatchesTheAnalyticAlbedo) {
     EXPECT_EQ(m.strings["brdf.material"], "merl:" + fs::path(merlFileOf(b.r)).stem().string());
     EXPECT_EQ(m.strings["brdf.axes"], "mu");
     int row = int(b.r * 10 + 0.5);
-    double worstInside = 0;
+    double worstInside = 0, worstRelative = 0;
+    char cell[32];
+    std::string tableRow = "| " + std::to_string(b.r).substr(0, 3) + " |";
     for (int i = 0; i < 11; ++i) {
       double e = analytic.planes[0][row * 11 + i], got = m.planes[0][i];
       EXPECT_FLOAT_EQ(m.planes[1][i], got);  // R = G = B for a grey material
@@ -386,15 +391,25 @@ TEST(MerlRoundTrip, AlbedoOfTheWrittenFileMatchesTheAnalyticAlbedo) {
         EXPECT_LT(diff, b.grazing) << "r " << b.r << " mu 0: " << got << " vs " << e;
       else
         EXPECT_LT(diff, b.inside) << "r " << b.r << " mu " << i / 10.0 << ": " << got << " vs " << e;
-      if (i > 0) worstInside = std::max(worstInside, diff);
+      if (i > 0 && diff > worstInside) {
+        worstInside = diff;
+        worstRelative = diff / e;
+      }
+      if (i == 0 || i == 1 || i == 2 || i == 5 || i == 10) {
+        std::snprintf(cell, sizeof cell, " %+.2e |", got - e);
+        tableRow += cell;
+      }
       std::printf("r %.1f mu %.1f analytic %.7f merl %.7f diff %+.2e\n", b.r, i / 10.0, e, got, got - e);
     }
     char line[80];
     std::snprintf(line, sizeof line, "r %.1f: worst |diff| at mu >= 0.1: %.2e\n", b.r, worstInside);
     std::printf("%s", line);
     summary += line;
+    std::snprintf(cell, sizeof cell, " %.2e (%.1f %%) |\n", worstInside, 100 * worstRelative);
+    table += tableRow + cell;
   }
-  testing_docs::expectPagesQuote(summary);
+  std::printf("%s", table.c_str());
+  testing_docs::expectPagesQuote(summary + table);
 }
 
 // The bound above tells the lookups apart: MERL's own nearest-bin lookup, integrated by the same
