@@ -619,6 +619,19 @@ TEST(Docs, EveryFigureOnAHeldPageIsTiedOrAnInput) {
   EXPECT_GE(tied, 100);
 }
 
+// docs/accuracy.md's bounds table is the benchmark's: `brdfbake-bench --bounds --stride 4` (every
+// table of the default set as brdfbake bakes it and four other pairs against the reference, about 3
+// minutes on two cores) prints it as markdown rows, and the page's rows must be among them, with no
+// texel over its claim. Behind the `sweep` label (BoundsSweep.TheBenchmarksTableIsThePages).
+TEST(Docs, DISABLED_BoundsTableIsTheBenchmarks) {
+  const fs::path d = freshDir("readme", "bounds");
+  const CmdResult r = shell("cd '" + d.string() + "' && '" BRDFBAKE_BINARY_DIR "/brdfbake-bench' --bounds --stride 4");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("\n0 texels over their claimed bound"), std::string::npos) << r.out;
+  std::printf("%s", r.out.c_str());
+  expectPagesQuote(r.out);
+}
+
 // Every build-tree path a page or the README names (`./build/tests/brdfbake-gl-tests`,
 // `build/brdfbake-bench`) is in this build, under build/ (the directory the README's commands make),
 // so that a reader who runs it finds it.

@@ -134,6 +134,8 @@ mutation() {
                      '| burley E_d, r in [0, 1] | ~0.0022 | ~0.0058 | ~0.38 | 2.32e-7 |' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
     doc-in-figure) set -- "$1" tests/tables/brdf3d/brdf3d_test.cpp '                worstRel, worstMax1);' \
                      '                2 * worstRel, worstMax1);' "Brdf3d.KernelMatchesHostEvaluation" ;;
+    doc-bounds-row) set -- "$1" docs/accuracy.md '| ggx+schlick-ggx | albedo | 6.09e-7 | 1.40e-7 | 4.3 |' \
+                      '| ggx+schlick-ggx | albedo | 6.09e-7 | 1.40e-7 | 3.8 |' "BoundsSweep.TheBenchmarksTableIsThePages" ;;
     doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
                           '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
     dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
@@ -153,7 +155,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        ltc-e-claim-without-float avg-kink-breaks glass-reference-kink
        favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset
        doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named avg-claim-inflated
-       doc-table-row doc-rows-unchecked doc-figure-untied doc-build-path doc-rows-from doc-in-figure
+       doc-table-row doc-rows-unchecked doc-figure-untied doc-build-path doc-rows-from doc-in-figure doc-bounds-row
        doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
