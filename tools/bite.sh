@@ -136,6 +136,11 @@ mutation() {
                      '                2 * worstRel, worstMax1);' "Brdf3d.KernelMatchesHostEvaluation" ;;
     doc-bounds-row) set -- "$1" docs/accuracy.md '| ggx+schlick-ggx | albedo | 6.09e-7 | 1.40e-7 | 4.3 |' \
                       '| ggx+schlick-ggx | albedo | 6.09e-7 | 1.40e-7 | 3.8 |' "BoundsSweep.TheBenchmarksTableIsThePages" ;;
+    doc-merl-figure) set -- "$1" tests/tables/measured/merl_test.cpp '        e.nodes - 1, tight, std::fabs(e.e[0] - tight), e.err[0]);' \
+                       '        e.nodes - 1, tight, 2 * std::fabs(e.e[0] - tight), e.err[0]);' \
+                       "MerlAlbedo.EstimateHoldsOnAFilesInterpolantAtGrazingViews" ;;
+    doc-merl-row) set -- "$1" docs/merl.md '| ggx r 0.8 | 3.56e-9 | 2.79e-9 | 1.28 |' '| ggx r 0.8 | 3.56e-9 | 2.79e-9 | 1.48 |' \
+                    "MerlSweep.TheBenchmarksTablesAreThePages" ;;
     doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
                           '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
     dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
@@ -156,7 +161,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset
        doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named avg-claim-inflated
        doc-table-row doc-rows-unchecked doc-figure-untied doc-build-path doc-rows-from doc-in-figure doc-bounds-row
-       doc-example-option dry-run-status kind-name"
+       doc-merl-figure doc-merl-row doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"

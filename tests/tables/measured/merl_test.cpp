@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cstdarg>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -38,6 +39,18 @@ constexpr double kPi = 3.14159265358979323846;
 using testing_cli::bytes;
 using testing_cli::CmdResult;
 using testing_cli::run;
+
+// Prints a line and appends it to `said`: what a test prints is what its pages' figures are checked
+// against (testing_docs::expectPagesQuote).
+__attribute__((format(printf, 2, 3))) void say(std::string& said, const char* format, ...) {
+  char line[400];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(line, sizeof line, format, args);
+  va_end(args);
+  std::fputs(line, stdout);
+  said += line;
+}
 fs::path freshDir(const std::string& name) { return testing_cli::freshDir("merl", name); }
 
 // ggx + smith-correlated, Schlick F0 (one value or three), perceptual roughness r.
@@ -282,15 +295,17 @@ TEST(MerlAlbedo, HSpaceQuadratureMatchesTheReferenceOnAnAnalyticMaterial) {
 TEST(MerlAlbedo, EstimateHoldsOnAFilesInterpolantAtGrazingViews) {
   MerlData d = readMerl(merlFileOf(0.3).string());
   RusinkiewiczFn f = merlFunction(d);
+  std::string said;
   for (double mu : {1.0 / 32, 3.0 / 32, 9.0 / 32}) {
     AlbedoEstimate e = hSpaceAlbedo(f, mu);
     double tight = hSpaceIntegral(f, mu, HSpaceRule{25, 24})[0];
-    std::printf("mu %.5f: E %.10f by (%d,%d), (25,24) %.10f, error %.2e, estimate %.2e\n", mu, e.e[0], e.nodes,
-                e.nodes - 1, tight, std::fabs(e.e[0] - tight), e.err[0]);
+    say(said, "mu %.5f: E %.10f by (%d,%d), (25,24) %.10f, error %.2e, estimate %.2e\n", mu, e.e[0], e.nodes,
+        e.nodes - 1, tight, std::fabs(e.e[0] - tight), e.err[0]);
     EXPECT_LT(e.nodes, 25) << "mu " << mu;
     EXPECT_LE(e.err[0], merlTexelTarget(e.e)) << "mu " << mu;
     EXPECT_LE(std::fabs(e.e[0] - tight), e.err[0]) << "mu " << mu;
   }
+  testing_docs::expectPagesQuote(said);
 }
 
 // brdf.error of a measured material's table: above every stored value's error and within 4 times
@@ -312,7 +327,9 @@ TEST(MerlAlbedo, TableClaimBoundsTheStoredValuesWithinFourTimes) {
   double worst = 0;
   for (int i = 0; i < n; ++i) worst = std::max(worst, std::fabs(double(t.planes[0][i]) - ref[i]));
   const double claim = t.floats["brdf.error"];
-  std::printf("brdf.error %.3e, largest error of a stored value %.3e: %.2fx\n", claim, worst, claim / worst);
+  std::string said;
+  say(said, "brdf.error %.3e, largest error of a stored value %.3e: %.2fx\n", claim, worst, claim / worst);
+  testing_docs::expectPagesQuote(said);
   EXPECT_NE(t.strings["brdf.method"].find("n climbs"), std::string::npos) << t.strings["brdf.method"];
   EXPECT_GE(claim, worst);
   EXPECT_LE(claim, 4 * worst);
@@ -329,7 +346,8 @@ TEST(MerlAlbedo, DirectAverageMatchesAConstantAndTheReference) {
   MerlData d = synthetic([](int, int, int) { return 0.5 / kPi; });
   const double expected = kPi * double(float(0.5 / kPi));
   AlbedoEstimate c = directAlbedoAvg(merlFunction(d), 2);
-  std::printf("constant: E_avg - pi f = %+.1e (estimate %.1e, n = %d)\n", c.e[0] - expected, c.err[0], c.nodes);
+  std::string said;
+  say(said, "constant: E_avg - pi f = %+.1e (estimate %.1e, n = %d)\n", c.e[0] - expected, c.err[0], c.nodes);
   EXPECT_LE(std::fabs(c.e[0] - expected), c.err[0] + 1e-13);
   EXPECT_LE(c.err[0], merlAvgTarget(c.e));
   EXPECT_EQ(c.unsupported, 0.0);
@@ -343,11 +361,12 @@ TEST(MerlAlbedo, DirectAverageMatchesAConstantAndTheReference) {
   const double ref = testing_ref::cached1(
       testing_ref::keyOf("albedoAvg ggx smith-correlated fresnel", {r, double(w.f.model), w.f.x, w.f.y}),
       [&] { return reference::albedoAvg(s.ndf, s.gaf, r, w); });
-  std::printf("analytic ggx r 0.375: E_avg %.12f, reference %.12f, error %.1e, estimate %.1e, n = %d\n", a.e[0], ref,
-              std::fabs(a.e[0] - ref), a.err[0], a.nodes);
+  say(said, "analytic ggx r 0.375: E_avg %.12f, reference %.12f, error %.1e, estimate %.1e, n = %d\n", a.e[0], ref,
+      std::fabs(a.e[0] - ref), a.err[0], a.nodes);
   EXPECT_LT(a.nodes, kMerlAvgLadder.back());
   EXPECT_LE(a.err[0], merlAvgTarget(a.e));
   EXPECT_LE(std::fabs(a.e[0] - ref), a.err[0] + 1e-10);  // + the reference's own accuracy
+  testing_docs::expectPagesQuote(said);
 }
 
 // The round trip through the command line: analytic material -> MERL file -> --brdf merl albedo
@@ -421,7 +440,9 @@ TEST(MerlRoundTrip, NearestBinLookupIsFarWorseThanTrilinear) {
   w.f = {fresnelId("schlick"), 0.04, 0};
   double ref = reference::albedo(ndfId("ggx"), gafId("smith-correlated"), 0.5, 0.2, w).b;
   double tri = hSpaceAlbedo(merlFunction(d), 0.2).e[0], near = hSpaceAlbedo(merlFunction(d, true), 0.2).e[0];
-  std::printf("r 0.5 mu 0.2: reference %.7f trilinear %+.2e nearest %+.2e\n", ref, tri - ref, near - ref);
+  std::string said;
+  say(said, "r 0.5 mu 0.2: reference %.7f trilinear %+.2e nearest %+.2e\n", ref, tri - ref, near - ref);
+  testing_docs::expectPagesQuote(said);
   EXPECT_LT(std::fabs(tri - ref), 6e-4);   // measured 4.82e-4
   EXPECT_GT(std::fabs(near - ref), 5e-3);  // measured 7.30e-3
 }
@@ -442,9 +463,11 @@ TEST(MerlRoundTrip, AverageAlbedoAndSplitSum) {
   TableImage avg = readTableExr((dir / "m" / ("albedo-avg_merl-" + name + ".exr")).string());
   ASSERT_EQ(avg.width, 1);
   ASSERT_EQ(avg.height, 1);
-  std::printf("r 0.5 E_avg: analytic %.7f merl %.7f diff %+.2e (bound %.2e)\n", eavg, avg.planes[0][0],
-              avg.planes[0][0] - eavg, avg.floats["brdf.error"]);
+  std::string said;
+  say(said, "r 0.5 E_avg: analytic %.7f merl %.7f diff %+.2e (bound %.2e)\n", eavg, avg.planes[0][0],
+      avg.planes[0][0] - eavg, avg.floats["brdf.error"]);
   EXPECT_LT(std::fabs(avg.planes[0][0] - eavg), 1.3e-4);  // measured +1.03e-4, plus 25%
+  testing_docs::expectPagesQuote(said);
   TableImage albedo = readTableExr((dir / "m" / ("albedo_merl-" + name + ".exr")).string());
   TableImage split = readTableExr((dir / "m" / ("splitsum_merl-" + name + ".exr")).string());
   EXPECT_EQ(split.strings["brdf.table"], "splitsum");
@@ -457,13 +480,15 @@ TEST(MerlRoundTrip, AverageAlbedoAndSplitSum) {
 TEST(MerlAlbedo, ConstantDataIntegratesToPiTimesItAndInfoFlagsEnergyGain) {
   MerlData d = synthetic([](int, int, int) { return 0.5 / kPi; });
   const double expected = kPi * double(float(0.5 / kPi));  // the file holds the float's value
+  std::string said;
   for (double mu : {0.0, 0.01, 0.3, 0.7, 1.0}) {
     AlbedoEstimate e = hSpaceAlbedo(merlFunction(d), mu);
-    std::printf("constant: mu %.2f E - pi f = %+.1e (estimate %.1e)\n", mu, e.e[0] - expected, e.err[0]);
+    say(said, "constant: mu %.2f E - pi f = %+.1e (estimate %.1e)\n", mu, e.e[0] - expected, e.err[0]);
     EXPECT_NEAR(e.e[0], expected, 1e-7) << mu;
     EXPECT_NEAR(e.e[2], expected, 1e-7) << mu;
     EXPECT_EQ(e.unsupported, 0.0) << mu;
   }
+  testing_docs::expectPagesQuote(said);
   fs::path dir = freshDir("constant");
   writeMerl((dir / "bright.binary").string(), {std::vector<float>(kMerlBins, 1.0f)});
   CmdResult r = run("bake --brdf merl:" + (dir / "bright.binary").string() + " --table albedo --size 2 -o " +
