@@ -127,7 +127,7 @@ mutation() {
     doc-rows-unchecked) set -- "$1" tests/mu_axis_test.cpp '  testing_docs::expectPagesQuote(table);' '' \
                           "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
     doc-figure-untied) set -- "$1" docs/shader-code.md '<!-- inputs: 1e-5 -->' '' \
-                         "Docs.EveryFigureOnAHeldPageIsTiedOrAnInput" ;;
+                         "Docs.EveryFigureOnEveryPageIsTiedOrAnInput" ;;
     doc-build-path) set -- "$1" docs/ashikhmin-shirley.md '`./build/tests/brdfbake-ashikhmin-tests' \
                       '`build-as/tests/brdfbake-ashikhmin-tests' "Docs.NamedBuildPathsExist" ;;
     doc-rows-from) set -- "$1" docs/benchmarks-materials.md '| burley E_d, r in [0, 1] | ~0.0022 | ~0.0058 | ~0.38 | 2.12e-7 |' \
