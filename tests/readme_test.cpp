@@ -506,8 +506,8 @@ TEST(Docs, NamedTestsExist) {
 }
 
 // The figures a page quotes are tied to what prints them. On every page, every number written in
-// e-notation outside code (the form the pages give
-// measured errors, bounds and ratios of them in: "2.63e-3", "1e-7") is one of:
+// e-notation outside code (the form the pages give measured errors, bounds and ratios of them in:
+// "2.63e-3", "1e-7") is one of:
 //  - tied: the X of a figure note under its paragraph (<!-- figure X ... from: ... --> or "in:"),
 //    or a cell of a table under a rows note (<!-- rows in: Suite.Name -->), which the tests above
 //    and the tests named check;
