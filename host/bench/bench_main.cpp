@@ -43,7 +43,7 @@ const char* const kUsage =
   --all-pairs [--pair NDF+GAF]...: no timing; every NDF/GAF pair's table (or the given ones;
               not charlie's, whose reference is tests/tables/microfacet/sheen_test.cpp's) against the reference
               (largest error, largest kernel bound, texels whose error exceeds their bound).
-              ~26 minutes at --stride 8, most of it the exact-Smith references.
+              ~11 minutes at --stride 8 on two cores, most of it the exact-Smith references.
   --albedo-avg: the albedo-avg table (size 32, texel centres) timed against the 32x32 albedo
               table it averages, then every pair's albedo-avg against the reference: the
               largest bound over all 32 entries, the error at every --stride-th r (default 8)
