@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdarg>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -171,6 +172,18 @@ inline std::vector<std::string> tableRowsAbove(const std::vector<std::string>& p
   std::vector<std::string> rows;
   for (size_t k = begin + 2; k < end; ++k) rows.push_back(page[k]);
   return rows;
+}
+
+// Prints a line and appends it to `said`: a test that the pages quote keeps what it prints, to hand
+// to expectPagesQuote below.
+__attribute__((format(printf, 2, 3))) inline void say(std::string& said, const char* format, ...) {
+  char line[400];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(line, sizeof line, format, args);
+  va_end(args);
+  std::fputs(line, stdout);
+  said += line;
 }
 
 // The test that calls this has just printed `printout`. Every figure and table the pages tie to

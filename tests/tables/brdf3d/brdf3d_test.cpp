@@ -107,11 +107,10 @@ TEST(Brdf3d, KernelMatchesHostEvaluation) {
                                      << a.worst / s.nx % s.ny << "," << a.worst / s.nx / s.ny << ": " << a.got << " vs "
                                      << a.want;
             }
-  char line[160];
-  std::snprintf(line, sizeof line, "worst relative error %.3g (where |f| > 1e-3 max), %.3g relative to max(1, |f|)\n",
-                worstRel, worstMax1);
-  std::printf("%s", line);
-  testing_docs::expectPagesQuote(line);
+  std::string said;
+  testing_docs::say(said, "worst relative error %.3g (where |f| > 1e-3 max), %.3g relative to max(1, |f|)\n", worstRel,
+                    worstMax1);
+  testing_docs::expectPagesQuote(said);
 }
 
 // A whole material: RGB conductor Fresnel, a diffuse lobe with RGB albedo, f cos(theta_i).

@@ -7,7 +7,6 @@
 #include <unistd.h>
 
 #include <array>
-#include <cstdarg>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -39,18 +38,8 @@ constexpr double kPi = 3.14159265358979323846;
 using testing_cli::bytes;
 using testing_cli::CmdResult;
 using testing_cli::run;
+using testing_docs::say;
 
-// Prints a line and appends it to `said`: what a test prints is what its pages' figures are checked
-// against (testing_docs::expectPagesQuote).
-__attribute__((format(printf, 2, 3))) void say(std::string& said, const char* format, ...) {
-  char line[400];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(line, sizeof line, format, args);
-  va_end(args);
-  std::fputs(line, stdout);
-  said += line;
-}
 fs::path freshDir(const std::string& name) { return testing_cli::freshDir("merl", name); }
 
 // ggx + smith-correlated, Schlick F0 (one value or three), perceptual roughness r.
@@ -420,10 +409,7 @@ TEST(MerlRoundTrip, AlbedoOfTheWrittenFileMatchesTheAnalyticAlbedo) {
       }
       std::printf("r %.1f mu %.1f analytic %.7f merl %.7f diff %+.2e\n", b.r, i / 10.0, e, got, got - e);
     }
-    char line[80];
-    std::snprintf(line, sizeof line, "r %.1f: worst |diff| at mu >= 0.1: %.2e\n", b.r, worstInside);
-    std::printf("%s", line);
-    summary += line;
+    say(summary, "r %.1f: worst |diff| at mu >= 0.1: %.2e\n", b.r, worstInside);
     std::snprintf(cell, sizeof cell, " %.2e (%.1f %%) |\n", worstInside, 100 * worstRelative);
     table += tableRow + cell;
   }
