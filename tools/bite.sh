@@ -141,6 +141,8 @@ mutation() {
                        "MerlAlbedo.EstimateHoldsOnAFilesInterpolantAtGrazingViews" ;;
     doc-merl-row) set -- "$1" docs/merl.md '| ggx r 0.8 | 3.56e-9 | 2.79e-9 | 1.28 |' '| ggx r 0.8 | 3.56e-9 | 2.79e-9 | 1.48 |' \
                     "MerlSweep.TheBenchmarksTablesAreThePages" ;;
+    merl-claim-storage) set -- "$1" host/materials/merl_albedo.cpp '(est[i].err[c] + std::fabs(stored - est[i].e[c]))' \
+                          '(est[i].err[c])' "MerlSweep.TheBenchmarksTablesAreThePages" ;;
     doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
                           '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
     dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
@@ -161,7 +163,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset
        doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named avg-claim-inflated
        doc-table-row doc-rows-unchecked doc-figure-untied doc-build-path doc-rows-from doc-in-figure doc-bounds-row
-       doc-merl-figure doc-merl-row doc-example-option dry-run-status kind-name"
+       doc-merl-figure doc-merl-row merl-claim-storage doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"
