@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -60,11 +61,12 @@ const char* const kUsage =
               the same quantity: times, errors against the reference (dielectric on every
               --stride-th texel, default 4, plus edges; diffuse on all), kernel bounds.
               host/bench/materials_bench.cpp. ~2 minutes.
-  --bounds [--pair NDF+GAF]... [--csv FILE]: how tight the claimed bounds are: every table of the
-              default set (split-sum --size, albedo, albedo-avg, k_p) of each pair (default:
-              ggx+smith-correlated, beckmann+smith, ggx+schlick-ggx, blinn-phong+implicit,
+  --bounds [--pair NDF+GAF]... [--tables LIST] [--csv FILE]: how tight the claimed bounds are: every
+              table of the default set (split-sum --size, albedo, albedo-avg, k_p) of each pair
+              (default: ggx+smith-correlated, beckmann+smith, ggx+schlick-ggx, blinn-phong+implicit,
               gaussian+smith-correlated-exact) baked as brdfbake bakes it, brdf.error and each
-              texel's claim against the true error. host/bench/bounds_bench.cpp.
+              texel's claim against the true error; --tables splitsum,albedo measures only those
+              (of splitsum, albedo, albedo-avg, kp). host/bench/bounds_bench.cpp.
   --probe-span [--pair NDF+GAF]... [--size N]: the interpolation probe with its quarter-texel
               steps over six texels of mu against kProbeMuTexels (tables/interp_probe.h), on
               every pair's split sum (both mu axes) and 32^2 albedo. host/bench/probe_bench.cpp.
@@ -100,7 +102,7 @@ int allPairs(const std::string& device, int n, int stride,
 int probeSpanBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& only, int n);  // probe_bench.cpp
 int coldStart(const std::string& device, int samples, int repeat, bool skipAll);                // cold_start_bench.cpp
 int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pairs, int size, int stride,
-                const std::string& csv);  // bounds_bench.cpp
+                const std::string& csv, const std::vector<std::string>& tables);  // bounds_bench.cpp
 }  // namespace brdfbake
 
 namespace {
@@ -176,6 +178,7 @@ int main(int argc, char** argv) {
   bool probeSpan = false, ltc = false;
   std::vector<std::pair<int, int>> pairs;
   std::string csv;
+  std::vector<std::string> boundsTables;  // --tables: the --bounds rows to measure
   int mcLog2 = 23;
   int volumeSize = 256;
   std::string merlFile;
@@ -233,7 +236,19 @@ int main(int argc, char** argv) {
       ltc = true;
     else if (a == "--csv")
       csv = next();
-    else if (a == "--pair") {
+    else if (a == "--tables") {
+      const std::string v = next();
+      std::istringstream in(v);
+      for (std::string t; std::getline(in, t, ',');) {
+        if (t != "splitsum" && t != "albedo" && t != "albedo-avg" && t != "kp") {
+          std::fprintf(stderr,
+                       "brdfbake-bench: --tables: comma-separated, each of splitsum, albedo, albedo-avg, kp; got \"%s\"\n",
+                       v.c_str());
+          return 64;
+        }
+        boundsTables.push_back(t);
+      }
+    } else if (a == "--pair") {
       std::string v = next();
       size_t plus = v.find('+');
       try {
@@ -282,7 +297,7 @@ int main(int argc, char** argv) {
                  {NDF_GGX, GAF_SCHLICK_GGX},
                  {NDF_BLINN_PHONG, GAF_IMPLICIT},
                  {NDF_GAUSSIAN, GAF_SMITH_CORRELATED_EXACT}};
-      return boundsBench(runner, pairs, n, stride, csv);
+      return boundsBench(runner, pairs, n, stride, csv, boundsTables);
     }
     if (probeSpan) return probeSpanBench(runner, pairs, n);
     if (dielectric) return dielectricBench(runner, std::max(1, std::min(mcLog2, 24)));

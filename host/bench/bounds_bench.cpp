@@ -141,7 +141,11 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pairs, int size, int stride,
-                const std::string& csv) {
+                const std::string& csv, const std::vector<std::string>& tables) {
+  // the tables the rows are for: each of splitsum, albedo, albedo-avg and kp, or every one
+  auto wanted = [&](TableKind kind) {
+    return tables.empty() || std::find(tables.begin(), tables.end(), tableName(kind)) != tables.end();
+  };
   std::vector<TableRow> rows;
   std::vector<int> kpDone;
   std::printf(
@@ -161,6 +165,7 @@ int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pa
       kpDone.push_back(ndf);
     }
     for (auto [kind, n] : kinds) {
+      if (!wanted(kind)) continue;
       TableRow row =
           measure(runner, kind, ndf, gaf, n, kind == TableKind::SplitSum || kind == TableKind::Albedo ? stride : 1);
       double worst = 0, maxFlt = -1, maxQuad = -1, maxQb = -1;
