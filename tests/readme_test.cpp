@@ -295,7 +295,9 @@ std::string testThatChecksThePages(const std::string& name) {
   const std::string listedAs = suite + "." + (test.rfind("DISABLED_", 0) == 0 ? test.substr(9) : test);
   if (!std::regex_search(listed, std::regex(": " + listedAs + "(\\n| )")))
     return name + " is no test of this build (ctest -N)";
-  const std::regex head("\\nTEST(_F|_P)?\\(" + suite + ", " + test + "\\)");
+  // a parameterised test, Instantiation/Suite.Test/Parameter, is written TEST_P(Suite, Test)
+  const std::string sourceSuite = suite.substr(suite.find('/') + 1), sourceTest = test.substr(0, test.find('/'));
+  const std::regex head("\\nTEST(_F|_P)?\\(" + sourceSuite + ", " + sourceTest + "\\)");
   for (const auto& e : fs::recursive_directory_iterator(fs::path(BRDFBAKE_SOURCE_DIR) / "tests")) {
     if (e.path().extension() != ".cpp") continue;
     const std::string text = bytes(e.path());
@@ -307,7 +309,7 @@ std::string testThatChecksThePages(const std::string& name) {
                : name + " (" + e.path().filename().string() +
                      ") does not call expectPagesQuote: nothing checks the page";
   }
-  return name + ": no TEST(" + suite + ", " + test + ") under tests/";
+  return name + ": no TEST(" + sourceSuite + ", " + sourceTest + ") under tests/";
 }
 
 }  // namespace
@@ -605,74 +607,24 @@ TEST(Docs, EveryFigureOnEveryPageIsTiedOrAnInput) {
   EXPECT_GE(tied, 100);
 }
 
-// docs/accuracy.md's bounds tables are the benchmark's: `brdfbake-bench --bounds --stride 4` (every
-// table of the default set as brdfbake bakes it and four other pairs against the reference, about 3
-// minutes on two cores; then five pairs of the GAFs with breaks of their own, about 2 minutes)
-// prints them as markdown rows, and the page's rows must be among them, with no texel over its
-// claim. Behind the `sweep` label (BoundsSweep.TheBenchmarksTableIsThePages).
-TEST(Docs, DISABLED_BoundsTableIsTheBenchmarks) {
-  const fs::path d = freshDir("readme", "bounds");
-  std::string printed;
-  // the default set's pairs, then five of the pairs whose GAFs need their own breaks (the page's
-  // second table)
-  for (const char* pairs : {"",
-                            " --pair ggx+cook-torrance --pair ggx+kelemen --pair ggx+neumann --pair ggx+none"
-                            " --pair beckmann+cook-torrance"}) {
-    const CmdResult r =
-        shell("cd '" + d.string() + "' && '" BRDFBAKE_BINARY_DIR "/brdfbake-bench' --bounds --stride 4" + pairs);
-    ASSERT_EQ(r.code, 0) << r.out;
-    EXPECT_NE(r.out.find("\n0 texels over their claimed bound"), std::string::npos) << r.out;
-    std::printf("%s", r.out.c_str());
-    printed += r.out;
-  }
-  expectPagesQuote(printed);
-}
-
-// docs/merl.md's two claim tables are the MERL benchmark's: four analytic materials written as MERL
-// files by `brdfbake bake --table brdf3d --format merl`, each run through `brdfbake-bench --merl
-// FILE` (the albedo table at 16 texel centres and the albedo-avg table baked as brdfbake bakes them,
-// against rules above their ladders). The test prints each table's rows as markdown, and the page's
-// rows must be among them, every claim at or above its error. 15 to 20 minutes on two cores, behind
-// the `sweep` label (MerlSweep.TheBenchmarksTablesAreThePages).
-TEST(Docs, DISABLED_MerlTablesAreTheBenchmarks) {
-  struct Material {
-    const char* label;
-    const char* args;
-  };
-  const Material materials[] = {
-      {"ggx r 0.3", "--roughness 0.3 --fresnel schlick --f0 0.04"},
-      {"ggx r 0.8", "--roughness 0.8 --fresnel schlick --f0 0.04"},
-      {"r 0.5 + Lambert, coloured",
-       "--roughness 0.5 --fresnel schlick --f0 0.9,0.6,0.3 --diffuse lambert --rho 0.2,0.5,0.8"},
-      {"beckmann r 0.15", "--ndf beckmann --gaf smith --roughness 0.15"},
-  };
-  const fs::path d = freshDir("readme", "merl-bench");
-  std::string albedoRows, avgRows;
-  for (size_t m = 0; m < std::size(materials); ++m) {
-    const std::string dir = "m" + std::to_string(m);
-    const CmdResult bake = shell("cd '" + d.string() + "' && '" BRDFBAKE_EXE "' bake --table brdf3d --format merl " +
-                                 materials[m].args + " -o " + dir + " 2>&1");
-    ASSERT_EQ(bake.code, 0) << bake.out;
-    const CmdResult r =
-        shell("cd '" + d.string() + "' && '" BRDFBAKE_BINARY_DIR "/brdfbake-bench' --merl " + dir + "/*.binary 2>&1");
-    std::printf("%s: %s", materials[m].label, r.out.c_str());
-    EXPECT_EQ(r.code, 0) << r.out;
-    EXPECT_NE(r.out.find("\nevery claim holds"), std::string::npos) << r.out;
-    for (const char* table : {"albedo", "albedo-avg"}) {
-      const size_t at = r.out.find(std::string("\n") + table + " ");
-      ASSERT_NE(at, std::string::npos) << "no " << table << " line in\n" << r.out;
-      // table, seconds, brdf.error, largest error, ratio
-      const double claim = numberAfter(r.out, at + 1 + std::strlen(table), 2);
-      const double error = numberAfter(r.out, at + 1 + std::strlen(table), 3);
-      ASSERT_TRUE(claim > 0 && error > 0) << r.out;
-      EXPECT_GE(claim, error) << materials[m].label << " " << table;
-      char row[200];
-      std::snprintf(row, sizeof row, "| %s | %.2e | %.2e | %.2f |\n", materials[m].label, claim, error, claim / error);
-      (std::strcmp(table, "albedo") == 0 ? albedoRows : avgRows) += row;
-    }
-  }
-  std::printf("albedo, 16 texel centres:\n%salbedo-avg:\n%s", albedoRows.c_str(), avgRows.c_str());
-  expectPagesQuote(albedoRows + avgRows);
+// `brdfbake-bench --bounds --tables` (docs/accuracy.md's charlie rows use it) measures the rows
+// named, in the benchmark's order, and refuses a name it does not know with exit 64, naming the
+// accepted ones.
+TEST(Bench, BoundsTablesPicksTheRowsAndRefusesOthers) {
+  const fs::path d = freshDir("readme", "bench-tables");
+  const std::string bench = "cd '" + d.string() + "' && '" BRDFBAKE_BINARY_DIR "/brdfbake-bench' --bounds --size 8 --stride 4";
+  const CmdResult r = shell(bench + " --pair ggx+smith-correlated --tables kp,splitsum");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::regex row("^\\| (\\S+) \\| (\\S+) \\| \\d");  // a body row: its pair and table
+  std::vector<std::string> rows;
+  for (const std::string& l : lines(r.out))
+    if (std::smatch m; std::regex_search(l, m, row)) rows.push_back(m[1].str() + " " + m[2].str());
+  EXPECT_EQ(rows, (std::vector<std::string>{"ggx+smith-correlated splitsum", "ggx kp"})) << r.out;
+  const CmdResult bad = shell(bench + " --tables splitsum,albdo");
+  EXPECT_EQ(bad.code, 64) << bad.out;
+  EXPECT_NE(bad.out.find("--tables: comma-separated, each of splitsum, albedo, albedo-avg, kp; got \"splitsum,albdo\""),
+            std::string::npos)
+      << bad.out;
 }
 
 // Every build-tree path a page or the README names (`./build/tests/brdfbake-gl-tests`,

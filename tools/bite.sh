@@ -143,6 +143,14 @@ mutation() {
                     "MerlSweep.TheBenchmarksTablesAreThePages" ;;
     merl-claim-storage) set -- "$1" host/materials/merl_albedo.cpp '(est[i].err[c] + std::fabs(stored - est[i].e[c]))' \
                           '(est[i].err[c])' "MerlSweep.TheBenchmarksTablesAreThePages" ;;
+    doc-outer-breaks) set -- "$1" tools/outer_breaks.sh 'est[est.size() / 2], est[est.size() * 9 / 10]' \
+                        'est[est.size() / 3], est[est.size() * 9 / 10]' "OuterBreaksSweep.TheScriptsFiguresAreThePages" ;;
+    doc-avg-miss) set -- "$1" tests/tables/microfacet/avg_rule_test.cpp 'ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), miss, at,' \
+                    'ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), 1.5 * miss, at,' \
+                    "MicrofacetNdfs/AvgRule.BoundHoldsWithTheFloorsMeasuredOnTheAverage/beckmann" ;;
+    doc-whole-run) set -- "$1" tests/tables/microfacet/accuracy_test.cpp 'gWorstFloat, gWorstFloatAt.c_str(), gWorstMiss[0], gWorstMiss[1]);' \
+                     'gWorstFloat, gWorstFloatAt.c_str(), gWorstMiss[0], 2 * gWorstMiss[1]);' \
+                     "AccuracySweep.TheWholeRunsMissesAreThePages" ;;
     doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
                           '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
     dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
@@ -163,7 +171,8 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        favg-tir-part glass-reference-outer f82-share-of-e doc-figure corner-block-offset
        doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named avg-claim-inflated
        doc-table-row doc-rows-unchecked doc-figure-untied doc-build-path doc-rows-from doc-in-figure doc-bounds-row
-       doc-merl-figure doc-merl-row merl-claim-storage doc-example-option dry-run-status kind-name"
+       doc-merl-figure doc-merl-row merl-claim-storage doc-outer-breaks doc-avg-miss doc-whole-run
+       doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
   cp "$file" "$file.bite-orig"

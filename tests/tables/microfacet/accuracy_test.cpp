@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <memory>
+#include <string>
 
 #include "cl/device.h"
 #include "tables/error_model.h"
@@ -34,10 +36,26 @@ class PairTest : public ::testing::TestWithParam<std::pair<int, int>> {};
 // The largest float error seen, as a fraction of the model's bound (tables/error_model.h keeps a
 // margin: printed).
 double gWorstFloat = 0;
+std::string gWorstFloatAt;  // its pair and texel
 // The rules' largest miss (true error minus the rule's own estimate, before the floor), relative to
 // the value, over the pairs with sharpened estimates, per budget (default, refined): what the
 // floors (HEMI_ERR_FLOOR_SHARP, HEMI_ERR_FLOOR_REFINED) cover.
 double gWorstMiss[2] = {0, 0};
+
+// After the last test of a run, the largest of each over every test that ran: a run of the whole
+// binary in one process prints the figures docs/accuracy.md quotes (AccuracySweep checks them;
+// ctest runs each test alone, which sees only its own).
+class WholeRunMaxima : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::printf(
+        "whole run: largest float error %.2f of the float model's bound (%s); largest misses of a sharpened "
+        "estimate %.2e at the default budget, %.2e at the refined one\n",
+        gWorstFloat, gWorstFloatAt.c_str(), gWorstMiss[0], gWorstMiss[1]);
+  }
+};
+[[maybe_unused]] ::testing::Environment* const kWholeRunMaxima =
+    ::testing::AddGlobalTestEnvironment(new WholeRunMaxima);
 
 // Texel k of a hemisphere table at (mu, r) against the reference, each claim on its own:
 //  - the quadrature estimate: the same rule in double on the host (both budgets, default and
@@ -84,7 +102,12 @@ double checkTexel(const KernelTable& t, size_t k, int ndf, int gaf, double mu, d
   for (int c = 0; c < 3; ++c) {
     EXPECT_LE(flt[c], arith) << "float model exceeded, channel "
                              << "ABE"[c] << ": device " << t.planes[c][k];
-    gWorstFloat = std::max(gWorstFloat, flt[c] / arith);
+    if (flt[c] / arith > gWorstFloat) {
+      gWorstFloat = flt[c] / arith;
+      char where[120];
+      std::snprintf(where, sizeof where, "%s, mu %.4g, r %.4g", pairName(ndf, gaf).c_str(), mu, r);
+      gWorstFloatAt = where;
+    }
     e = std::max(e, rel(t.planes[c][k], want[c]));
   }
   EXPECT_TRUE(std::isfinite(t.planes[2][k]));
