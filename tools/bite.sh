@@ -151,6 +151,10 @@ mutation() {
     doc-whole-run) set -- "$1" tests/tables/microfacet/accuracy_test.cpp 'gWorstFloat, gWorstFloatAt.c_str(), gWorstMiss[0], gWorstMiss[1]);' \
                      'gWorstFloat, gWorstFloatAt.c_str(), gWorstMiss[0], 2 * gWorstMiss[1]);' \
                      "AccuracySweep.TheWholeRunsMissesAreThePages" ;;
+    bench-tables-ignored) set -- "$1" host/bench/bounds_bench.cpp '      if (!wanted(kind)) continue;' '' \
+                            "Bench.BoundsTablesPicksTheRowsAndRefusesOthers" ;;
+    doc-in-test-parameterised) set -- "$1" tests/readme_test.cpp "sourceSuite = suite.substr(suite.find('/') + 1)" \
+                                 'sourceSuite = suite' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
     doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
                           '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
     dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
@@ -172,6 +176,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named avg-claim-inflated
        doc-table-row doc-rows-unchecked doc-figure-untied doc-build-path doc-rows-from doc-in-figure doc-bounds-row
        doc-merl-figure doc-merl-row merl-claim-storage doc-outer-breaks doc-avg-miss doc-whole-run
+       bench-tables-ignored doc-in-test-parameterised
        doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
