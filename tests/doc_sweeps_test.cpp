@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <initializer_list>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -41,6 +42,19 @@ std::string labelled(const std::string& label, const std::string& text) {
   std::string out;
   for (const std::string& l : lines(text)) out += label + l + "\n";
   return out;
+}
+
+// `brdfbake-bench --bounds ARGS` for each ARGS in turn, in one scratch directory: each must find no
+// texel over its claim. Their outputs, one after the other.
+std::string boundsRuns(const std::string& name, std::initializer_list<const char*> runs) {
+  const fs::path d = freshDir("readme", name);
+  std::string printed;
+  for (const char* args : runs) {
+    const std::string out = runOk(d, kBench + " --bounds" + args);
+    EXPECT_NE(out.find("\n0 texels over their claimed bound"), std::string::npos) << args;
+    printed += out;
+  }
+  return printed;
 }
 
 // One row of the per-pair tables that `--all-pairs` and `--albedo-avg` print:
@@ -116,18 +130,11 @@ std::string pairSummary(const std::vector<PairRow>& rows) {
 // prints them as markdown rows, and the page's rows must be among them, with no texel over its
 // claim. Behind the `sweep` label (BoundsSweep.TheBenchmarksTableIsThePages).
 TEST(Docs, DISABLED_BoundsTableIsTheBenchmarks) {
-  const fs::path d = freshDir("readme", "bounds");
-  std::string printed;
   // the default set's pairs, then five of the pairs whose GAFs need their own breaks (the page's
   // second table)
-  for (const char* pairs : {"",
-                            " --pair ggx+cook-torrance --pair ggx+kelemen --pair ggx+neumann --pair ggx+none"
-                            " --pair beckmann+cook-torrance"}) {
-    const std::string out = runOk(d, kBench + " --bounds --stride 4" + pairs);
-    EXPECT_NE(out.find("\n0 texels over their claimed bound"), std::string::npos);
-    printed += out;
-  }
-  expectPagesQuote(printed);
+  expectPagesQuote(boundsRuns("bounds", {" --stride 4",
+                                         " --stride 4 --pair ggx+cook-torrance --pair ggx+kelemen --pair ggx+neumann"
+                                         " --pair ggx+none --pair beckmann+cook-torrance"}));
 }
 
 // docs/accuracy.md's runs of the bounds benchmark on other strides: every texel of four pairs'
@@ -135,40 +142,34 @@ TEST(Docs, DISABLED_BoundsTableIsTheBenchmarks) {
 // not graded towards the horizon (`--stride 8`, about 4 minutes). Their pairs differ, so each row
 // is printed once; no texel may be over its claim (StrideSweep.TheBenchmarksFiguresAreThePages).
 TEST(Docs, DISABLED_StrideRunsAreTheBenchmarks) {
-  const fs::path d = freshDir("readme", "strides");
-  std::string printed;
-  for (const char* run : {" --stride 1 --pair ggx+smith-correlated --pair ggx+schlick-ggx --pair ggx+kelemen"
-                          " --pair beckmann+schlick-ggx-direct",
-                          " --stride 8 --pair ggx+cook-torrance --pair beckmann+none --pair gaussian+neumann"}) {
-    const std::string out = runOk(d, kBench + " --bounds" + run);
-    EXPECT_NE(out.find("\n0 texels over their claimed bound"), std::string::npos);
-    printed += out;
-  }
-  expectPagesQuote(printed);
+  expectPagesQuote(boundsRuns("strides", {" --stride 1 --pair ggx+smith-correlated --pair ggx+schlick-ggx"
+                                          " --pair ggx+kelemen --pair beckmann+schlick-ggx-direct",
+                                          " --stride 8 --pair ggx+cook-torrance --pair beckmann+none"
+                                          " --pair gaussian+neumann"}));
+}
+
+// `brdfbake-bench ARGS`, a run that prints one row per pair (`--all-pairs`, `--albedo-avg`): all 52
+// microfacet pairs' rows, its line saying none is over its claim, and the summary the pages quote.
+std::string pairBenchSummary(const std::string& name, const std::string& args, const std::string& noneOver) {
+  const std::string out = runOk(freshDir("readme", name), kBench + args);
+  const std::vector<PairRow> rows = pairRows(out);
+  EXPECT_EQ(rows.size(), 52u);
+  EXPECT_NE(out.find(noneOver), std::string::npos);
+  return pairSummary(rows);
 }
 
 // docs/accuracy.md's figures for all 52 microfacet pairs' split sums, every 8th texel and every edge
-// texel against the reference (`brdfbake-bench --all-pairs --stride 8`): the claims and their ratios to the largest error per kind of pair, which the test
-// summarises from the benchmark's rows (AllPairsSweep.TheBenchmarksFiguresAreThePages).
+// texel against the reference (`brdfbake-bench --all-pairs --stride 8`): the claims and their ratios
+// to the largest error per kind of pair (AllPairsSweep.TheBenchmarksFiguresAreThePages).
 TEST(Docs, DISABLED_AllPairsFiguresAreTheBenchmarks) {
-  const fs::path d = freshDir("readme", "all-pairs");
-  const std::string out = runOk(d, kBench + " --all-pairs --stride 8");
-  const std::vector<PairRow> rows = pairRows(out);
-  EXPECT_EQ(rows.size(), 52u);
-  EXPECT_NE(out.find(", 0 texels over their bound"), std::string::npos);
-  expectPagesQuote(pairSummary(rows));
+  expectPagesQuote(pairBenchSummary("all-pairs", " --all-pairs --stride 8", ", 0 texels over their bound"));
 }
 
 // docs/accuracy.md's figures for every non-sheen pair's default 32-entry albedo-avg table against the
-// reference at 10 of its r (`brdfbake-bench --albedo-avg`), summarised
-// per kind of pair from the benchmark's rows (AlbedoAvgSweep.TheBenchmarksFiguresAreThePages).
+// reference at 10 of its r (`brdfbake-bench --albedo-avg`), summarised per kind of pair
+// (AlbedoAvgSweep.TheBenchmarksFiguresAreThePages).
 TEST(Docs, DISABLED_AlbedoAvgFiguresAreTheBenchmarks) {
-  const fs::path d = freshDir("readme", "albedo-avg");
-  const std::string out = runOk(d, kBench + " --albedo-avg");
-  const std::vector<PairRow> rows = pairRows(out);
-  EXPECT_EQ(rows.size(), 52u);
-  EXPECT_NE(out.find(", 0 values over their claim"), std::string::npos);
-  expectPagesQuote(pairSummary(rows));
+  expectPagesQuote(pairBenchSummary("albedo-avg", " --albedo-avg", ", 0 values over their claim"));
 }
 
 // docs/rough-glass.md's figures: the rough dielectric's table against the reference and against
@@ -182,7 +183,8 @@ TEST(Docs, DISABLED_GlassFiguresAreTheBenchmarks) {
   printed += labelled("ggx+smith-correlated: ", runOk(d, kBench + " --dielectric-avg"));
   printed += labelled("beckmann+smith: ", runOk(d, kBench + " --dielectric-avg --pair beckmann+smith"));
   printed += runOk(d, "'" BRDFBAKE_EXE "' bake --table dielectric -o glass32");
-  printed += runOk(d, "'" BRDFBAKE_EXE "' bake --table dielectric-avg --ndf ggx --gaf smith-correlated --size 16 -o avg16");
+  printed +=
+      runOk(d, "'" BRDFBAKE_EXE "' bake --table dielectric-avg --ndf ggx --gaf smith-correlated --size 16 -o avg16");
   printed += runOk(d, "'" BRDFBAKE_EXE "' info avg16/dielectric-avg_ggx_smith-correlated.exr");
   expectPagesQuote(printed);
 }
@@ -262,7 +264,8 @@ TEST(Docs, DISABLED_MerlTablesAreTheBenchmarks) {
 TEST(Docs, DISABLED_CharlieRowsAreTheBenchmarks) {
   const fs::path d = freshDir("readme", "charlie");
   const std::string out = runOk(
-      d, kBench + " --bounds --stride 4 --pair charlie+charlie-smith --pair charlie+neubelt --tables splitsum,albedo,kp");
+      d,
+      kBench + " --bounds --stride 4 --pair charlie+charlie-smith --pair charlie+neubelt --tables splitsum,albedo,kp");
   EXPECT_NE(out.find("\n0 texels over their claimed bound"), std::string::npos);
   expectPagesQuote(out);
 }

@@ -295,7 +295,8 @@ std::string testThatChecksThePages(const std::string& name) {
   const std::string listedAs = suite + "." + (test.rfind("DISABLED_", 0) == 0 ? test.substr(9) : test);
   if (!std::regex_search(listed, std::regex(": " + listedAs + "(\\n| )")))
     return name + " is no test of this build (ctest -N)";
-  // a parameterised test, Instantiation/Suite.Test/Parameter, is written TEST_P(Suite, Test)
+  // a parameterised test, Instantiation/Suite.Test/Parameter, is written TEST_P(Suite, Test) (a plain
+  // suite has no '/': find gives npos, and npos + 1 is 0)
   const std::string sourceSuite = suite.substr(suite.find('/') + 1), sourceTest = test.substr(0, test.find('/'));
   const std::regex head("\\nTEST(_F|_P)?\\(" + sourceSuite + ", " + sourceTest + "\\)");
   for (const auto& e : fs::recursive_directory_iterator(fs::path(BRDFBAKE_SOURCE_DIR) / "tests")) {
@@ -612,7 +613,8 @@ TEST(Docs, EveryFigureOnEveryPageIsTiedOrAnInput) {
 // accepted ones.
 TEST(Bench, BoundsTablesPicksTheRowsAndRefusesOthers) {
   const fs::path d = freshDir("readme", "bench-tables");
-  const std::string bench = "cd '" + d.string() + "' && '" BRDFBAKE_BINARY_DIR "/brdfbake-bench' --bounds --size 8 --stride 4";
+  const std::string bench =
+      "cd '" + d.string() + "' && '" BRDFBAKE_BINARY_DIR "/brdfbake-bench' --bounds --size 8 --stride 4";
   const CmdResult r = shell(bench + " --pair ggx+smith-correlated --tables kp,splitsum");
   ASSERT_EQ(r.code, 0) << r.out;
   const std::regex row("^\\| (\\S+) \\| (\\S+) \\| \\d");  // a body row: its pair and table

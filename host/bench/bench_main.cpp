@@ -241,9 +241,10 @@ int main(int argc, char** argv) {
       std::istringstream in(v);
       for (std::string t; std::getline(in, t, ',');) {
         if (t != "splitsum" && t != "albedo" && t != "albedo-avg" && t != "kp") {
-          std::fprintf(stderr,
-                       "brdfbake-bench: --tables: comma-separated, each of splitsum, albedo, albedo-avg, kp; got \"%s\"\n",
-                       v.c_str());
+          std::fprintf(
+              stderr,
+              "brdfbake-bench: --tables: comma-separated, each of splitsum, albedo, albedo-avg, kp; got \"%s\"\n",
+              v.c_str());
           return 64;
         }
         boundsTables.push_back(t);

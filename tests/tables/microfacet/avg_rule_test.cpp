@@ -77,10 +77,10 @@ std::pair<double, float> pairMiss(int ndf, int gaf, const std::vector<float>& rs
     threads.emplace_back([&, t] {
       for (size_t j = t; j < rs.size(); j += 2) {
         auto compute = [&] { return reference::albedoAvg(ndf, gaf, rs[j]); };
-        ref[j] = fresh ? compute()
-                       : testing_ref::cached1(
-                             testing_ref::keyOf("albedoAvg " + ndfNames()[ndf] + " " + gafNames()[gaf], {rs[j]}),
-                             compute);
+        ref[j] =
+            fresh ? compute()
+                  : testing_ref::cached1(
+                        testing_ref::keyOf("albedoAvg " + ndfNames()[ndf] + " " + gafNames()[gaf], {rs[j]}), compute);
       }
     });
   for (std::thread& t : threads) t.join();
@@ -123,9 +123,8 @@ TEST_P(AvgRule, BoundHoldsWithTheFloorsMeasuredOnTheAverage) {
     const auto [miss, at] = pairMiss(ndf, gaf, rs, sweeping);
     double& worst = tabulated ? worstTable : worstMiss;
     worst = std::max(worst, miss);
-    testing_docs::say(said, "%s+%s: E_avg off its rule's bound by at most %.2e (r = %.4f)%s\n",
-                      ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), miss, at,
-                      tabulated ? " (tabulated Lambda)" : "");
+    testing_docs::say(said, "%s+%s: E_avg off its rule's bound by at most %.2e (r = %.4f)%s\n", ndfNames()[ndf].c_str(),
+                      gafNames()[gaf].c_str(), miss, at, tabulated ? " (tabulated Lambda)" : "");
   }
   // the floors keep at least twice what they cover (albedo_avg.h states the margins: 2.4, 2.2)
   EXPECT_LE(2 * worstMiss, AVG_ERR_FLOOR) << ndfNames()[ndf];
@@ -152,8 +151,8 @@ TEST(AvgRuleSweep, DISABLED_TabulatedLambdaShare) {
     for (int gaf : {GAF_SMITH_EXACT, GAF_SMITH_CORRELATED_EXACT}) {
       ASSERT_GT(brdf64::avg_model_error(ndf, gaf), 0) << ndfNames()[ndf] << "+" << gafNames()[gaf];
       const auto [miss, at] = pairMiss(ndf, gaf, fullSweepR(), true);
-      testing_docs::say(said, "%s+%s: E_avg off its rule's bound by at most %.2e (r = %.4f)\n",
-                        ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), miss, at);
+      testing_docs::say(said, "%s+%s: E_avg off its rule's bound by at most %.2e (r = %.4f)\n", ndfNames()[ndf].c_str(),
+                        gafNames()[gaf].c_str(), miss, at);
       worst = std::max(worst, miss);
     }
     EXPECT_LE(2 * worst, brdf64::avg_floor(ndf, GAF_SMITH_EXACT)) << ndfNames()[ndf];
