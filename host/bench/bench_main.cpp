@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "brdfbake/table_kind.h"
 #include "tables/error_model.h"
 #include "bench/bench_util.h"
 #include "bench/karis_mc.h"
@@ -102,7 +103,7 @@ int allPairs(const std::string& device, int n, int stride,
 int probeSpanBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& only, int n);  // probe_bench.cpp
 int coldStart(const std::string& device, int samples, int repeat, bool skipAll);                // cold_start_bench.cpp
 int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pairs, int size, int stride,
-                const std::string& csv, const std::vector<std::string>& tables);  // bounds_bench.cpp
+                const std::string& csv, const std::vector<TableKind>& tables);  // bounds_bench.cpp
 }  // namespace brdfbake
 
 namespace {
@@ -178,7 +179,7 @@ int main(int argc, char** argv) {
   bool probeSpan = false, ltc = false;
   std::vector<std::pair<int, int>> pairs;
   std::string csv;
-  std::vector<std::string> boundsTables;  // --tables: the --bounds rows to measure
+  std::vector<TableKind> boundsTables;  // --tables: the --bounds rows to measure
   int mcLog2 = 23;
   int volumeSize = 256;
   std::string merlFile;
@@ -240,14 +241,23 @@ int main(int argc, char** argv) {
       const std::string v = next();
       std::istringstream in(v);
       for (std::string t; std::getline(in, t, ',');) {
-        if (t != "splitsum" && t != "albedo" && t != "albedo-avg" && t != "kp") {
+        // the registry's names; --bounds measures the default set's four kinds
+        TableKind kind = TableKind::SplitSum;
+        bool known = true;
+        try {
+          kind = tableKind(t, "--tables");
+        } catch (const Error&) {
+          known = false;
+        }
+        if (!known || (kind != TableKind::SplitSum && kind != TableKind::Albedo && kind != TableKind::AlbedoAvg &&
+                       kind != TableKind::Kp)) {
           std::fprintf(
               stderr,
               "brdfbake-bench: --tables: comma-separated, each of splitsum, albedo, albedo-avg, kp; got \"%s\"\n",
               v.c_str());
           return 64;
         }
-        boundsTables.push_back(t);
+        boundsTables.push_back(kind);
       }
     } else if (a == "--pair") {
       std::string v = next();

@@ -141,10 +141,10 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int boundsBench(KernelRunner& runner, const std::vector<std::pair<int, int>>& pairs, int size, int stride,
-                const std::string& csv, const std::vector<std::string>& tables) {
-  // the tables the rows are for: each of splitsum, albedo, albedo-avg and kp, or every one
+                const std::string& csv, const std::vector<TableKind>& tables) {
+  // the tables the rows are for (of splitsum, albedo, albedo-avg and kp), or every one
   auto wanted = [&](TableKind kind) {
-    return tables.empty() || std::find(tables.begin(), tables.end(), tableName(kind)) != tables.end();
+    return tables.empty() || std::find(tables.begin(), tables.end(), kind) != tables.end();
   };
   std::vector<TableRow> rows;
   std::vector<int> kpDone;
