@@ -41,7 +41,7 @@ using brdfbake::testing_docs::sci;
 using glharness::gl;
 
 // One bake per precision (the formats that hold it), plus a png16 whose mapping is not the identity
-// (k_p, 1D, reaches 2.7: scale > 1).
+// (k_p, 1D, reaches 2.95: scale > 1).
 fs::path bakeDir() {
   static fs::path d = [] {
     fs::path dir = fs::path(testing::TempDir()) / ("brdfbake_glfmt_" + std::to_string(getpid()));

@@ -334,8 +334,8 @@ std::string testThatChecksThePages(const std::string& name) {
 // it (the same sources); its rows are compared as shown lines are (shownLineMatches).
 // Each of these runs inside this test. A figure or table from a run of minutes is tied to the test
 // that prints it with "in: Suite.Name" (tests/doc_figures.h): that test checks the page against its
-// own printout when it runs, and this test checks that the note names a test of this build whose
-// body calls expectPagesQuote.
+// own printout when it runs, and Docs.InNotesNameTestsThatCheckThePages checks that the note names a
+// test of this build whose body calls expectPagesQuote.
 TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
   const fs::path d = pagesDir("figures");
   const std::regex& note = figureNote();
@@ -375,10 +375,8 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
       std::smatch m;
       const std::string at = path.filename().string() + ":" + std::to_string(i + 1);
       if (std::regex_search(page[i], m, rowsNote())) {
-        EXPECT_TRUE(i > 0 && page[i - 1].rfind("|", 0) == 0) << at << ": a rows note is not right under a table";
         if (m[1].matched) {
-          ++selfChecked;
-          EXPECT_EQ(testThatChecksThePages(m[1].str()), "") << at;
+          ++selfChecked;  // Docs.InNotesNameTestsThatCheckThePages checks the test it names
           continue;
         }
         const std::string command = m[2].str();
@@ -402,8 +400,7 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
         continue;
       }
       if (m[5].matched) {
-        ++selfChecked;
-        EXPECT_EQ(testThatChecksThePages(m[5].str()), "") << at;
+        ++selfChecked;  // as above
         continue;
       }
       ++figures;
@@ -427,6 +424,35 @@ TEST(Docs, QuotedFiguresAreWhatTheirCommandsPrint) {
       "%d quoted figures and %d table rows checked against their commands; %d notes tie figures and tables "
       "to the tests that check them\n",
       figures, rows, selfChecked);
+}
+
+// Every "in: Suite.Name" of a figure or rows note names a test of this build whose body calls
+// expectPagesQuote (testThatChecksThePages), so that the figures it ties are checked when that test
+// runs: the sweeps' names included, which the README's test command leaves out. A rows note stands
+// right under its table.
+TEST(Docs, InNotesNameTestsThatCheckThePages) {
+  int notes = 0;
+  std::set<std::string> tests;
+  for (const fs::path& path : pages()) {
+    const std::vector<std::string> page = lines(bytes(path));
+    for (size_t i = 0; i < page.size(); ++i) {
+      std::smatch m;
+      const std::string at = path.filename().string() + ":" + std::to_string(i + 1);
+      std::string name;
+      if (std::regex_search(page[i], m, rowsNote())) {
+        EXPECT_TRUE(i > 0 && page[i - 1].rfind("|", 0) == 0) << at << ": a rows note is not right under a table";
+        if (m[1].matched) name = m[1].str();
+      } else if (std::regex_search(page[i], m, figureNote()) && m[5].matched) {
+        name = m[5].str();
+      }
+      if (name.empty()) continue;
+      ++notes;
+      tests.insert(name);
+      EXPECT_EQ(testThatChecksThePages(name), "") << at;
+    }
+  }
+  EXPECT_GE(notes, 50);
+  std::printf("%d notes tie figures and tables to %zu tests that check the pages themselves\n", notes, tests.size());
 }
 
 // Every brdfbake command in a page's ```sh blocks (docs/*.md but the help's own page, whose examples
@@ -509,24 +535,28 @@ TEST(Docs, NamedTestsExist) {
 }
 
 // The figures a page quotes are tied to what prints them. On every page, every number written in
-// e-notation outside code (the form the pages give measured errors, bounds and ratios of them in:
-// "2.63e-3", "1e-7") is one of:
+// e-notation ("2.63e-3", "1e-7", the form the pages give errors and bounds in) or with a decimal
+// point ("0.43", "31.0383", a ratio "2.6x") outside code is one of:
 //  - tied: the X of a figure note under its paragraph (<!-- figure X ... from: ... --> or "in:"),
 //    or a cell of a table under a rows note (<!-- rows in: Suite.Name -->), which the tests above
 //    and the tests named check;
-//  - an input: listed in its paragraph's <!-- inputs: X Y ... --> note: a model's constant, a run's
-//    parameter or a threshold the code sets (eta = 1 - 1e-6, a 1e-7 floor), which nothing measures;
-//  - marked "~": a time or a rate that varies from run to run (~3.6e7 texels/s), as in shown lines,
-//    or an order of magnitude (~1e-8);
+//  - an input: listed in its paragraph's <!-- inputs: X Y ... --> note: a value the text names or
+//    sets rather than measures (a model's constant, a run's parameter, the grid point where a
+//    figure was found, a threshold the code sets, a version, a cited paper's figure);
+//  - marked "~": a time, a rate or a size that varies from run to run (~0.43 s, ~3.6e7 texels/s),
+//    as in shown lines, or an order of magnitude (~1e-8); in a range "~A to B" or "~A-B" the mark
+//    covers B;
 //  - measured elsewhere: listed in its paragraph's <!-- elsewhere: X Y ... --> note, a figure that
-//    the paragraph's own words say how to measure and the suite cannot: on a GPU machine the tests
-//    lack, or by a tool of a minute or more (tools/*.sh, the sweeps).
-// A note lists only figures its paragraph holds, and none that a figure note ties.
+//    the paragraph's own words say how to measure on a machine the suite lacks (a GPU);
+//  - measured once: listed in its paragraph's <!-- once: X Y ... --> note, a figure the paragraph
+//    says how to measure that no test reruns (a run of hours, a tool, two builds compared).
+// A note lists only figures its paragraph holds, and none that a figure note ties. Integers are not
+// held: they are counts, sizes and indices far more often than measurements.
 TEST(Docs, EveryFigureOnEveryPageIsTiedOrAnInput) {
-  const std::regex eNumber("[-+]?\\d+(?:\\.\\d+)?[eE][-+]?\\d+");
-  const std::regex listNote("^ {0,3}<!-- (inputs|elsewhere): ([^>]*) -->$");
+  const std::regex number("[-+]?\\d+(?:\\.\\d+)?(?:[eE][-+]?\\d+)?");
+  const std::regex listNote("^ {0,3}<!-- (inputs|elsewhere|once): ([^>]*) -->$");
   const std::regex inlineCode("`[^`]*`");  // built once: the loop below runs over every line of every page
-  int tied = 0, inputs = 0, elsewhere = 0, varies = 0;
+  std::map<std::string, int> counts;       // tied, inputs, varies, elsewhere, once
   for (const fs::path& path : pages()) {
     if (path.filename() == "README.md" || path.filename() == "commands-reference.md") continue;
     const std::string name = path.filename().string();
@@ -546,7 +576,7 @@ TEST(Docs, EveryFigureOnEveryPageIsTiedOrAnInput) {
         continue;
       }
       std::set<std::string> noted;
-      std::map<std::string, std::string> listed;  // figure -> its note (inputs, elsewhere)
+      std::map<std::string, std::string> listed;  // figure -> its note (inputs, elsewhere, once)
       bool rows = false;
       for (size_t k = i; k < end; ++k) {
         std::smatch m;
@@ -562,7 +592,8 @@ TEST(Docs, EveryFigureOnEveryPageIsTiedOrAnInput) {
         if (page[k].find("<!--") != std::string::npos) continue;
         // outside inline code
         const std::string text = std::regex_replace(page[k], inlineCode, "``");
-        for (std::sregex_iterator it(text.begin(), text.end(), eNumber), stop; it != stop; ++it) {
+        size_t variesEnd = std::string::npos;  // where the last "~" figure on the line ends
+        for (std::sregex_iterator it(text.begin(), text.end(), number), stop; it != stop; ++it) {
           size_t at = it->position(0);
           const size_t after = at + it->length(0);
           std::string figure = it->str();
@@ -574,23 +605,30 @@ TEST(Docs, EveryFigureOnEveryPageIsTiedOrAnInput) {
             figure.erase(0, 1);
             ++at;
           }
-          // a sentence's full stop after a figure is not part of it
+          const bool eForm = figure.find_first_of("eE") != std::string::npos;
+          const bool decimal = !eForm && figure.find('.') != std::string::npos;
+          if (!eForm && !decimal) continue;  // an integer
+          // a sentence's full stop after a figure is not part of it, nor a ratio's "x" ("2.6x")
           const bool fullStop = after + 1 >= text.size() || (text[after] == '.' && !word(after + 1));
-          if ((at > 0 && word(at - 1)) || (after < text.size() && word(after) && !fullStop))
-            continue;  // part of a name
+          const bool ratio =
+              decimal && after < text.size() && text[after] == 'x' && (after + 1 >= text.size() || !word(after + 1));
+          if ((at > 0 && word(at - 1)) || (after < text.size() && word(after) && !fullStop && !ratio))
+            continue;  // part of a name ("v1.2", "PoCL's 3.1-dev", "x86_64")
           if (figure[0] == '+') figure.erase(0, 1);
           seen.insert(figure);
           const bool isTied = (rows && page[k].rfind("|", 0) == 0) || noted.count(figure) || noted.count("-" + figure);
+          const std::string between = variesEnd == std::string::npos ? "" : text.substr(variesEnd, at - variesEnd);
           if (isTied) {
-            ++tied;
-          } else if (at > 0 && text[at - 1] == '~') {
-            ++varies;
+            ++counts["tied"];
+          } else if ((at > 0 && text[at - 1] == '~') || between == " to " || between == "-") {
+            ++counts["varies"];
+            variesEnd = after;
           } else if (listed.count(figure)) {
-            ++(listed[figure] == "inputs" ? inputs : elsewhere);
+            ++counts[listed[figure]];
           } else {
             ADD_FAILURE() << name << ":" << k + 1 << ": " << figure
-                          << " is neither tied (a figure or rows note) nor in its paragraph's <!-- inputs: ... --> or "
-                          << "<!-- elsewhere: ... -->\n  " << page[k];
+                          << " is neither tied (a figure or rows note), marked ~, nor in its paragraph's "
+                          << "<!-- inputs: ... -->, <!-- once: ... --> or <!-- elsewhere: ... -->\n  " << page[k];
           }
         }
       }
@@ -603,9 +641,11 @@ TEST(Docs, EveryFigureOnEveryPageIsTiedOrAnInput) {
       i = end;
     }
   }
-  std::printf("every page: each e-notation figure tied (%d), an input (%d), marked ~ (%d) or measured elsewhere (%d)\n",
-              tied, inputs, varies, elsewhere);
-  EXPECT_GE(tied, 100);
+  std::printf(
+      "every page: each figure in e-notation or with a decimal point tied (%d), an input (%d), marked ~ (%d), "
+      "measured once (%d) or measured elsewhere (%d)\n",
+      counts["tied"], counts["inputs"], counts["varies"], counts["once"], counts["elsewhere"]);
+  EXPECT_GE(counts["tied"], 100);
 }
 
 // `brdfbake-bench --bounds --tables` (docs/accuracy.md's charlie rows use it) measures the rows

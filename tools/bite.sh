@@ -125,7 +125,7 @@ mutation() {
     doc-table-row) set -- "$1" docs/layouts.md '| `bevy` (32^2, ktx2) | 4.31e-3 |' '| `bevy` (32^2, ktx2) | 4.51e-3 |' \
                      "GlPipeline.LayoutPresetsMatchEachEnginesOwnLookup" ;;
     doc-rows-unchecked) set -- "$1" tests/mu_axis_test.cpp '  testing_docs::expectPagesQuote(table);' '' \
-                          "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
+                          "Docs.InNotesNameTestsThatCheckThePages" ;;
     doc-figure-untied) set -- "$1" docs/shader-code.md '<!-- inputs: 1e-5 -->' '' \
                          "Docs.EveryFigureOnEveryPageIsTiedOrAnInput" ;;
     doc-build-path) set -- "$1" docs/ashikhmin-shirley.md '`./build/tests/brdfbake-ashikhmin-tests' \
@@ -154,7 +154,20 @@ mutation() {
     bench-tables-ignored) set -- "$1" host/bench/bounds_bench.cpp '      if (!wanted(kind)) continue;' '' \
                             "Bench.BoundsTablesPicksTheRowsAndRefusesOthers" ;;
     doc-in-test-parameterised) set -- "$1" tests/readme_test.cpp "sourceSuite = suite.substr(suite.find('/') + 1)" \
-                                 'sourceSuite = suite' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
+                                 'sourceSuite = suite' "Docs.InNotesNameTestsThatCheckThePages" ;;
+    doc-decimal-unmarked) set -- "$1" docs/performance.md '| default set (4 tables), warm | ~0.073,' \
+                            '| default set (4 tables), warm | 0.073,' \
+                            "Docs.EveryFigureOnEveryPageIsTiedOrAnInput" ;;
+    doc-ltc-distance) set -- "$1" tests/tables/ltc/ltc_distance_test.cpp 'lobe.name().c_str(), n, texels.size(), worst, inDouble);' \
+                        'lobe.name().c_str(), n, texels.size(), 1.3 * worst, inDouble);' \
+                        "Ltc.DistanceEstimateHoldsAgainstTheReference" ;;
+    doc-per-ndf-u) set -- "$1" tests/tables/microfacet/accuracy_test.cpp 'gWorstU[ndf] = std::max(gWorstU[ndf], flt[c] / kUnitRoundoff);' \
+                     'gWorstU[ndf] = std::max(gWorstU[ndf], flt[c] / kUnitRoundoff / 2);' \
+                     "AccuracySweep.TheWholeRunsMissesAreThePages" ;;
+    doc-fresnel-sweep-max) set -- "$1" tests/tables/microfacet/fresnel_edge_test.cpp \
+                             'worst.all.ratio, worst.ratioAt.c_str(), worst.all.claimOver, worst.overAt.c_str());' \
+                             'worst.all.ratio, worst.ratioAt.c_str(), 0.9 * worst.all.claimOver, worst.overAt.c_str());' \
+                             "FresnelSweep.EveryPairEverySize" ;;
     doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
                           '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
     dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
@@ -176,7 +189,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named avg-claim-inflated
        doc-table-row doc-rows-unchecked doc-figure-untied doc-build-path doc-rows-from doc-in-figure doc-bounds-row
        doc-merl-figure doc-merl-row merl-claim-storage doc-outer-breaks doc-avg-miss doc-whole-run
-       bench-tables-ignored doc-in-test-parameterised
+       bench-tables-ignored doc-in-test-parameterised doc-decimal-unmarked doc-ltc-distance doc-per-ndf-u doc-fresnel-sweep-max
        doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5

@@ -22,9 +22,10 @@
 // at most 4.55 u for ggx (with gaf none, mu = 0.47, r = 255/256), 3.91 u for beckmann, 4.44 u for
 // blinn-phong, 6.2 u for the gaussian (smith-exact, mu = 1/256). The models (3.5 s + 3) u,
 // (2.5 s + 3) u, (3.5 s + 3) u and (6 s + 3) u are at least 1.43, 1.41, 1.46 and 1.35 times the
-// error at every one of those texels. Fresnel-weighted moments (E_F, F82-tint's C) take the
-// largest of those, (6 s + 3) u (not measured per NDF; tests/tables/fresnel_avg/fresnel_test.cpp checks ggx +
-// smith-correlated's whole claims against the reference). The charlie NDF is measured the same way
+// error at every one of those texels. Fresnel-weighted moments (E_F, F82-tint's C) take (10 s + 4) u
+// for every NDF (kFresnelFloat below: the stiff-corner sweep's largest, margin 1.19;
+// tests/tables/fresnel_avg/fresnel_test.cpp checks ggx + smith-correlated's whole claims against
+// the reference). The charlie NDF is measured the same way
 // on the rescaled estimates' panels (charlie-smith's kink breaks and horizon substitution), every
 // texel of a 32x32 and a 128x128 table against the same rule in double at the closer budget:
 // charlie-smith 36.5 u (mu = 3/256, r = 0.14; its G/(n.o) grows without bound towards grazing

@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "common/brdf_host.h"
 #include "common/models.h"
+#include "doc_figures.h"
 #include "ltc_test_util.h"
 #include "reference/reference.h"
 #include "tables/ladder.h"
@@ -76,8 +78,9 @@ TEST(Ltc, DistanceReferenceAgreesWithTheSphereQuadrature) {
 }
 
 // Each texel's distance and its claim against the reference at the texels given, on two threads; returns how many were
-// measured in double on the host.
-int expectDistancesHold(const LtcLobeSpec& lobe, const LtcFit& f, const std::vector<size_t>& texels) {
+// measured in double on the host, and appends the line it prints (the largest error / claim) to `said`.
+int expectDistancesHold(const LtcLobeSpec& lobe, const LtcFit& f, const std::vector<size_t>& texels,
+                        std::string& said) {
   const int n = f.n;
   std::vector<LtcDistance> ref(texels.size());
   brdfbake::ladder::onTwoThreads(texels.size(), [&](size_t k) {
@@ -99,8 +102,8 @@ int expectDistancesHold(const LtcLobeSpec& lobe, const LtcFit& f, const std::vec
     EXPECT_LE(d, claim) << lobe.name() << " " << n << "^2 x " << x << " y " << y << ": estimate " << f.tv[t]
                         << ", reference " << ref[k].tv << " (+- " << ref[k].err << ")";
   }
-  std::printf("%s %d^2: %zu texels, the largest error %.2f of its claim, %d measured in double\n", lobe.name().c_str(),
-              n, texels.size(), worst, inDouble);
+  testing_docs::say(said, "%s %d^2: %zu texels, the largest error %.2f of its claim, %d measured in double\n",
+                    lobe.name().c_str(), n, texels.size(), worst, inDouble);
   return inDouble;
 }
 
@@ -115,9 +118,11 @@ std::vector<size_t> everyTexel(int n) {
 // in double: in float the estimate was off by up to 0.40 there.
 TEST(Ltc, DistanceEstimateHoldsAgainstTheReference) {
   const LtcLobeSpec ggx{NDF_GGX, GAF_SMITH_CORRELATED};
-  EXPECT_GE(expectDistancesHold(ggx, fitLtc(runner(), ggx, 16), everyTexel(16)), 16);
+  std::string said;  // docs/ltc.md quotes the largest
+  EXPECT_GE(expectDistancesHold(ggx, fitLtc(runner(), ggx, 16), everyTexel(16), said), 16);
   for (const LtcLobeSpec& lobe : {LtcLobeSpec{NDF_CHARLIE, GAF_CHARLIE_SMITH}, LtcLobeSpec{-1, -1, DIFFUSE_OREN_NAYAR}})
-    expectDistancesHold(lobe, fitLtc(runner(), lobe, 8), everyTexel(8));
+    expectDistancesHold(lobe, fitLtc(runner(), lobe, 8), everyTexel(8), said);
+  testing_docs::expectPagesQuote(said);
 }
 
 // The default 64^2 fit (about 6 minutes on two cores, behind the label `sweep`): its first four and
@@ -129,7 +134,9 @@ TEST(Ltc, DISABLED_DistanceEstimateHoldsAtEverySecondRow) {
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x)
       if (x % 2 == 0 || x <= 3 || x == n - 1 || y == 0 || y == n - 1) texels.push_back(static_cast<size_t>(y) * n + x);
-  EXPECT_GE(expectDistancesHold(LtcLobeSpec{NDF_GGX, GAF_SMITH_CORRELATED}, defaultLtcFit(), texels), 3 * n);
+  std::string said;
+  EXPECT_GE(expectDistancesHold(LtcLobeSpec{NDF_GGX, GAF_SMITH_CORRELATED}, defaultLtcFit(), texels, said), 3 * n);
+  testing_docs::expectPagesQuote(said);
 }
 
 }  // namespace

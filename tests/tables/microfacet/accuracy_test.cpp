@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -41,6 +42,9 @@ std::string gWorstFloatAt;  // its pair and texel
 // the value, over the pairs with sharpened estimates, per budget (default, refined): what the
 // floors (HEMI_ERR_FLOOR_SHARP, HEMI_ERR_FLOOR_REFINED) cover.
 double gWorstMiss[2] = {0, 0};
+// The largest float error per NDF in units of u = 2^-24 (relative to max(1, |v|), the device against
+// the same rule in double, every channel): what tables/error_model.h's per-NDF models are fitted to.
+std::map<int, double> gWorstU;
 
 // After the last test of a run, the largest of each over every test that ran: a run of the whole
 // binary in one process prints the figures docs/accuracy.md quotes (AccuracySweep checks them;
@@ -48,10 +52,16 @@ double gWorstMiss[2] = {0, 0};
 class WholeRunMaxima : public ::testing::Environment {
  public:
   void TearDown() override {
+    std::string perNdf;
+    for (const auto& [ndf, u] : gWorstU) {
+      char one[64];
+      std::snprintf(one, sizeof one, "%s%s %.2f", perNdf.empty() ? "" : ", ", ndfNames()[ndf].c_str(), u);
+      perNdf += one;
+    }
     std::printf(
         "whole run: largest float error %.2f of the float model's bound (%s); largest misses of a sharpened "
-        "estimate %.2e at the default budget, %.2e at the refined one\n",
-        gWorstFloat, gWorstFloatAt.c_str(), gWorstMiss[0], gWorstMiss[1]);
+        "estimate %.2e at the default budget, %.2e at the refined one; largest float error per NDF in u: %s\n",
+        gWorstFloat, gWorstFloatAt.c_str(), gWorstMiss[0], gWorstMiss[1], perNdf.c_str());
   }
 };
 [[maybe_unused]] ::testing::Environment* const kWholeRunMaxima =
@@ -102,6 +112,7 @@ double checkTexel(const KernelTable& t, size_t k, int ndf, int gaf, double mu, d
   for (int c = 0; c < 3; ++c) {
     EXPECT_LE(flt[c], arith) << "float model exceeded, channel "
                              << "ABE"[c] << ": device " << t.planes[c][k];
+    gWorstU[ndf] = std::max(gWorstU[ndf], flt[c] / kUnitRoundoff);
     if (flt[c] / arith > gWorstFloat) {
       gWorstFloat = flt[c] / arith;
       char where[120];
