@@ -189,6 +189,40 @@ TEST(FresnelEdge, CornerBlocksAreTheTable) {
     for (int n : {32, 64}) expectBlocksAreTheTable(NDF_BECKMANN, GAF_SMITH, w, n);
 }
 
+// Why the host passes z beside eta (docs/accuracy.md, "The stiff corner"): at eta = 0.9999 the
+// Fresnel term depends on eta only through eta^2 - 1, which float(eta) holds to ~2e-5. At mu = 1/64,
+// r = 3/64 of a 32^2 albedo table the reference at float(eta) is off the reference at eta by
+// hundreds of the texel's claims; the device with z bakes the latter within its claim, the device
+// with z = 0 (eta's float alone) the former.
+TEST(FresnelEdge, FloatEtaAloneMissesByHundredsOfClaims) {
+  const int ndf = NDF_GGX, gaf = GAF_SMITH_CORRELATED, n = 32;
+  const Edge e{"dielectric eta=0.9999", FRESNEL_DIELECTRIC, 0.9999, 0};
+  const Edge asFloat{"dielectric eta=float(0.9999)", FRESNEL_DIELECTRIC, static_cast<float>(0.9999), 0};
+  const std::pair<int, int> texel{0, 1};  // mu = 1/64, r = 3/64
+  const double want = referenceValues(ndf, gaf, e, n, {texel})[0];
+  const double atFloat = referenceValues(ndf, gaf, asFloat, n, {texel})[0];
+  HemiWeight withoutZ = weightOf(e);
+  ASSERT_NE(withoutZ.z, 0.0f);
+  withoutZ.z = 0;
+  const Texel with = cornerTexels(ndf, gaf, weightOf(e), n, true).at(texel);
+  const Texel without = cornerTexels(ndf, gaf, withoutZ, n, true).at(texel);
+  auto claimOf = [&](const Texel& t) {
+    const double scale = std::max({std::fabs(double(t.a)), std::fabs(double(t.b)), std::fabs(double(t.e))});
+    return t.err + weightedFloatError(t.b, t.e, scale, ndf, gaf, false);
+  };
+  const double claim = claimOf(with);
+  EXPECT_LE(rel(with.b, want), claim) << "device " << with.b << " reference " << want;
+  EXPECT_GT(rel(without.b, want), 100 * claimOf(without)) << "device without z " << without.b;
+  EXPECT_LE(rel(without.b, atFloat), claimOf(without)) << "device without z " << without.b << " at float " << atFloat;
+  std::string said;  // docs/accuracy.md quotes it
+  testing_docs::say(said,
+                    "eta 0.9999, mu 1/64, r 3/64 of a 32^2 albedo table: reference %.9f, at float(eta) %.7f, %.0f "
+                    "times the texel's claim (%.2e) away; the device with z %.7f, without z %.7f\n",
+                    want, atFloat, std::fabs(atFloat - want) / std::max(1.0, std::fabs(want)) / claim, claim, with.b,
+                    without.b);
+  testing_docs::expectPagesQuote(said);
+}
+
 TEST(FresnelEdge, StiffCornerWithinItsClaim) {
   WorstOf worst;
   for (const Edge& e : edges())
