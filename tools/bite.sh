@@ -161,8 +161,8 @@ mutation() {
     doc-ltc-distance) set -- "$1" tests/tables/ltc/ltc_distance_test.cpp 'lobe.name().c_str(), n, texels.size(), worst, inDouble);' \
                         'lobe.name().c_str(), n, texels.size(), 1.3 * worst, inDouble);' \
                         "Ltc.DistanceEstimateHoldsAgainstTheReference" ;;
-    doc-per-ndf-u) set -- "$1" tests/tables/microfacet/accuracy_test.cpp 'gWorstU[ndf] = std::max(gWorstU[ndf], flt[c] / kUnitRoundoff);' \
-                     'gWorstU[ndf] = std::max(gWorstU[ndf], flt[c] / kUnitRoundoff / 2);' \
+    doc-per-ndf-u) set -- "$1" tests/tables/microfacet/accuracy_test.cpp 'ndfNames()[ndf].c_str(), u, gWorstUAt[ndf].c_str()' \
+                     'ndfNames()[ndf].c_str(), 0.8 * u, gWorstUAt[ndf].c_str()' \
                      "AccuracySweep.TheWholeRunsMissesAreThePages" ;;
     doc-fresnel-sweep-max) set -- "$1" tests/tables/microfacet/fresnel_edge_test.cpp \
                              'worst.all.ratio, worst.ratioAt.c_str(), worst.all.claimOver, worst.overAt.c_str());' \

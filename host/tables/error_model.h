@@ -19,11 +19,11 @@
 // pair (9x9 node grids with mu = 0, 1 and r = 0, 1; 8x8 texel centres; every edge texel of a
 // 128x128 table; the stiff blinn-phong texels), both budgets, per NDF (what differs between them
 // is the float work of D and its sampling map; ~21,500 channel values each): on PoCL's CPU device
-// at most 4.55 u for ggx (with gaf none, mu = 0.47, r = 255/256), 3.91 u for beckmann, 4.44 u for
-// blinn-phong, 6.2 u for the gaussian (smith-exact, mu = 1/256). The models (3.5 s + 3) u,
-// (2.5 s + 3) u, (3.5 s + 3) u and (6 s + 3) u are at least 1.43, 1.41, 1.46 and 1.35 times the
-// error at every one of those texels. Fresnel-weighted moments (E_F, F82-tint's C) take (10 s + 4) u
-// for every NDF (kFresnelFloat below: the stiff-corner sweep's largest, margin 1.19;
+// at most 4.58 u for ggx, 4.94 u for beckmann, 5.55 u for blinn-phong, 6.21 u for the gaussian
+// (a run of the whole of brdfbake-accuracy-tests prints each, and where). The models (3.5 s + 3) u,
+// (2.5 s + 3) u, (3.5 s + 3) u and (6 s + 3) u hold the error at every one of those texels, at
+// most 0.92 of the bound (beckmann + smith, mu = 1/256, r = 0.84). Fresnel-weighted moments (E_F, F82-tint's C) take
+// (10 s + 4) u for every NDF (kFresnelFloat below: the stiff-corner sweep's largest, margin 1.19;
 // tests/tables/fresnel_avg/fresnel_test.cpp checks ggx + smith-correlated's whole claims against
 // the reference). The charlie NDF is measured the same way
 // on the rescaled estimates' panels (charlie-smith's kink breaks and horizon substitution), every

@@ -42,9 +42,11 @@ std::string gWorstFloatAt;  // its pair and texel
 // the value, over the pairs with sharpened estimates, per budget (default, refined): what the
 // floors (HEMI_ERR_FLOOR_SHARP, HEMI_ERR_FLOOR_REFINED) cover.
 double gWorstMiss[2] = {0, 0};
-// The largest float error per NDF in units of u = 2^-24 (relative to max(1, |v|), the device against
-// the same rule in double, every channel): what tables/error_model.h's per-NDF models are fitted to.
-std::map<int, double> gWorstU;
+// Per NDF, the largest float error in units of u = 2^-24 (relative to max(1, |v|), the device against
+// the same rule in double, every channel) and the largest fraction of its model's bound: what
+// tables/error_model.h's per-NDF models are fitted to.
+std::map<int, double> gWorstU, gWorstUse;
+std::map<int, std::string> gWorstUAt;  // the pair of the largest in u
 
 // After the last test of a run, the largest of each over every test that ran: a run of the whole
 // binary in one process prints the figures docs/accuracy.md quotes (AccuracySweep checks them;
@@ -54,8 +56,9 @@ class WholeRunMaxima : public ::testing::Environment {
   void TearDown() override {
     std::string perNdf;
     for (const auto& [ndf, u] : gWorstU) {
-      char one[64];
-      std::snprintf(one, sizeof one, "%s%s %.2f", perNdf.empty() ? "" : ", ", ndfNames()[ndf].c_str(), u);
+      char one[120];
+      std::snprintf(one, sizeof one, "%s%s %.2f on %s (at most %.2f of its bound)", perNdf.empty() ? "" : ", ",
+                    ndfNames()[ndf].c_str(), u, gWorstUAt[ndf].c_str(), gWorstUse[ndf]);
       perNdf += one;
     }
     std::printf(
@@ -112,7 +115,11 @@ double checkTexel(const KernelTable& t, size_t k, int ndf, int gaf, double mu, d
   for (int c = 0; c < 3; ++c) {
     EXPECT_LE(flt[c], arith) << "float model exceeded, channel "
                              << "ABE"[c] << ": device " << t.planes[c][k];
-    gWorstU[ndf] = std::max(gWorstU[ndf], flt[c] / kUnitRoundoff);
+    if (flt[c] / kUnitRoundoff > gWorstU[ndf]) {
+      gWorstU[ndf] = flt[c] / kUnitRoundoff;
+      gWorstUAt[ndf] = pairName(ndf, gaf);
+    }
+    gWorstUse[ndf] = std::max(gWorstUse[ndf], flt[c] / arith);
     if (flt[c] / arith > gWorstFloat) {
       gWorstFloat = flt[c] / arith;
       char where[120];
