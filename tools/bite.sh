@@ -164,6 +164,12 @@ mutation() {
     doc-per-ndf-u) set -- "$1" tests/tables/microfacet/accuracy_test.cpp 'ndfNames()[ndf].c_str(), u, gWorstUAt[ndf].c_str()' \
                      'ndfNames()[ndf].c_str(), 0.8 * u, gWorstUAt[ndf].c_str()' \
                      "AccuracySweep.TheWholeRunsMissesAreThePages" ;;
+    doc-float-eta) set -- "$1" tests/tables/microfacet/fresnel_edge_test.cpp \
+                     'std::fabs(atFloat - want) / std::max(1.0, std::fabs(want)) / claim, claim,' \
+                     'std::fabs(atFloat - want) / std::max(1.0, std::fabs(want)) / claim / 1.3, claim,' \
+                     "FresnelEdge.FloatEtaAloneMissesByHundredsOfClaims" ;;
+    doc-corner-limit) set -- "$1" tests/tables/microfacet/accuracy_test.cpp 'lookup, ref, at(0, 0));' \
+                        'lookup, ref, 0.9 * at(0, 0));' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;
     doc-fresnel-sweep-max) set -- "$1" tests/tables/microfacet/fresnel_edge_test.cpp \
                              'worst.all.ratio, worst.ratioAt.c_str(), worst.all.claimOver, worst.overAt.c_str());' \
                              'worst.all.ratio, worst.ratioAt.c_str(), 0.9 * worst.all.claimOver, worst.overAt.c_str());' \
@@ -189,7 +195,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named avg-claim-inflated
        doc-table-row doc-rows-unchecked doc-figure-untied doc-build-path doc-rows-from doc-in-figure doc-bounds-row
        doc-merl-figure doc-merl-row merl-claim-storage doc-outer-breaks doc-avg-miss doc-whole-run
-       bench-tables-ignored doc-in-test-parameterised doc-decimal-unmarked doc-ltc-distance doc-per-ndf-u doc-fresnel-sweep-max
+       bench-tables-ignored doc-in-test-parameterised doc-decimal-unmarked doc-ltc-distance doc-per-ndf-u doc-float-eta doc-corner-limit doc-fresnel-sweep-max
        doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5
