@@ -69,7 +69,7 @@ mutation() {
     node-reuse) set -- "$1" host/cl/runner_launch.cpp '(*known[k])[q] : out[q][next];' '(*known[k])[q] : out[q][0];' \
                   "KernelReuse.NodesOverlapping" ;;
     fresnel-eta-z) set -- "$1" host/cl/runner_launch.cpp 'w.z = static_cast<float>(' 'w.z = 0 * static_cast<float>(' \
-                     "FresnelEdge.StiffCornerWithinItsClaim" ;;
+                     "FresnelEdge.FloatEtaAloneMissesByHundredsOfClaims" ;;
     fresnel-kink-offset) set -- "$1" kernels/integrate/integrand.h '  return fresnel_F_g2(p.fresnel, p.fr_x, p.fr_z, oh, dc * (oh + ck));' \
                            '  return fresnel_F_g2(p.fresnel, p.fr_x, p.fr_z, oh, oh * oh - ck * ck);' "FresnelEdge.TheSweepsEdgesHold" ;;
     fresnel-float-model) set -- "$1" host/tables/error_model.h 'constexpr FloatModel kFresnelFloat{10, 4};' \
@@ -161,12 +161,11 @@ mutation() {
     doc-ltc-distance) set -- "$1" tests/tables/ltc/ltc_distance_test.cpp 'lobe.name().c_str(), n, texels.size(), worst, inDouble);' \
                         'lobe.name().c_str(), n, texels.size(), 1.3 * worst, inDouble);' \
                         "Ltc.DistanceEstimateHoldsAgainstTheReference" ;;
-    doc-per-ndf-u) set -- "$1" tests/tables/microfacet/accuracy_test.cpp 'ndfNames()[ndf].c_str(), u, gWorstUAt[ndf].c_str()' \
-                     'ndfNames()[ndf].c_str(), 0.8 * u, gWorstUAt[ndf].c_str()' \
+    doc-per-ndf-u) set -- "$1" tests/tables/microfacet/accuracy_test.cpp 'ndfNames()[ndf].c_str(), w.u, w.at.c_str()' \
+                     'ndfNames()[ndf].c_str(), 0.8 * w.u, w.at.c_str()' \
                      "AccuracySweep.TheWholeRunsMissesAreThePages" ;;
     doc-float-eta) set -- "$1" tests/tables/microfacet/fresnel_edge_test.cpp \
-                     'std::fabs(atFloat - want) / std::max(1.0, std::fabs(want)) / claim, claim,' \
-                     'std::fabs(atFloat - want) / std::max(1.0, std::fabs(want)) / claim / 1.3, claim,' \
+                     'rel(atFloat, want) / claim, claim,' 'rel(atFloat, want) / claim / 1.3, claim,' \
                      "FresnelEdge.FloatEtaAloneMissesByHundredsOfClaims" ;;
     doc-corner-limit) set -- "$1" tests/tables/microfacet/accuracy_test.cpp 'lookup, ref, at(0, 0));' \
                         'lookup, ref, 0.9 * at(0, 0));' "Docs.QuotedFiguresAreWhatTheirCommandsPrint" ;;

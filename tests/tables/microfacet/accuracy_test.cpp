@@ -45,8 +45,11 @@ double gWorstMiss[2] = {0, 0};
 // Per NDF, the largest float error in units of u = 2^-24 (relative to max(1, |v|), the device against
 // the same rule in double, every channel) and the largest fraction of its model's bound: what
 // tables/error_model.h's per-NDF models are fitted to.
-std::map<int, double> gWorstU, gWorstUse;
-std::map<int, std::string> gWorstUAt;  // the pair of the largest in u
+struct NdfWorst {
+  double u = 0, use = 0;
+  std::string at;  // the pair of the largest in u
+};
+std::map<int, NdfWorst> gWorstOfNdf;
 
 // After the last test of a run, the largest of each over every test that ran: a run of the whole
 // binary in one process prints the figures docs/accuracy.md quotes (AccuracySweep checks them;
@@ -55,10 +58,10 @@ class WholeRunMaxima : public ::testing::Environment {
  public:
   void TearDown() override {
     std::string perNdf;
-    for (const auto& [ndf, u] : gWorstU) {
+    for (const auto& [ndf, w] : gWorstOfNdf) {
       char one[120];
       std::snprintf(one, sizeof one, "%s%s %.2f on %s (at most %.2f of its bound)", perNdf.empty() ? "" : ", ",
-                    ndfNames()[ndf].c_str(), u, gWorstUAt[ndf].c_str(), gWorstUse[ndf]);
+                    ndfNames()[ndf].c_str(), w.u, w.at.c_str(), w.use);
       perNdf += one;
     }
     std::printf(
@@ -115,11 +118,9 @@ double checkTexel(const KernelTable& t, size_t k, int ndf, int gaf, double mu, d
   for (int c = 0; c < 3; ++c) {
     EXPECT_LE(flt[c], arith) << "float model exceeded, channel "
                              << "ABE"[c] << ": device " << t.planes[c][k];
-    if (flt[c] / kUnitRoundoff > gWorstU[ndf]) {
-      gWorstU[ndf] = flt[c] / kUnitRoundoff;
-      gWorstUAt[ndf] = pairName(ndf, gaf);
-    }
-    gWorstUse[ndf] = std::max(gWorstUse[ndf], flt[c] / arith);
+    NdfWorst& w = gWorstOfNdf[ndf];
+    if (flt[c] / kUnitRoundoff > w.u) w.u = flt[c] / kUnitRoundoff, w.at = pairName(ndf, gaf);
+    w.use = std::max(w.use, flt[c] / arith);
     if (flt[c] / arith > gWorstFloat) {
       gWorstFloat = flt[c] / arith;
       char where[120];
