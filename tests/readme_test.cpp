@@ -549,18 +549,33 @@ TEST(Docs, NamedTestsExist) {
 //  - measured elsewhere: listed in its paragraph's <!-- elsewhere: X Y ... --> note, a figure that
 //    the paragraph's own words say how to measure on a machine the suite lacks (a GPU);
 //  - measured once: listed in its paragraph's <!-- once: X Y ... --> note, a figure the paragraph
-//    says how to measure that no test reruns (a run of hours, a tool, two builds compared).
+//    says how to measure that no test reruns (a run of hours, a tool, two builds compared);
+//  - a ratio of two tied figures: <!-- ratio X = A / B --> under its paragraph, where A and B are
+//    tied on the same page and A/B rounds to X at X's last digit, so X drifts with them.
 // A note lists only figures its paragraph holds, and none that a figure note ties. Integers are not
 // held: they are counts, sizes and indices far more often than measurements.
 TEST(Docs, EveryFigureOnEveryPageIsTiedOrAnInput) {
   const std::regex number("[-+]?\\d+(?:\\.\\d+)?(?:[eE][-+]?\\d+)?");
   const std::regex listNote("^ {0,3}<!-- (inputs|elsewhere|once): ([^>]*) -->$");
   const std::regex inlineCode("`[^`]*`");  // built once: the loop below runs over every line of every page
-  std::map<std::string, int> counts;       // tied, inputs, varies, elsewhere, once
+  const std::regex ratioNote("^ {0,3}<!-- ratio (\\S+) = (\\S+) / (\\S+) -->$");
+  std::map<std::string, int> counts;  // tied, inputs, varies, elsewhere, once, ratio
   for (const fs::path& path : pages()) {
     if (path.filename() == "README.md" || path.filename() == "commands-reference.md") continue;
     const std::string name = path.filename().string();
     const std::vector<std::string> page = lines(bytes(path));
+    // what the page ties: its figure notes' figures and the numbers in tables under a rows note
+    std::set<std::string> tiedOnPage;
+    for (size_t k = 0, block = 0; k < page.size(); ++k) {
+      std::smatch m;
+      if (page[k].empty()) block = k + 1;
+      if (std::regex_search(page[k], m, figureNote())) tiedOnPage.insert(m[1].str());
+      if (std::regex_search(page[k], m, rowsNote()))
+        for (size_t r = block; r < k; ++r)
+          if (page[r].rfind("|", 0) == 0)
+            for (std::sregex_iterator it(page[r].begin(), page[r].end(), number), stop; it != stop; ++it)
+              tiedOnPage.insert(it->str());
+    }
     bool fenced = false;
     for (size_t i = 0; i < page.size();) {
       if (page[i].rfind("```", 0) == 0) fenced = !fenced;
@@ -585,6 +600,18 @@ TEST(Docs, EveryFigureOnEveryPageIsTiedOrAnInput) {
         if (std::regex_search(page[k], m, listNote)) {
           std::istringstream ws(m[2].str());
           for (std::string w; ws >> w;) listed[w] = m[1].str();
+        }
+        if (std::regex_search(page[k], m, ratioNote)) {
+          const std::string x = m[1].str(), a = m[2].str(), b = m[3].str();
+          EXPECT_TRUE(tiedOnPage.count(a) && tiedOnPage.count(b))
+              << name << ":" << k + 1 << ": the ratio " << x << " = " << a << " / " << b
+              << " needs both figures tied on the page";
+          const size_t dot = x.find('.');
+          const int digits = dot == std::string::npos ? 0 : static_cast<int>(x.size() - dot - 1);
+          EXPECT_LE(std::abs(std::stod(a) / std::stod(b) - std::stod(x)), 0.5 * std::pow(10.0, -digits) * (1 + 1e-9))
+              << name << ":" << k + 1 << ": " << a << " / " << b << " = " << std::stod(a) / std::stod(b)
+              << ", which does not round to " << x;
+          listed[x] = "ratio";
         }
       }
       std::set<std::string> seen;
@@ -626,9 +653,11 @@ TEST(Docs, EveryFigureOnEveryPageIsTiedOrAnInput) {
           } else if (listed.count(figure)) {
             ++counts[listed[figure]];
           } else {
-            ADD_FAILURE() << name << ":" << k + 1 << ": " << figure
-                          << " is neither tied (a figure or rows note), marked ~, nor in its paragraph's "
-                          << "<!-- inputs: ... -->, <!-- once: ... --> or <!-- elsewhere: ... -->\n  " << page[k];
+            ADD_FAILURE()
+                << name << ":" << k + 1 << ": " << figure
+                << " is neither tied (a figure or rows note), marked ~, nor in its paragraph's "
+                << "<!-- inputs: ... -->, <!-- once: ... -->, <!-- elsewhere: ... --> or a <!-- ratio ... --> note\n  "
+                << page[k];
           }
         }
       }
@@ -642,9 +671,9 @@ TEST(Docs, EveryFigureOnEveryPageIsTiedOrAnInput) {
     }
   }
   std::printf(
-      "every page: each figure in e-notation or with a decimal point tied (%d), an input (%d), marked ~ (%d), "
-      "measured once (%d) or measured elsewhere (%d)\n",
-      counts["tied"], counts["inputs"], counts["varies"], counts["once"], counts["elsewhere"]);
+      "every page: each figure in e-notation or with a decimal point tied (%d), a ratio of two tied (%d), an input "
+      "(%d), marked ~ (%d), measured once (%d) or measured elsewhere (%d)\n",
+      counts["tied"], counts["ratio"], counts["inputs"], counts["varies"], counts["once"], counts["elsewhere"]);
   EXPECT_GE(counts["tied"], 100);
 }
 

@@ -173,6 +173,10 @@ mutation() {
                              'worst.all.ratio, worst.ratioAt.c_str(), worst.all.claimOver, worst.overAt.c_str());' \
                              'worst.all.ratio, worst.ratioAt.c_str(), 0.9 * worst.all.claimOver, worst.overAt.c_str());' \
                              "FresnelSweep.EveryPairEverySize" ;;
+    doc-ratio-operand) set -- "$1" docs/materials.md '<!-- ratio 3.6 = 6.93e-7 / 1.91e-7 -->' \
+                         '<!-- ratio 3.6 = 6.77e-7 / 1.91e-7 -->' "Docs.EveryFigureOnEveryPageIsTiedOrAnInput" ;;
+    sheen-avg-float-model) set -- "$1" host/tables/error_model.h 'constexpr FloatModel kAvgFloatSheen{0, 4};' \
+                             'constexpr FloatModel kAvgFloatSheen{0, 3};' "Sheen.FloatArithmeticWithinItsModels" ;;
     doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
                           '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
     dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
@@ -194,7 +198,8 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        doc-quoted-figure doc-figure-note doc-figure-form doc-test-figure doc-test-name doc-bench-figure doc-test-named avg-claim-inflated
        doc-table-row doc-rows-unchecked doc-figure-untied doc-build-path doc-rows-from doc-in-figure doc-bounds-row
        doc-merl-figure doc-merl-row merl-claim-storage doc-outer-breaks doc-avg-miss doc-whole-run
-       bench-tables-ignored doc-in-test-parameterised doc-decimal-unmarked doc-ltc-distance doc-per-ndf-u doc-float-eta doc-corner-limit doc-fresnel-sweep-max
+       bench-tables-ignored doc-in-test-parameterised doc-decimal-unmarked doc-ltc-distance doc-per-ndf-u doc-float-eta doc-corner-limit doc-fresnel-sweep-max doc-ratio-operand
+       sheen-avg-float-model
        doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5

@@ -4,7 +4,7 @@
 // on both mu axes and the 32^2 albedo, as brdfbake bakes them, and probes each table twice: with
 // the steps over six texels of mu and over kProbeMuTexels. Prints both maxima, the
 // brdf.interp-error each gives (the larger of the texels' estimate and kProbeMargin times the
-// maximum) and the probes' seconds; exits 1 where the shorter span gives a smaller
+// maximum), the probes' seconds and the estimate from the texels alone; exits 1 where the shorter span gives a smaller
 // brdf.interp-error.
 #include <algorithm>
 #include <chrono>
@@ -27,8 +27,8 @@ int probeSpanBench(KernelRunner& runner, const std::vector<std::pair<int, int>>&
   const int wide = 6;
   std::printf("interpolation probe: quarter steps over %d texels of mu against %d (tables/interp_probe.h)\n", wide,
               kProbeMuTexels);
-  std::printf("%-12s %-20s %-9s %5s %5s %11s %11s %11s %11s %7s %7s\n", "ndf", "gaf", "table", "size", "axis",
-              "max (6)", "max (2)", "interp (6)", "interp (2)", "s (6)", "s (2)");
+  std::printf("%-12s %-20s %-9s %5s %5s %11s %11s %11s %11s %7s %7s %11s\n", "ndf", "gaf", "table", "size", "axis",
+              "max (6)", "max (2)", "interp (6)", "interp (2)", "s (6)", "s (2)", "estimate");
   int worse = 0, lower = 0, tables = 0;
   double t6 = 0, t2 = 0;
   for (int ndf = 0; ndf < static_cast<int>(ndfNames().size()); ++ndf)
@@ -62,9 +62,9 @@ int probeSpanBench(KernelRunner& runner, const std::vector<std::pair<int, int>>&
         const double ia = std::max(est, kProbeMargin * a), ib = std::max(est, kProbeMargin * b);
         if (b < a) ++lower;
         if (ib < ia) ++worse;
-        std::printf("%-12s %-20s %-9s %5d %5s %11.5g %11.5g %11.5g %11.5g %7.4f %7.4f%s\n", ndfNames()[ndf].c_str(),
-                    gafNames()[gaf].c_str(), tableName(sh.kind).c_str(), sh.size, sh.sqrtAxis ? "sqrt" : "mu", a, b, ia,
-                    ib, sa, sb, ib < ia ? "  SMALLER" : "");
+        std::printf("%-12s %-20s %-9s %5d %5s %11.5g %11.5g %11.5g %11.5g %7.4f %7.4f %11.5g%s\n",
+                    ndfNames()[ndf].c_str(), gafNames()[gaf].c_str(), tableName(sh.kind).c_str(), sh.size,
+                    sh.sqrtAxis ? "sqrt" : "mu", a, b, ia, ib, sa, sb, est, ib < ia ? "  SMALLER" : "");
         std::fflush(stdout);
       }
     }

@@ -50,6 +50,10 @@ struct NdfWorst {
   std::string at;  // the pair of the largest in u
 };
 std::map<int, NdfWorst> gWorstOfNdf;
+// The largest |lookup - reference| of a bilinear lookup in a 32x32 node table near the corner
+// (NodeTableNearTheCornerReadsWhatTheInsideHolds), over every pair, and its pair.
+double gWorstCornerLookup = 0;
+std::string gWorstCornerLookupAt;
 
 // After the last test of a run, the largest of each over every test that ran: a run of the whole
 // binary in one process prints the figures docs/accuracy.md quotes (AccuracySweep checks them;
@@ -66,8 +70,10 @@ class WholeRunMaxima : public ::testing::Environment {
     }
     std::printf(
         "whole run: largest float error %.2f of the float model's bound (%s); largest misses of a sharpened "
-        "estimate %.2e at the default budget, %.2e at the refined one; largest float error per NDF in u: %s\n",
-        gWorstFloat, gWorstFloatAt.c_str(), gWorstMiss[0], gWorstMiss[1], perNdf.c_str());
+        "estimate %.2e at the default budget, %.2e at the refined one; largest float error per NDF in u: %s; "
+        "a lookup in a node table near the corner, largest |lookup - reference| %.3f (%s)\n",
+        gWorstFloat, gWorstFloatAt.c_str(), gWorstMiss[0], gWorstMiss[1], perNdf.c_str(), gWorstCornerLookup,
+        gWorstCornerLookupAt.c_str());
   }
 };
 [[maybe_unused]] ::testing::Environment* const kWholeRunMaxima =
@@ -288,7 +294,11 @@ TEST_P(PairTest, NodeTableNearTheCornerReadsWhatTheInsideHolds) {
   double ref = reference::albedo(ndf, gaf, r, mu).e();
   // and the corner texel itself, the limit along the mu = 0 edge (docs/MODELS.md quotes it)
   std::printf("%s: lookup %.4f, reference %.4f, corner %.4f\n", pairName(ndf, gaf).c_str(), lookup, ref, at(0, 0));
-  EXPECT_NEAR(lookup, ref, 0.03) << pairName(ndf, gaf);  // measured: at most 0.023 (kelemen)
+  EXPECT_NEAR(lookup, ref, 0.03) << pairName(ndf, gaf);  // the whole run prints the largest (formats.md)
+  if (std::fabs(lookup - ref) > gWorstCornerLookup) {
+    gWorstCornerLookup = std::fabs(lookup - ref);
+    gWorstCornerLookupAt = pairName(ndf, gaf);
+  }
 }
 }  // namespace
 
