@@ -3,7 +3,8 @@
 // calls expectPagesQuote, so that every figure tied to it ("in: Docs.DISABLED_...") is checked
 // against a fresh run. They are disabled in the binary and run by ctest under the `sweep` label
 // (tests/CMakeLists.txt names each, with its time on two cores), which the README's test command
-// leaves out: `ctest -L sweep` runs them.
+// leaves out: `ctest -L sweep` runs them. A tool script of seconds (tools/node_counts.sh) is run
+// the same way by a test in the suite.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -208,6 +209,13 @@ TEST(Docs, DISABLED_AccuracyMissesAreTheWholeRuns) {
 TEST(Docs, DISABLED_OuterBreaksFiguresAreTheScripts) {
   const fs::path d = freshDir("readme", "outer-breaks");
   expectPagesQuote(runOk(d, "'" BRDFBAKE_SOURCE_DIR "/tools/outer_breaks.sh'"));
+}
+
+// docs/performance.md's node counts from tools/node_counts.sh: the default split sum's rule
+// compiled for the host in float and counted by gcov (needs g++ and gcov; seconds), in the suite.
+TEST(Docs, NodeCountsFiguresAreTheScripts) {
+  const fs::path d = freshDir("readme", "node-counts");
+  expectPagesQuote(runOk(d, "'" BRDFBAKE_SOURCE_DIR "/tools/node_counts.sh'"));
 }
 
 // docs/merl.md's two claim tables are the MERL benchmark's: four analytic materials written as MERL
