@@ -26,12 +26,19 @@ struct AvgSum {
 // spread of o.h over the lobe) at the entry's r. Without them, at eta = 0.9999, r = 3/64 the
 // rule's |K - G| saw 2.9e-6 where the average was off by 1.4e-5
 // (tests/tables/microfacet/fresnel_edge_test.cpp, AverageAlbedoAtTheStiffCorner).
+// For the sheen NDF (charlie), below r = 1/64, also mu = 16 r: charlie's lobe lies within
+// ~sqrt(alpha) = r of grazing half-vectors, so E(mu) lives on mu < ~10 r (2 mu E largest at
+// mu -> 0). Without the break the GK31 panel over [0, 1], whose first node is mu = 0.001, sees
+// none of it once r < ~8e-5: at r = 1/16384 (an 8192-entry table's first entry) charlie + none's
+// E_avg came out 0.00078 with a bound of 2.7e-11 where it is 1.0
+// (tests/tables/microfacet/sheen_test.cpp, AlbedoAvgHoldsItsLobeAtTheSmallestR).
 struct AvgBreaks {
   std::vector<double> view;
-  double kink = -1;  // oc, or -1
+  double kink = -1;    // oc, or -1
+  bool sheen = false;  // the sheen NDF's lobe break
   std::vector<double> at(float r) const;
 };
-AvgBreaks avgBreaks(int gaf, double kink);
+AvgBreaks avgBreaks(int ndf, int gaf, double kink);
 
 // E_avg at each r: Gauss-Kronrod panels over mu (GK31; GK15 for the horizon layer's, sharp pairs
 // only: kernels/integrate/albedo_avg.h avg_first_break), halved where the bound is largest until

@@ -96,8 +96,9 @@ std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double
   std::vector<std::vector<size_t>> fresh(n);
   for (size_t j = 0; j < n; ++j) {
     // the layer panel where it was measured: the rescaled estimates' pairs (tests/tables/microfacet/avg_rule_test.cpp);
-    // charlie's layer is wider and is left to the halving. Then GK31 panels up to 1, ending at the
-    // GAF's view breaks (brdf64::gaf_view_breaks)
+    // charlie's E(mu) changes over a wider layer, left to the halving once its lobe break
+    // (AvgBreaks, at small r) puts nodes in it. Then GK31 panels up to 1, ending at the GAF's view
+    // breaks (brdf64::gaf_view_breaks) and those breaks
     std::vector<double> ends;
     double b = sharp ? brdf64::avg_first_break(rs[j]) : 1.0;
     if (b < 1.0) {
@@ -175,9 +176,9 @@ std::vector<AvgSum> averageRule(const std::vector<float>& rs, bool sharp, double
   return out;
 }
 
-AvgBreaks avgBreaks(int gaf, double kink) {
+AvgBreaks avgBreaks(int ndf, int gaf, double kink) {
   double mu[GAF_MAX_VIEW_BREAKS];
-  return AvgBreaks{std::vector<double>(mu, mu + brdf64::gaf_view_breaks(gaf, mu)), kink};
+  return AvgBreaks{std::vector<double>(mu, mu + brdf64::gaf_view_breaks(gaf, mu)), kink, isSheenNdf(ndf)};
 }
 
 std::vector<double> AvgBreaks::at(float r) const {
@@ -188,6 +189,7 @@ std::vector<double> AvgBreaks::at(float r) const {
       for (double x : {kink - k * w, kink + k * w})
         if (x > 0 && x < 1) out.push_back(x);
   }
+  if (sheen && r < 1.0f / 64) out.push_back(16.0 * r);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
@@ -222,7 +224,7 @@ KernelTable KernelRunner::albedoAvg(int ndf, int gaf, int n, bool nodeGrid, cons
         std::vector<std::vector<float>> out = hemisphereNodes(ndf, gaf, in, w, bare);
         for (size_t k = 0; k < nodes.size(); ++k) (*value)[k] = out[0][k], (*bound)[k] = out[1][k];
       },
-      avgBreaks(gaf, brdf64::fresnel_kink(w.moments, w.fresnel, w.x, w.z)));
+      avgBreaks(ndf, gaf, brdf64::fresnel_kink(w.moments, w.fresnel, w.x, w.z)));
   const double floor = bare ? brdf64::avg_floor(ndf, gaf) : 0.0;
   KernelTable t;
   t.width = n;

@@ -143,9 +143,11 @@ inline double weightedFloatError(double b, double e, double scale, int ndf, int 
 // Fresnel-weighted averages take the summed bound. Charlie's is measured (the summed bound would be
 // 22 u for charlie-smith at E_avg ~ 0.3): the bake's table against its rule in double at the same
 // nodes, every entry of 32-, 128- and 1024-entry tables on both grids (`ctest -L sweep -R
-// SheenSweep`): at most 3.02 u (none, E_avg ~ 1 at r = 1/256, 128 entries; the stored value's
-// rounding included) and 2.85 u (charlie-smith, r = 0.93, 1024 entries): 4 u; 0.73 u (neubelt)
-// and 0.58 u (implicit): 1 u; each at most 0.76 of its model.
+// SheenSweep`): at most 3.00 u (none, E_avg ~ 1 at r = 0.024, 1024 entries; the stored value's
+// rounding included) and 2.85 u (charlie-smith, r = 0.93, 1024 entries): 4 u, the microfacet
+// models' margin (3 u would hold 3.00 u with none, and the rule without its sheen lobe break
+// reached 3.02 u at r = 1/256); 0.73 u (neubelt) and 0.58 u (implicit): 1 u; each at most 0.75 of
+// its model.
 constexpr FloatModel kAvgFloatMicrofacet[4] = {{0, 2.3}, {0, 2.15}, {0, 2.4}, {0, 5.76}};  // NDF_GGX .. NDF_GAUSSIAN
 constexpr FloatModel kAvgFloatSheen{0, 4};
 constexpr FloatModel kAvgFloatSheenBounded{0, 1};  // neubelt and implicit (sheenGBounded)

@@ -87,8 +87,8 @@ TEST_P(AvgFloat, AverageFloatErrorWithinItsModel) {
           (*bound)[k] = same ? devBound[replayed] : 0.0;
         }
       };
-      std::vector<AvgSum> dev = averageRule(rs, bare, KernelRunner::kAvgGoal, device, avgBreaks(gaf, -1));
-      std::vector<AvgSum> ref = averageRule(rs, bare, KernelRunner::kAvgGoal, replay, avgBreaks(gaf, -1));
+      std::vector<AvgSum> dev = averageRule(rs, bare, KernelRunner::kAvgGoal, device, avgBreaks(ndf, gaf, -1));
+      std::vector<AvgSum> ref = averageRule(rs, bare, KernelRunner::kAvgGoal, replay, avgBreaks(ndf, gaf, -1));
       ASSERT_TRUE(same && replayed == dbl.size()) << "the replay took other panels";
       for (size_t j = 0; j < rs.size(); ++j) {
         double err = std::fabs(dev[j].value - ref[j].value) / std::max(1.0, std::fabs(ref[j].value));

@@ -23,7 +23,7 @@ inline std::vector<AvgSum> hostRule(int ndf, int gaf, const std::vector<float>& 
           (*bound)[k] = h.err_a + h.err_b;
         }
       },
-      avgBreaks(gaf, -1));
+      avgBreaks(ndf, gaf, -1));
 }
 
 }  // namespace brdfbake::testing_avg
