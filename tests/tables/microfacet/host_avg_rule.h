@@ -10,8 +10,11 @@
 
 namespace brdfbake::testing_avg {
 
+// sheenLobeBreak false: without the sheen NDF's break at 16 r (AvgBreaks), to show what it is for.
 inline std::vector<AvgSum> hostRule(int ndf, int gaf, const std::vector<float>& rs,
-                                    double goal = KernelRunner::kAvgGoal) {
+                                    double goal = KernelRunner::kAvgGoal, bool sheenLobeBreak = true) {
+  AvgBreaks breaks = avgBreaks(ndf, gaf, -1);
+  breaks.sheen = breaks.sheen && sheenLobeBreak;
   return averageRule(
       rs, true, goal,
       [&](const std::vector<AvgNode>& nodes, std::vector<double>* value, std::vector<double>* bound) {
@@ -23,7 +26,7 @@ inline std::vector<AvgSum> hostRule(int ndf, int gaf, const std::vector<float>& 
           (*bound)[k] = h.err_a + h.err_b;
         }
       },
-      avgBreaks(ndf, gaf, -1));
+      breaks);
 }
 
 }  // namespace brdfbake::testing_avg
