@@ -239,13 +239,11 @@ TEST(Sheen, CharlieSmithKinkWhereNiIsOneHalf) {
   }
 }
 
-// The float models of charlie's tables (tables/error_model.h): the device against the same rule in
-// double at every texel of an n x n table of each sheen pair (the budget the device's value came
-// from: the closer of the two). Returns each visibility's largest error in u and largest share of
-// its model's bound.
+// A visibility's largest float error in u, its largest share of its model's bound, and where the
+// largest in u is.
 struct Largest {
   double u = 0, share = 0;
-  std::string at;  // where the largest in u is
+  std::string at;
   void add(double err, double bound, const std::string& where) {
     if (err / kUnitRoundoff > u) at = where;
     u = std::max(u, err / kUnitRoundoff);
@@ -257,6 +255,9 @@ struct Largest {
     share = std::max(share, o.share);
   }
 };
+// The float models of charlie's tables (tables/error_model.h): the device against the same rule in
+// double at every texel of an n x n table of each sheen pair (the budget the device's value came
+// from: the closer of the two).
 std::map<int, Largest> charlieTableFloatErrors(int n) {
   std::map<int, Largest> worst;
   for (int gaf : kSheenGafs) {
@@ -322,7 +323,7 @@ TEST(Sheen, FloatArithmeticWithinItsModels) {
   }
 }
 
-// The same at every size the models were measured on (about 5 minutes on two cores: `ctest -L sweep
+// The same at every size the models were measured on (about 4 minutes on two cores: `ctest -L sweep
 // -R SheenSweep`): tables of 32^2 and 128^2; averages of 32, 128 and 1024 entries on both grids
 // (E_avg's largest error, none's 3.00 u, is at entry 24 of 1024). docs/accuracy.md quotes the
 // maxima.
