@@ -181,6 +181,8 @@ mutation() {
                        'printf "  %-30s %12d  %5.1f%%\n", w, x, 90 * x / t' "Docs.NodeCountsFiguresAreTheScripts" ;;
     sheen-lobe-break) set -- "$1" host/cl/runner_avg.cpp 'if (sheen && r < 1.0f / 64) out.push_back(16.0 * r);' \
                         'if (false && r < 1.0f / 64) out.push_back(16.0 * r);' "Sheen.AlbedoAvgHoldsItsLobeAtTheSmallestR" ;;
+    sheen-lobe-break-shown) set -- "$1" tests/tables/microfacet/host_avg_rule.h 'breaks.sheen = breaks.sheen && sheenLobeBreak;' \
+                              'breaks.sheen = breaks.sheen || sheenLobeBreak;' "Sheen.AlbedoAvgHoldsItsLobeAtTheSmallestR" ;;
     doc-example-option) set -- "$1" docs/rough-glass.md '--eta-range 0.5,2 --size 16 --half' \
                           '--eta-rang 0.5,2 --size 16 --half' "Docs.EveryPageExampleRuns" ;;
     dry-run-status) set -- "$1" host/bake/bake_report.cpp 'there ? "replaces" : "new"' '"new"' \
@@ -203,7 +205,7 @@ names="browser-image program-identity program-checksum progress-on-pipe render-l
        doc-table-row doc-rows-unchecked doc-figure-untied doc-build-path doc-rows-from doc-in-figure doc-bounds-row
        doc-merl-figure doc-merl-row merl-claim-storage doc-outer-breaks doc-avg-miss doc-whole-run
        bench-tables-ignored doc-in-test-parameterised doc-decimal-unmarked doc-ltc-distance doc-per-ndf-u doc-float-eta doc-corner-limit doc-fresnel-sweep-max doc-ratio-operand
-       sheen-avg-float-model doc-node-counts sheen-lobe-break
+       sheen-avg-float-model doc-node-counts sheen-lobe-break sheen-lobe-break-shown
        doc-example-option dry-run-status kind-name"
 run_one() {
   local name=$1 file=$2 from=$3 to=$4 tests=$5

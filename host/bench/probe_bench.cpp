@@ -4,8 +4,8 @@
 // on both mu axes and the 32^2 albedo, as brdfbake bakes them, and probes each table twice: with
 // the steps over six texels of mu and over kProbeMuTexels. Prints both maxima, the
 // brdf.interp-error each gives (the larger of the texels' estimate and kProbeMargin times the
-// maximum), the probes' seconds and the estimate from the texels alone; exits 1 where the shorter span gives a smaller
-// brdf.interp-error.
+// maximum), the probes' seconds and the estimate from the texels alone; exits 1 where the shorter
+// span gives a smaller brdf.interp-error.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

@@ -45,11 +45,7 @@ double gWorstMiss[2] = {0, 0};
 // Per NDF, the largest float error in units of u = 2^-24 (relative to max(1, |v|), the device against
 // the same rule in double, every channel) and the largest fraction of its model's bound: what
 // tables/error_model.h's per-NDF models are fitted to.
-struct NdfWorst {
-  double u = 0, use = 0;
-  std::string at;  // the pair of the largest in u
-};
-std::map<int, NdfWorst> gWorstOfNdf;
+std::map<int, testing_device::FloatWorst> gWorstOfNdf;  // at: the pair of the largest in u
 // The largest |lookup - reference| of a bilinear lookup in a 32x32 node table near the corner
 // (NodeTableNearTheCornerReadsWhatTheInsideHolds), over every pair, and its pair.
 double gWorstCornerLookup = 0;
@@ -65,7 +61,7 @@ class WholeRunMaxima : public ::testing::Environment {
     for (const auto& [ndf, w] : gWorstOfNdf) {
       char one[120];
       std::snprintf(one, sizeof one, "%s%s %.2f on %s (at most %.2f of its bound)", perNdf.empty() ? "" : ", ",
-                    ndfNames()[ndf].c_str(), w.u, w.at.c_str(), w.use);
+                    ndfNames()[ndf].c_str(), w.u, w.at.c_str(), w.share);
       perNdf += one;
     }
     std::printf(
@@ -124,9 +120,7 @@ double checkTexel(const KernelTable& t, size_t k, int ndf, int gaf, double mu, d
   for (int c = 0; c < 3; ++c) {
     EXPECT_LE(flt[c], arith) << "float model exceeded, channel "
                              << "ABE"[c] << ": device " << t.planes[c][k];
-    NdfWorst& w = gWorstOfNdf[ndf];
-    if (flt[c] / kUnitRoundoff > w.u) w.u = flt[c] / kUnitRoundoff, w.at = pairName(ndf, gaf);
-    w.use = std::max(w.use, flt[c] / arith);
+    gWorstOfNdf[ndf].add(flt[c], arith, pairName(ndf, gaf));
     if (flt[c] / arith > gWorstFloat) {
       gWorstFloat = flt[c] / arith;
       char where[120];

@@ -31,6 +31,7 @@
 namespace fs = std::filesystem;
 namespace {
 using namespace brdfbake;
+using testing_device::FloatWorst;
 using testing_device::rel;
 using testing_device::runner;
 
@@ -239,27 +240,11 @@ TEST(Sheen, CharlieSmithKinkWhereNiIsOneHalf) {
   }
 }
 
-// A visibility's largest float error in u, its largest share of its model's bound, and where the
-// largest in u is.
-struct Largest {
-  double u = 0, share = 0;
-  std::string at;
-  void add(double err, double bound, const std::string& where) {
-    if (err / kUnitRoundoff > u) at = where;
-    u = std::max(u, err / kUnitRoundoff);
-    share = std::max(share, err / bound);
-  }
-  void add(const Largest& o) {
-    if (o.u > u) at = o.at;
-    u = std::max(u, o.u);
-    share = std::max(share, o.share);
-  }
-};
 // The float models of charlie's tables (tables/error_model.h): the device against the same rule in
 // double at every texel of an n x n table of each sheen pair (the budget the device's value came
 // from: the closer of the two).
-std::map<int, Largest> charlieTableFloatErrors(int n) {
-  std::map<int, Largest> worst;
+std::map<int, FloatWorst> charlieTableFloatErrors(int n) {
+  std::map<int, FloatWorst> worst;
   for (int gaf : kSheenGafs) {
     KernelTable t = runner().hemisphere(NDF_CHARLIE, gaf, n, n, false);
     for (int j = 0; j < n; ++j)
@@ -286,8 +271,8 @@ std::map<int, Largest> charlieTableFloatErrors(int n) {
 
 // The same for the average albedo: every entry of an n-entry table (texel centres, or nodes with
 // r = 0 and 1 among them) against the bake's rule over mu with E in double at the same nodes.
-std::map<int, Largest> charlieAvgFloatErrors(int n, bool nodeGrid) {
-  std::map<int, Largest> worst;
+std::map<int, FloatWorst> charlieAvgFloatErrors(int n, bool nodeGrid) {
+  std::map<int, FloatWorst> worst;
   for (int gaf : kSheenGafs) {
     KernelTable t = runner().albedoAvg(NDF_CHARLIE, gaf, n, nodeGrid);
     std::vector<float> rs(n);  // as albedoAvg computes them, in float
@@ -306,7 +291,7 @@ std::map<int, Largest> charlieAvgFloatErrors(int n, bool nodeGrid) {
 }
 
 TEST(Sheen, FloatArithmeticWithinItsModels) {
-  const std::map<int, Largest> tables = charlieTableFloatErrors(32), avgs = charlieAvgFloatErrors(32, false);
+  const std::map<int, FloatWorst> tables = charlieTableFloatErrors(32), avgs = charlieAvgFloatErrors(32, false);
   for (int gaf : kSheenGafs)
     std::printf("charlie + %s, 32^2: largest float error %.2f u, of E_avg %.2f u\n", gafNames()[gaf].c_str(),
                 tables.at(gaf).u, avgs.at(gaf).u);
@@ -328,7 +313,7 @@ TEST(Sheen, FloatArithmeticWithinItsModels) {
 // (E_avg's largest error, none's 3.00 u, is at entry 24 of 1024). docs/accuracy.md quotes the
 // maxima.
 TEST(Sheen, DISABLED_FloatErrorsAtEverySize) {
-  std::map<int, Largest> tables, avgs;
+  std::map<int, FloatWorst> tables, avgs;
   for (int n : {32, 128})
     for (const auto& [gaf, w] : charlieTableFloatErrors(n)) tables[gaf].add(w);
   for (int n : {32, 128, 1024})
